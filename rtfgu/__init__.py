@@ -1,0 +1,24 @@
+"""rtfgu: a teaching ray tracer after Suffern's *Ray Tracing from the Ground Up*.
+
+The lecture layer (pure Python, one class per slide) is importable from here.
+"""
+from .cameras import Camera, OrthographicCamera, PinholeCamera
+from .float3 import Float3, cross, dot, normalize
+from .lights import Light, PointLight, sample_point_light
+from .material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
+                       Material)
+from .ray import RAY_EPSILON, Ray
+from .renderer import render, trace
+from .scene import Scene
+from .shading import HitInfo, shade
+from .shapes import Plane, Shape, Sphere, Triangle
+from .image import write_png
+
+__all__ = [
+    "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON",
+    "Camera", "OrthographicCamera", "PinholeCamera",
+    "Shape", "Plane", "Sphere", "Triangle", "Scene",
+    "Material", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
+    "PointLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
+    "render", "write_png",
+]

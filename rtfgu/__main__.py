@@ -1,0 +1,87 @@
+"""The command line: ``python -m rtfgu list | render NAME | render-all``.
+
+Errors in what the user typed (unknown scene, bad size, bad backend) exit with code 2 and a
+message naming the parameter, as argparse does for its own errors.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+
+from . import renderer as render_module
+from .image import write_png
+from .scenes import SCENES, get_scene
+
+
+def _progress_printer(label: str):
+    start = time.perf_counter()
+
+    def progress(done: int, total: int) -> None:
+        elapsed = time.perf_counter() - start
+        end = "\n" if done == total else ""
+        print("\r%s: row %d/%d, %.1f s" % (label, done, total, elapsed), end=end,
+              file=sys.stderr, flush=True)
+    return progress
+
+
+def _render_one(name, width, height, backend, precision, out, show_progress):
+    fn = get_scene(name)
+    w, h = fn.size
+    width = w if width is None else width
+    height = h if height is None else height
+    progress = _progress_printer(name) if show_progress and backend == "reference" else None
+    start = time.perf_counter()
+    image = render_module.render(fn(), width, height, backend=backend, precision=precision,
+                                 progress=progress)
+    write_png(image, out)
+    return time.perf_counter() - start, width, height
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m rtfgu", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+
+    sub.add_parser("list", help="print the homework scene names")
+
+    def add_render_options(p):
+        p.add_argument("--backend", default=render_module.DEFAULT_BACKEND,
+                       choices=render_module.BACKENDS)
+        p.add_argument("--precision", default="float64", choices=render_module.PRECISIONS)
+
+    p = sub.add_parser("render", help="render one scene to a PNG")
+    p.add_argument("name")
+    p.add_argument("-o", "--output", default=None, help="PNG path (default NAME.png)")
+    p.add_argument("--width", type=int, default=None)
+    p.add_argument("--height", type=int, default=None)
+    add_render_options(p)
+
+    p = sub.add_parser("render-all", help="render every homework scene into a folder")
+    p.add_argument("--out", default="renders")
+    add_render_options(p)
+
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "list":
+            for name in SCENES:
+                print(name)
+        elif args.command == "render":
+            out = args.output or args.name + ".png"
+            seconds, w, h = _render_one(args.name, args.width, args.height, args.backend,
+                                        args.precision, out, show_progress=True)
+            print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds))
+        elif args.command == "render-all":
+            os.makedirs(args.out, exist_ok=True)
+            for name in SCENES:
+                out = os.path.join(args.out, name + ".png")
+                seconds, w, h = _render_one(name, None, None, args.backend, args.precision,
+                                            out, show_progress=True)
+                print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds), flush=True)
+    except ValueError as error:
+        parser.exit(2, "error: %s\n" % error)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,56 @@
+"""Material: which shader a shape uses and the few numbers that shader reads.
+
+The shader ids are the cases of the 02562 ``shade`` switch ("The signature of an
+intersection function and that of a shader"): 1 lambertian, 2 phong, 3 mirror, and the
+default case returns the base colour. 4 (transparent) and 5 (glossy) are the 02562
+worksheet-3 shaders that follow them.
+
+Lecture 01's shapes carry a colour only; a shape built that way gets ``BASE_COLOR`` and
+the slide's render loop shows each pixel in the colour of the nearest shape.
+"""
+from __future__ import annotations
+
+import math
+
+from .float3 import Float3, as_float3
+
+BASE_COLOR = 0
+LAMBERTIAN = 1
+PHONG = 2
+MIRROR = 3
+TRANSPARENT = 4
+GLOSSY = 5
+
+SHADER_NAMES = {
+    BASE_COLOR: "base_color",
+    LAMBERTIAN: "lambertian",
+    PHONG: "phong",
+    MIRROR: "mirror",
+    TRANSPARENT: "transparent",
+    GLOSSY: "glossy",
+}
+
+
+class Material:
+    """shader id; specular reflectance rho_s and shininess s (Phong, glossy); index of
+    refraction (transparent, glossy); emitted radiance L_e (any shader that sees light)."""
+
+    __slots__ = ("shader", "specular", "shininess", "ior", "emission")
+
+    def __init__(self, shader: int = BASE_COLOR, specular=None, shininess: float = 0.0,
+                 ior: float = 1.0, emission=None):
+        if shader not in SHADER_NAMES:
+            raise ValueError("Material.shader must be one of %s, got %r" % (sorted(SHADER_NAMES), shader))
+        self.shader = shader
+        self.specular = Float3(0.0) if specular is None else as_float3(specular, "Material.specular")
+        self.emission = Float3(0.0) if emission is None else as_float3(emission, "Material.emission")
+        if not (math.isfinite(shininess) and shininess >= 0):
+            raise ValueError("Material.shininess must be finite and >= 0, got %r" % (shininess,))
+        if not (math.isfinite(ior) and ior > 0):
+            raise ValueError("Material.ior must be finite and > 0, got %r" % (ior,))
+        self.shininess = float(shininess)
+        self.ior = float(ior)
+
+    def __repr__(self) -> str:
+        return "Material(%s, specular=%r, shininess=%r, ior=%r, emission=%r)" % (
+            SHADER_NAMES[self.shader], self.specular, self.shininess, self.ior, self.emission)

@@ -1,0 +1,51 @@
+"""Scene: a camera and a number of shapes (lecture 01, "Scene"), plus the 02562 additions a
+shaded image needs: point lights, a background colour, and whether shadow rays are cast."""
+from __future__ import annotations
+
+from .cameras.camera import Camera
+from .float3 import Float3, as_float3
+from .ray import Ray
+from .shading import HitInfo
+
+
+class Scene:
+    def __init__(self, camera: Camera | None = None):
+        self.camera = camera
+        self.shapes = []
+        self.lights = []
+        self.background = Float3(0.0)
+        # 02562 week 2 renders diffuse shading first without, then with, shadow rays.
+        self.shadows = True
+        # 02562 week 1's first image: every pixel shows its eye ray's direction, d * 0.5 + 0.5.
+        self.show_ray_direction = False
+
+    def intersect(self, ray: Ray, hit: HitInfo) -> bool:
+        """``intersect_scene``: the slide's inner loop over the shapes; each hit shrinks
+        ray.tmax, so the last shape that reports a hit is the nearest one."""
+        hit_shape = None
+        for shape in self.shapes:
+            if shape.intersect_p(ray):
+                hit_shape = shape
+        if hit_shape is not None:
+            hit.has_hit = True
+            hit.dist = ray.tmax
+            hit.position = ray(ray.tmax)
+            hit.normal = hit_shape.normal_at(hit.position)
+            hit.set_material(hit_shape.color, hit_shape.material)
+        return hit.has_hit
+
+    def validate(self) -> None:
+        """Raise a ValueError naming the field if this scene cannot be rendered."""
+        from .cameras.camera import Camera as _Camera
+        from .lights import PointLight
+        from .shapes.shape import Shape
+
+        if not isinstance(self.camera, _Camera):
+            raise ValueError("Scene.camera must be a Camera, got %r" % (self.camera,))
+        for i, shape in enumerate(self.shapes):
+            if not isinstance(shape, Shape):
+                raise ValueError("Scene.shapes[%d] must be a Shape, got %r" % (i, shape))
+        for i, light in enumerate(self.lights):
+            if not isinstance(light, PointLight):
+                raise ValueError("Scene.lights[%d] must be a PointLight, got %r" % (i, light))
+        self.background = as_float3(self.background, "Scene.background")

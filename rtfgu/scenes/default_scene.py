@@ -1,0 +1,99 @@
+"""The 02562 default scene (weeks 1-3) and one function per homework image of it.
+
+Camera: eye (2, 1.5, 2), look-at (0, 0.5, 0), up (0, 1, 0), camera constant 1.
+Plane through the origin with normal (0, 1, 0), colour (0.1, 0.7, 0).
+Triangle (-0.2, 0.1, 0.9), (0.2, 0.1, 0.9), (-0.2, 0.1, -0.1), colour (0.4, 0.3, 0.2).
+Sphere at (0, 0.5, 0), radius 0.3, index of refraction 1.5, shininess 42, specular 0.1;
+its colour is black, as in the course, so that only its specular and refraction show.
+Point light at (0, 1, 0) with intensity (pi, pi, pi). Background (0.1, 0.3, 0.6).
+"""
+from __future__ import annotations
+
+import math
+
+from ..cameras import PinholeCamera
+from ..float3 import Float3
+from ..lights import PointLight
+from ..material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
+                        Material)
+from ..scene import Scene
+from ..shapes import Plane, Sphere, Triangle
+from .registry import homework
+
+SPHERE_SPECULAR = Float3(0.1, 0.1, 0.1)
+SPHERE_SHININESS = 42.0
+SPHERE_IOR = 1.5
+
+
+def default_scene(sphere_shader: int = LAMBERTIAN, other_shader: int = LAMBERTIAN,
+                  shadows: bool = True, aspect: float = 1.0) -> Scene:
+    """The 02562 default scene with the given shaders; the sphere keeps its full material."""
+    camera = PinholeCamera(Float3(2.0, 1.5, 2.0), Float3(0.0, 0.5, 0.0), Float3(0.0, 1.0, 0.0),
+                           d=1.0, aspect=aspect)
+    scene = Scene(camera)
+    scene.background = Float3(0.1, 0.3, 0.6)
+    scene.shadows = shadows
+    other = Material(other_shader)
+    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0),
+                              Float3(0.1, 0.7, 0.0), other))
+    scene.shapes.append(Triangle(Float3(-0.2, 0.1, 0.9), Float3(0.2, 0.1, 0.9),
+                                 Float3(-0.2, 0.1, -0.1), Float3(0.4, 0.3, 0.2), other))
+    sphere_material = Material(sphere_shader, specular=SPHERE_SPECULAR,
+                               shininess=SPHERE_SHININESS, ior=SPHERE_IOR)
+    scene.shapes.append(Sphere(Float3(0.0, 0.5, 0.0), 0.3, Float3(0.0, 0.0, 0.0), sphere_material))
+    if other_shader != BASE_COLOR or sphere_shader != BASE_COLOR:
+        scene.lights.append(PointLight(Float3(0.0, 1.0, 0.0), Float3(math.pi, math.pi, math.pi)))
+    return scene
+
+
+@homework(512, 512)
+def default_ray_directions() -> Scene:
+    """Week 1: each pixel shows its eye ray's direction as a colour, d * 0.5 + 0.5."""
+    scene = default_scene(BASE_COLOR, BASE_COLOR)
+    scene.show_ray_direction = True
+    scene.shapes.clear()
+    return scene
+
+
+@homework(512, 512)
+def default_flat_colors() -> Scene:
+    """Week 2: hidden-surface removal only; each pixel has the colour of the nearest shape."""
+    return default_scene(BASE_COLOR, BASE_COLOR)
+
+
+@homework(512, 512)
+def default_lambertian() -> Scene:
+    """Week 2: diffuse shading by the point light (Kepler, Lambert) and ambient, no shadows."""
+    return default_scene(LAMBERTIAN, LAMBERTIAN, shadows=False)
+
+
+@homework(512, 512)
+def default_lambertian_shadows() -> Scene:
+    """Week 2: as above with a shadow ray toward the light."""
+    return default_scene(LAMBERTIAN, LAMBERTIAN, shadows=True)
+
+
+@homework(512, 512)
+def default_mirror_sphere() -> Scene:
+    return default_scene(MIRROR, LAMBERTIAN)
+
+
+@homework(512, 512)
+def default_refractive_sphere() -> Scene:
+    return default_scene(TRANSPARENT, LAMBERTIAN)
+
+
+@homework(512, 512)
+def default_phong_sphere() -> Scene:
+    return default_scene(PHONG, LAMBERTIAN)
+
+
+@homework(512, 512)
+def default_glossy_sphere() -> Scene:
+    return default_scene(GLOSSY, LAMBERTIAN)
+
+
+@homework(800, 450)
+def default_widescreen_800x450() -> Scene:
+    """The Lambertian scene with shadows at 16:9: the camera's aspect ratio follows the image."""
+    return default_scene(LAMBERTIAN, LAMBERTIAN, shadows=True, aspect=800 / 450)

@@ -1,0 +1,24 @@
+"""The registry of homework scenes: name -> function returning a Scene.
+
+Each scene function is registered with the image size its homework asks for, so that
+``make render`` and ``python -m rtfgu render NAME`` use it unless told otherwise.
+"""
+from __future__ import annotations
+
+SCENES = {}
+
+
+def homework(width: int, height: int):
+    def register(fn):
+        fn.size = (width, height)
+        SCENES[fn.__name__] = fn
+        return fn
+    return register
+
+
+def get_scene(name: str):
+    """The scene function called ``name``; a ValueError listing the names if there is none."""
+    try:
+        return SCENES[name]
+    except KeyError:
+        raise ValueError("unknown scene name %r; known scenes: %s" % (name, ", ".join(SCENES))) from None

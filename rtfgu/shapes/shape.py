@@ -1,0 +1,31 @@
+"""Shape: something a ray can hit (lecture 01, "Class Shape").
+
+``intersect_p(ray)`` returns True if the ray hits the shape within [ray.tmin, ray.tmax)
+and then shrinks ``ray.tmax`` to the hit distance; it changes nothing else. Calling it on
+every shape in turn therefore leaves ``ray.tmax`` at the nearest hit (the slide's render
+loop). Because of that side effect a ray serves one closest-hit query: start every new
+ray with a fresh ``tmax``.
+"""
+from __future__ import annotations
+
+from abc import ABC, abstractmethod
+
+from ..float3 import Float3, as_float3
+from ..material import Material
+from ..ray import Ray
+
+
+class Shape(ABC):
+    def __init__(self, color, material: Material | None = None):
+        self.color = as_float3(color, type(self).__name__ + ".color")
+        self.material = Material() if material is None else material
+        if not isinstance(self.material, Material):
+            raise ValueError("%s.material must be a Material, got %r" % (type(self).__name__, material))
+
+    @abstractmethod
+    def intersect_p(self, ray: Ray) -> bool:
+        """True on a hit in [ray.tmin, ray.tmax); then ray.tmax is the hit distance."""
+
+    @abstractmethod
+    def normal_at(self, position: Float3) -> Float3:
+        """The unit geometric normal at a point on the surface."""
