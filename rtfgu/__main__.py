@@ -17,9 +17,13 @@ from .scenes import SCENES, get_scene
 
 def _progress_printer(label: str):
     start = time.perf_counter()
+    shown = [0.0]
 
     def progress(done: int, total: int) -> None:
         elapsed = time.perf_counter() - start
+        if done < total and elapsed - shown[0] < 0.5:
+            return  # a line every half second is enough to show it is alive
+        shown[0] = elapsed
         end = "\n" if done == total else ""
         print("\r%s: row %d/%d, %.1f s" % (label, done, total, elapsed), end=end,
               file=sys.stderr, flush=True)
