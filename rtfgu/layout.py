@@ -66,6 +66,45 @@ TRI_E1 = 8
 TRI_N = 12
 PLANE_POINT = 0
 PLANE_NORMAL = 4
+SPHERE_CENTER = 0
+SPHERE_RADIUS = 3
+# The camera block (CAMERA_ROWS x 4 floats, read as one flat row of 16).
+ORTHO_LEFT = 0
+ORTHO_RIGHT = 1
+ORTHO_BOTTOM = 2
+ORTHO_TOP = 3
+ORTHO_HITHER = 4
+ORTHO_YON = 5
+ORTHO_TMIN = 6
+PINHOLE_EYE = 0
+PINHOLE_D = 3
+PINHOLE_B1 = 4
+PINHOLE_ASPECT = 7
+PINHOLE_B2 = 8
+PINHOLE_V = 12
+CAMERA_WIDTH = CAMERA_ROWS * 4
+
+# Every row as a record: name -> (row width, ((field, components, column offset), ...)).
+# Components 3 is a vector, 1 a scalar. The WGSL structs are generated from these records
+# (rtfgu/wgsl/structs.py), so a field moved here moves in the shader too.
+RECORDS = {
+    "Plane": (PLANE_WIDTH, (("point", 3, PLANE_POINT), ("normal", 3, PLANE_NORMAL))),
+    "Triangle": (TRIANGLE_WIDTH, (("v0", 3, TRI_V0), ("e0", 3, TRI_E0), ("e1", 3, TRI_E1),
+                                  ("n", 3, TRI_N))),
+    "Sphere": (SPHERE_WIDTH, (("center", 3, SPHERE_CENTER), ("radius", 1, SPHERE_RADIUS))),
+    "Material": (MATERIAL_WIDTH, (("color", 3, MAT_COLOR), ("specular", 3, MAT_SPECULAR),
+                                  ("shininess", 1, MAT_SHININESS), ("emission", 3, MAT_EMISSION),
+                                  ("ior", 1, MAT_IOR))),
+    "PointLight": (LIGHT_WIDTH, (("position", 3, LIGHT_POSITION),
+                                 ("intensity", 3, LIGHT_INTENSITY))),
+    "OrthographicCamera": (CAMERA_WIDTH, (("left", 1, ORTHO_LEFT), ("right", 1, ORTHO_RIGHT),
+                                          ("bottom", 1, ORTHO_BOTTOM), ("top", 1, ORTHO_TOP),
+                                          ("hither", 1, ORTHO_HITHER), ("yon", 1, ORTHO_YON),
+                                          ("tmin", 1, ORTHO_TMIN))),
+    "PinholeCamera": (CAMERA_WIDTH, (("eye", 3, PINHOLE_EYE), ("d", 1, PINHOLE_D),
+                                     ("b1", 3, PINHOLE_B1), ("aspect", 1, PINHOLE_ASPECT),
+                                     ("b2", 3, PINHOLE_B2), ("v", 3, PINHOLE_V))),
+}
 
 # A far-away tmax for APIs that cannot hold infinity (WGSL has no inf literal).
 FAR = 1.0e30
