@@ -43,4 +43,5 @@ class PinholeCamera(Camera):
         u = sx * self.aspect * 0.5
         w = sy * 0.5
         q = self.b1 * u + self.b2 * w + self.v * self.d
-        return Ray(self.eye, normalize(q))
+        # A copy: the C++ Ray holds its origin by value, so moving a ray never moves the eye.
+        return Ray(self.eye.copy(), normalize(q))
