@@ -83,35 +83,49 @@ class Float3:
 
     # --- arithmetic -------------------------------------------------------------
     def __add__(self, o: Float3) -> Float3:
+        ### BEGIN SOLUTION
         return Float3(self.x + o.x, self.y + o.y, self.z + o.z)
+        ### END SOLUTION
 
     def __neg__(self) -> Float3:
+        ### BEGIN SOLUTION
         return Float3(-self.x, -self.y, -self.z)
+        ### END SOLUTION
 
     def __sub__(self, o: Float3) -> Float3:
+        ### BEGIN SOLUTION
         return Float3(self.x - o.x, self.y - o.y, self.z - o.z)
+        ### END SOLUTION
 
     def __mul__(self, o) -> Float3:
+        ### BEGIN SOLUTION
         if isinstance(o, Float3):
             return Float3(self.x * o.x, self.y * o.y, self.z * o.z)
         return Float3(self.x * o, self.y * o, self.z * o)
+        ### END SOLUTION
 
     # "inline Float3 operator*(float f, const Float3 &v) { return v*f; }"
     def __rmul__(self, f) -> Float3:
         return self * f
 
     def __truediv__(self, o) -> Float3:
+        ### BEGIN SOLUTION
         if isinstance(o, Float3):
             return Float3(self.x / o.x, self.y / o.y, self.z / o.z)
         # The slide divides by a scalar through its reciprocal: inv = 1.0f / x.
         inv = 1.0 / o
         return Float3(self.x * inv, self.y * inv, self.z * inv)
+        ### END SOLUTION
 
     def length_squared(self) -> float:
+        ### BEGIN SOLUTION
         return self.x * self.x + self.y * self.y + self.z * self.z
+        ### END SOLUTION
 
     def length(self) -> float:
+        ### BEGIN SOLUTION
         return math.sqrt(self.length_squared())
+        ### END SOLUTION
 
     # --- conveniences a Python user expects --------------------------------------
     def __eq__(self, o) -> bool:
@@ -134,17 +148,23 @@ def _as_float3(o) -> Float3:
 
 
 def normalize(v: Float3) -> Float3:
+    ### BEGIN SOLUTION
     return v / v.length()
+    ### END SOLUTION
 
 
 def dot(v1: Float3, v2: Float3) -> float:
+    ### BEGIN SOLUTION
     return v1.x * v2.x + v1.y * v2.y + v1.z * v2.z
+    ### END SOLUTION
 
 
 def cross(v1: Float3, v2: Float3) -> Float3:
+    ### BEGIN SOLUTION
     return Float3((v1.y * v2.z) - (v1.z * v2.y),
                   (v1.z * v2.x) - (v1.x * v2.z),
                   (v1.x * v2.y) - (v1.y * v2.x))
+    ### END SOLUTION
 
 
 def as_float3(value, name: str) -> Float3:

@@ -33,8 +33,10 @@ class PointLight:
 
 
 def sample_point_light(light: PointLight, pos: Float3) -> Light:
+    ### BEGIN SOLUTION
     to_light = light.position - pos
     dist_squared = to_light.length_squared()
     dist = math.sqrt(dist_squared)
     L_i = light.intensity / dist_squared
     return Light(L_i, to_light / dist, dist)
+    ### END SOLUTION

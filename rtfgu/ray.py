@@ -34,7 +34,9 @@ class Ray:
 
     def __call__(self, t: float) -> Float3:
         """The point at parameter t: origin + direction * t (the slide's operator())."""
+        ### BEGIN SOLUTION
         return self.origin + self.direction * t
+        ### END SOLUTION
 
     def __repr__(self) -> str:
         return "Ray(%r, %r, tmin=%r, tmax=%r)" % (self.origin, self.direction, self.tmin, self.tmax)

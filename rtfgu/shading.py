@@ -59,15 +59,18 @@ class HitInfo:
 
 def in_shadow(scene, position: Float3, w_i: Float3, dist: float) -> bool:
     """A shadow ray toward the light: is any shape hit strictly before it?"""
+    ### BEGIN SOLUTION
     shadow_ray = Ray(position, w_i, SPAWN_EPSILON, dist - SPAWN_EPSILON)
     for shape in scene.shapes:
         if shape.intersect_p(shadow_ray):
             return True
     return False
+    ### END SOLUTION
 
 
 def lambertian(scene, r: Ray, hit: HitInfo) -> Float3:
     """L_e + sum over lights of rho_d / pi * L_i * max(n . w_i, 0), unless shadowed, + L_a."""
+    ### BEGIN SOLUTION
     rho_d = hit.color * DIFFUSE_FRACTION
     L_a = hit.color * AMBIENT_FRACTION
     result = hit.emission + L_a
@@ -80,12 +83,14 @@ def lambertian(scene, r: Ray, hit: HitInfo) -> Float3:
             continue
         result += rho_d / math.pi * sample.L_i * cos_theta
     return result
+    ### END SOLUTION
 
 
 def phong(scene, r: Ray, hit: HitInfo) -> Float3:
     """Lambertian plus the normalised Phong lobe (02562 worksheet 3):
     L_r = (rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s) L_i (n . w_i),
     with w_o = -r.direction and w_r = 2 (n . w_i) n - w_i, the mirrored light direction."""
+    ### BEGIN SOLUTION
     rho_d = hit.color * DIFFUSE_FRACTION
     L_a = hit.color * AMBIENT_FRACTION
     w_o = -r.direction
@@ -102,6 +107,7 @@ def phong(scene, r: Ray, hit: HitInfo) -> Float3:
         lobe = hit.specular * ((hit.shininess + 2.0) / (2.0 * math.pi) * cos_r ** hit.shininess)
         result += (rho_d / math.pi + lobe) * sample.L_i * cos_theta
     return result
+    ### END SOLUTION
 
 
 def _continue_path(r: Ray, hit: HitInfo, direction: Float3) -> None:
@@ -115,10 +121,12 @@ def _continue_path(r: Ray, hit: HitInfo, direction: Float3) -> None:
 
 def mirror(scene, r: Ray, hit: HitInfo) -> Float3:
     """Perfect reflection: the path continues along d - 2 (d . n) n."""
+    ### BEGIN SOLUTION
     d = r.direction
     n = hit.normal
     _continue_path(r, hit, d - n * (2.0 * dot(d, n)))
     return hit.emission
+    ### END SOLUTION
 
 
 def transparent(scene, r: Ray, hit: HitInfo) -> Float3:
@@ -127,6 +135,7 @@ def transparent(scene, r: Ray, hit: HitInfo) -> Float3:
     Outside or inside from the sign of the normal against the direction: d . n < 0 means the
     ray enters (eta = 1 / ior), otherwise it leaves (eta = ior, normal flipped). With no
     real refracted direction (total internal reflection) the ray is mirrored."""
+    ### BEGIN SOLUTION
     d = r.direction
     n = hit.normal
     cos_i = -dot(d, n)
@@ -143,6 +152,7 @@ def transparent(scene, r: Ray, hit: HitInfo) -> Float3:
         cos_t = math.sqrt(1.0 - sin2_t)
         _continue_path(r, hit, d * eta + n * (eta * cos_i - cos_t))
     return hit.emission
+    ### END SOLUTION
 
 
 def glossy(scene, r: Ray, hit: HitInfo) -> Float3:

@@ -31,6 +31,7 @@ class OrthographicCamera(Camera):
         self.yon = float(yon)
 
     def gen_ray(self, sx: float, sy: float) -> Ray:
+        ### BEGIN SOLUTION
         # OrthographicCamera::gen_ray, line for line.
         sx = 0.5 + sx / 2
         sy = 0.5 + sy / 2
@@ -39,3 +40,4 @@ class OrthographicCamera(Camera):
         y = self.bottom + (self.top - self.bottom) * sy
 
         return Ray(Float3(x, y, self.hither), Float3(0, 0, -1), 0.00001, self.yon - self.hither)
+        ### END SOLUTION

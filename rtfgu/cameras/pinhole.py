@@ -40,8 +40,10 @@ class PinholeCamera(Camera):
         self.b2 = cross(self.b1, self.v)
 
     def gen_ray(self, sx: float, sy: float) -> Ray:
+        ### BEGIN SOLUTION
         u = sx * self.aspect * 0.5
         w = sy * 0.5
         q = self.b1 * u + self.b2 * w + self.v * self.d
         # A copy: the C++ Ray holds its origin by value, so moving a ray never moves the eye.
         return Ray(self.eye.copy(), normalize(q))
+        ### END SOLUTION

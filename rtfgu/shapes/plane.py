@@ -16,6 +16,7 @@ class Plane(Shape):
         self.normal = normal
 
     def intersect_p(self, ray: Ray) -> bool:
+        ### BEGIN SOLUTION
         # t = ((a - o) . n) / (d . n), written as on the slide with A, B, C.
         A = dot(ray.origin, self.normal)
         B = dot(ray.direction, self.normal)
@@ -31,6 +32,9 @@ class Plane(Shape):
             return True
         else:
             return False
+        ### END SOLUTION
 
     def normal_at(self, position: Float3) -> Float3:
+        ### BEGIN SOLUTION
         return normalize(self.normal)
+        ### END SOLUTION

@@ -21,6 +21,7 @@ class Sphere(Shape):
         self.radius = float(radius)
 
     def intersect_p(self, ray: Ray) -> bool:
+        ### BEGIN SOLUTION
         # a t^2 + b t + c = 0 with a = d.d, b = 2 (o - c).d, c = (o - c).(o - c) - r^2
         temp = ray.origin - self.center
         a = dot(ray.direction, ray.direction)
@@ -47,6 +48,9 @@ class Sphere(Shape):
                 return True
             else:
                 return False
+        ### END SOLUTION
 
     def normal_at(self, position: Float3) -> Float3:
+        ### BEGIN SOLUTION
         return normalize(position - self.center)
+        ### END SOLUTION

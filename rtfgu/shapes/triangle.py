@@ -26,6 +26,7 @@ class Triangle(Shape):
             raise ValueError("Triangle vertices v0, v1, v2 span zero area (collinear or repeated)")
 
     def intersect_p(self, ray: Ray) -> bool:
+        ### BEGIN SOLUTION
         denom = dot(ray.direction, self.n)
         if denom == 0.0:
             return False  # the ray is parallel to the triangle's plane
@@ -40,6 +41,9 @@ class Triangle(Shape):
             ray.tmax = t
             return True
         return False
+        ### END SOLUTION
 
     def normal_at(self, position: Float3) -> Float3:
+        ### BEGIN SOLUTION
         return normalize(self.n)
+        ### END SOLUTION
