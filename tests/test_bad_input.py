@@ -1,0 +1,216 @@
+"""Bad input gives a ValueError that names the parameter; no NaN reaches a PNG."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import rtfgu
+from rtfgu import (Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
+                   Scene, Sphere, Triangle)
+from rtfgu.image import to_8bit, write_png
+from rtfgu.scenes import get_scene
+
+NAN = math.nan
+INF = math.inf
+RED = Float3(1, 0, 0)
+
+
+def raises_naming(*names):
+    """pytest.raises(ValueError) whose message must contain every one of ``names``."""
+    class Check:
+        def __enter__(self):
+            self.ctx = pytest.raises(ValueError)
+            self.info = self.ctx.__enter__()
+            return self.info
+
+        def __exit__(self, *exc):
+            suppressed = self.ctx.__exit__(*exc)
+            message = str(self.info.value)
+            for name in names:
+                assert name in message, "%r does not name %r" % (message, name)
+            return suppressed
+    return Check()
+
+
+# --- rays ----------------------------------------------------------------------------
+
+@pytest.mark.parametrize("direction", [
+    Float3(0, 0, 0), Float3(NAN, 0, 1), Float3(0, INF, 0), Float3(0, 0, -INF),
+], ids=["zero", "nan", "inf", "minus_inf"])
+def test_ray_direction_zero_or_non_finite(direction):
+    with raises_naming("direction"):
+        Ray(Float3(0, 0, 0), direction)
+
+
+def test_ray_origin_non_finite():
+    with raises_naming("origin"):
+        Ray(Float3(NAN, 0, 0), Float3(0, 0, 1))
+
+
+def test_ray_nan_interval():
+    with raises_naming("tmin"):
+        Ray(Float3(0, 0, 0), Float3(0, 0, 1), NAN, 1.0)
+    with raises_naming("tmax"):
+        Ray(Float3(0, 0, 0), Float3(0, 0, 1), 0.0, NAN)
+
+
+# --- shapes --------------------------------------------------------------------------
+
+@pytest.mark.parametrize("radius", [0.0, -1.0, NAN, INF, -INF, "1"])
+def test_sphere_radius(radius):
+    with raises_naming("radius"):
+        Sphere(Float3(0, 0, 0), radius, RED)
+
+
+def test_sphere_center_non_finite():
+    with raises_naming("center"):
+        Sphere(Float3(0, INF, 0), 1.0, RED)
+
+
+@pytest.mark.parametrize("v0, v1, v2", [
+    ((0, 0, 0), (1, 1, 1), (2, 2, 2)),      # collinear
+    ((0, 0, 0), (0, 0, 0), (1, 0, 0)),      # repeated vertex
+    ((1, 2, 3), (1, 2, 3), (1, 2, 3)),      # a point
+], ids=["collinear", "repeated", "point"])
+def test_triangle_zero_area(v0, v1, v2):
+    with raises_naming("v0", "v1", "v2"):
+        Triangle(Float3(*v0), Float3(*v1), Float3(*v2), RED)
+
+
+def test_triangle_vertex_non_finite():
+    with raises_naming("v1"):
+        Triangle(Float3(0, 0, 0), Float3(NAN, 0, 0), Float3(0, 1, 0), RED)
+
+
+def test_plane_zero_or_non_finite_normal():
+    with raises_naming("normal"):
+        Plane(Float3(0, 0, 0), Float3(0, 0, 0), RED)
+    with raises_naming("normal"):
+        Plane(Float3(0, 0, 0), Float3(0, NAN, 1), RED)
+    with raises_naming("point"):
+        Plane(Float3(INF, 0, 0), Float3(0, 1, 0), RED)
+
+
+def test_shape_colour_non_finite():
+    with raises_naming("color"):
+        Sphere(Float3(0, 0, 0), 1.0, Float3(NAN, 0, 0))
+
+
+def test_material_unknown_shader_and_bad_numbers():
+    with raises_naming("shader"):
+        Material(99)
+    with raises_naming("ior"):
+        Material(rtfgu.TRANSPARENT, ior=0.0)
+    with raises_naming("shininess"):
+        Material(rtfgu.PHONG, shininess=NAN)
+
+
+def test_point_light_non_finite():
+    with raises_naming("position"):
+        PointLight(Float3(NAN, 0, 0), Float3(1, 1, 1))
+    with raises_naming("intensity"):
+        PointLight(Float3(0, 0, 0), Float3(INF, 1, 1))
+
+
+# --- cameras -------------------------------------------------------------------------
+
+def test_pinhole_eye_equals_lookat():
+    with raises_naming("lookat", "eye"):
+        PinholeCamera(Float3(1, 2, 3), Float3(1, 2, 3), Float3(0, 1, 0))
+
+
+@pytest.mark.parametrize("up", [Float3(0, 1, 0), Float3(0, -3, 0), Float3(0, 0, 0)],
+                         ids=["parallel", "antiparallel", "zero"])
+def test_pinhole_up_parallel_to_view(up):
+    # looking straight down -y: an up along y leaves no image-plane basis
+    with raises_naming("up"):
+        PinholeCamera(Float3(0, 5, 0), Float3(0, 0, 0), up)
+
+
+def test_pinhole_non_finite_eye_and_bad_constants():
+    with raises_naming("eye"):
+        PinholeCamera(Float3(NAN, 0, 0), Float3(0, 0, 0), Float3(0, 1, 0))
+    with raises_naming("d"):
+        PinholeCamera(Float3(0, 0, 1), Float3(0, 0, 0), Float3(0, 1, 0), d=0.0)
+    with raises_naming("aspect"):
+        PinholeCamera(Float3(0, 0, 1), Float3(0, 0, 0), Float3(0, 1, 0), aspect=-1.0)
+
+
+def test_orthographic_degenerate_or_non_finite():
+    with raises_naming("right", "left"):
+        OrthographicCamera(1, 1, -1, 1)
+    with raises_naming("top", "bottom"):
+        OrthographicCamera(-1, 1, 2, 2)
+    with raises_naming("left"):
+        OrthographicCamera(NAN, 1, -1, 1)
+    with raises_naming("yon"):
+        OrthographicCamera(-1, 1, -1, 1, yon=NAN)
+
+
+# --- render --------------------------------------------------------------------------
+
+def tiny_scene():
+    scene = Scene(OrthographicCamera(-1, 1, -1, 1))
+    scene.shapes.append(Sphere(Float3(0, 0, -2), 0.5, RED))
+    return scene
+
+
+@pytest.mark.parametrize("width, height, name", [
+    (0, 4, "width"), (-3, 4, "width"), (4, 0, "height"), (4, -1, "height"),
+    (2.5, 4, "width"), (4, 3.0, "height"), ("4", 4, "width"), (True, 4, "width"),
+    (NAN, 4, "width"),
+])
+def test_render_size(width, height, name):
+    with raises_naming(name):
+        rtfgu.render(tiny_scene(), width, height)
+
+
+def test_render_numpy_integer_size_is_fine():
+    assert rtfgu.render(tiny_scene(), np.int64(3), np.int32(2)).shape == (2, 3, 3)
+
+
+def test_render_without_camera():
+    with raises_naming("camera"):
+        rtfgu.render(Scene(), 4, 4)
+
+
+def test_render_unknown_backend():
+    with raises_naming("backend"):
+        rtfgu.render(tiny_scene(), 4, 4, backend="no-such-backend")
+
+
+def test_render_refuses_to_return_nan():
+    # A colour set to NaN after construction (bypassing Shape's check) must not come back
+    # as an image silently.
+    scene = tiny_scene()
+    scene.shapes[0].color = Float3(NAN, 0, 0)
+    with pytest.raises(ValueError):
+        rtfgu.render(scene, 4, 4)
+
+
+# --- scene names ---------------------------------------------------------------------
+
+def test_unknown_scene_name():
+    with raises_naming("no_such_scene"):
+        get_scene("no_such_scene")
+
+
+# --- no NaN reaches a PNG --------------------------------------------------------------
+
+@pytest.mark.parametrize("bad", [NAN, INF, -INF])
+def test_write_png_refuses_non_finite(tmp_path, bad):
+    image = np.zeros((2, 3, 3))
+    image[1, 2, 0] = bad
+    path = tmp_path / "bad.png"
+    with raises_naming("image", "row 1", "column 2"):
+        write_png(image, path)
+    assert not path.exists()
+    with pytest.raises(ValueError):
+        to_8bit(image)
+
+
+def test_write_png_wrong_shape(tmp_path):
+    with raises_naming("image"):
+        write_png(np.zeros((4, 4)), tmp_path / "flat.png")
