@@ -1,0 +1,71 @@
+"""The command line, run as a user runs it: ``python -m rtfgu ...`` in a fresh process."""
+from __future__ import annotations
+
+import subprocess
+import sys
+
+import numpy as np
+
+import rtfgu
+from rtfgu.image import read_png, to_8bit
+from rtfgu.scenes import SCENES
+
+
+def run(*args, cwd):
+    return subprocess.run([sys.executable, "-m", "rtfgu", *args], cwd=cwd,
+                          capture_output=True, text=True, timeout=120)
+
+
+def test_list_prints_every_scene_name(tmp_path):
+    done = run("list", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == list(SCENES)
+
+
+def test_render_writes_a_png_of_the_asked_size(tmp_path):
+    out = tmp_path / "out.png"
+    done = run("render", "lecture01_flat_colors", "-o", str(out), "--width", "16", "--height", "16",
+               cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    png = read_png(out)
+    assert png.shape == (16, 16, 3)
+    # the same pixels as rendering in this process and writing with gamma
+    expected = to_8bit(rtfgu.render(SCENES["lecture01_flat_colors"](), 16, 16))
+    assert np.array_equal(png, expected)
+    assert str(out) in done.stdout
+    assert "16/16" in done.stderr  # the progress line reached the last row
+
+
+def test_render_non_square(tmp_path):
+    out = tmp_path / "wide.png"
+    done = run("render", "default_flat_colors", "-o", str(out), "--width", "12", "--height", "5",
+               cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert read_png(out).shape == (5, 12, 3)
+
+
+def test_unknown_scene_exits_2_and_names_it(tmp_path):
+    out = tmp_path / "never.png"
+    done = run("render", "no_such_scene", "-o", str(out), "--width", "4", "--height", "4",
+               cwd=tmp_path)
+    assert done.returncode == 2
+    assert "no_such_scene" in done.stderr
+    assert "Traceback" not in done.stderr
+    assert not out.exists()
+
+
+def test_bad_size_exits_2_and_names_it(tmp_path):
+    for option, value in (("--width", "0"), ("--height", "-2"), ("--width", "1.5")):
+        out = tmp_path / "never.png"
+        args = {"--width": "4", "--height": "4"}
+        args[option] = value
+        done = run("render", "lecture01_flat_colors", "-o", str(out),
+                   "--width", args["--width"], "--height", args["--height"], cwd=tmp_path)
+        assert done.returncode == 2, (option, value, done.stderr)
+        assert option.lstrip("-") in done.stderr, done.stderr
+        assert "Traceback" not in done.stderr
+        assert not out.exists()
+
+
+def test_no_command_exits_2(tmp_path):
+    assert run(cwd=tmp_path).returncode == 2
