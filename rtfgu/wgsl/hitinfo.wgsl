@@ -1,0 +1,20 @@
+// What a ray-surface intersection records (02562, "struct HitInfo"); after the slide's dots
+// come the material of the shape hit: shader id, rho_s, s, ior and L_e (rtfgu.shading.HitInfo).
+struct HitInfo {
+    has_hit: bool,
+    dist: f32,
+    position: vec3f,
+    normal: vec3f,
+    color: vec3f,
+    shader: i32,
+    specular: vec3f,
+    shininess: f32,
+    ior: f32,
+    emission: vec3f
+};
+
+fn empty_hit() -> HitInfo
+{
+    return HitInfo(false, 0.0, vec3f(0.0), vec3f(0.0), vec3f(0.0), BASE_COLOR,
+                   vec3f(0.0), 0.0, 1.0, vec3f(0.0));
+}
