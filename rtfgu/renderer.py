@@ -13,7 +13,7 @@ from .float3 import Float3
 from .ray import Ray
 from .shading import MAX_DEPTH, HitInfo, shade
 
-BACKENDS = ("reference",)
+BACKENDS = ("reference", "numba")
 DEFAULT_BACKEND = "reference"
 PRECISIONS = ("float64", "float32")
 
@@ -65,8 +65,8 @@ def render(scene, width: int, height: int, backend: str = "reference",
            precision: str = "float64", progress=None) -> np.ndarray:
     """Render ``scene`` to a (height, width, 3) float64 array, row 0 at the top, before gamma.
 
-    backend: "reference" (the lecture layer, pure Python).
-    precision: "float64" (the reference computes in Python floats).
+    backend: "reference" (the lecture layer, pure Python) or "numba" (rtfgu.kernels, all cores).
+    precision: "float64" (the reference computes in Python floats) or "float32" (numba only).
     """
     check_size(width, height)
     if backend not in BACKENDS:
@@ -78,6 +78,9 @@ def render(scene, width: int, height: int, backend: str = "reference",
         if precision != "float64":
             raise ValueError("precision: the reference backend computes in float64 only")
         image = render_reference(scene, width, height, progress)
+    elif backend == "numba":
+        from .kernels import render_numba  # numba is imported only when asked for
+        image = render_numba(scene, width, height, precision)
     if not np.all(np.isfinite(image)):
         raise ValueError("the %s backend produced non-finite pixels" % backend)
     return image

@@ -1,0 +1,163 @@
+"""Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
+"Ray-triangle intersection"), operation for operation as in rtfgu/shapes/.
+
+Each function returns the hit distance t, or inf on a miss. The interval is [tmin, tmax]
+with tmax included, unlike the slides' [tmin, tmax): the lecture loop visits the shapes in
+Scene order and keeps the first of two equal distances, while ``intersect_scene`` visits
+them kind by kind and breaks such a tie by the Scene index, for which it needs to see it.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ..layout import PLANE, SPHERE, TRIANGLE, PLANE_NORMAL, PLANE_POINT, SPHERE_RADIUS, TRI_E0, TRI_E1, TRI_N, TRI_V0
+from .float3 import cross, dot, lit, load3, sub
+
+
+@njit(cache=True)
+def intersect_plane(origin, direction, tmin, tmax, point, normal):
+    # t = ((a - o) . n) / (d . n), written as on the slide with A, B, C.
+    A = dot(origin, normal)
+    B = dot(direction, normal)
+    C = dot(point, normal)
+    if B == lit(0, B):
+        return lit(math.inf, B)  # parallel to the plane
+    t = (C - A) / B
+    if t >= tmin and t <= tmax:
+        return t
+    return lit(math.inf, B)
+
+
+@njit(cache=True)
+def intersect_triangle(origin, direction, tmin, tmax, v0, e0, e1, n):
+    # 02562 barycentric test: beta, gamma from ((v0 - o) x w) . e / (w . n).
+    denom = dot(direction, n)
+    if denom == lit(0, denom):
+        return lit(math.inf, denom)
+    a = sub(v0, origin)
+    t = dot(a, n) / denom
+    if not (t >= tmin and t <= tmax):
+        return lit(math.inf, denom)
+    c = cross(a, direction)
+    beta = dot(c, e1) / denom
+    gamma = -dot(c, e0) / denom
+    zero = lit(0, denom)
+    if beta >= zero and gamma >= zero and beta + gamma <= lit(1, denom):
+        return t
+    return lit(math.inf, denom)
+
+
+@njit(cache=True)
+def sphere_roots(temp, c, direction, tmin, tmax):
+    """The sphere test from temp = o - center and c = temp . temp - r^2: the part of
+    ``intersect_sphere`` that depends on the direction. Rays that share an origin (a pinhole
+    camera's primary rays) share temp and c, computed once per frame, with the same bits."""
+    a = dot(direction, direction)
+    b = lit(2, a) * dot(temp, direction)
+    disc = b * b - lit(4, a) * a * c
+    if disc < lit(0, a):
+        return lit(math.inf, a)
+    e = math.sqrt(disc)
+    denom = lit(2, a) * a
+    # The least t in range: the near root first, then the far one (a ray from inside).
+    t = (-b - e) / denom
+    if t >= tmin and t <= tmax:
+        return t
+    t = (-b + e) / denom
+    if t >= tmin and t <= tmax:
+        return t
+    return lit(math.inf, a)
+
+
+@njit(cache=True)
+def intersect_sphere(origin, direction, tmin, tmax, center, radius):
+    # a t^2 + b t + c = 0 with a = d.d, b = 2 (o - c).d, c = (o - c).(o - c) - r^2
+    temp = sub(origin, center)
+    c = dot(temp, temp) - radius * radius
+    return sphere_roots(temp, c, direction, tmin, tmax)
+
+
+@njit(cache=True)
+def sphere_eye_terms(eye, spheres, out):
+    """temp = eye - center and c = temp . temp - r^2 for every sphere, once per frame."""
+    for i in range(spheres.shape[0]):
+        temp = sub(eye, load3(spheres[i], 0))
+        radius = spheres[i, SPHERE_RADIUS]
+        out[i, 0] = temp[0]
+        out[i, 1] = temp[1]
+        out[i, 2] = temp[2]
+        out[i, 3] = dot(temp, temp) - radius * radius
+
+
+@njit(cache=True)
+def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangles,
+                    triangle_index, spheres, sphere_index, sphere_eye, candidates, n_candidates):
+    """``intersect_scene``: the nearest hit over all shapes, as (t, scene index, shape kind,
+    row in that kind's array), scene index -1 on a miss. A kind whose array is None is not in the scene and compiles
+    to nothing. ``sphere_eye`` (None, or temp and c per sphere) is given for rays from the
+    eye; ``candidates[:n_candidates]`` (None for all) are the sphere rows that can be hit."""
+    best = -1
+    kind = -1
+    row = -1
+    # A hit replaces the nearest so far if nearer, or as near and earlier in Scene.shapes.
+    if planes is not None:
+        for i in range(planes.shape[0]):
+            t = intersect_plane(origin, direction, tmin, tmax, load3(planes[i], PLANE_POINT),
+                                load3(planes[i], PLANE_NORMAL))
+            idx = plane_index[i]
+            if t < tmax or (t == tmax and idx < best):
+                tmax = t
+                best = idx
+                kind = PLANE
+                row = i
+    if triangles is not None:
+        for i in range(triangles.shape[0]):
+            tri = triangles[i]
+            t = intersect_triangle(origin, direction, tmin, tmax, load3(tri, TRI_V0),
+                                   load3(tri, TRI_E0), load3(tri, TRI_E1), load3(tri, TRI_N))
+            idx = triangle_index[i]
+            if t < tmax or (t == tmax and idx < best):
+                tmax = t
+                best = idx
+                kind = TRIANGLE
+                row = i
+    if spheres is not None:
+        n = spheres.shape[0] if candidates is None else n_candidates
+        for k in range(n):
+            i = k if candidates is None else candidates[k]
+            if sphere_eye is None:
+                t = intersect_sphere(origin, direction, tmin, tmax, load3(spheres[i], 0),
+                                     spheres[i, SPHERE_RADIUS])
+            else:
+                t = sphere_roots(load3(sphere_eye[i], 0), sphere_eye[i, 3], direction, tmin, tmax)
+            idx = sphere_index[i]
+            if t < tmax or (t == tmax and idx < best):
+                tmax = t
+                best = idx
+                kind = SPHERE
+                row = i
+    return tmax, best, kind, row
+
+
+@njit(cache=True)
+def in_shadow(position, w_i, tmin, tmax, planes, triangles, spheres):
+    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""
+    if planes is not None:
+        for i in range(planes.shape[0]):
+            if intersect_plane(position, w_i, tmin, tmax, load3(planes[i], PLANE_POINT),
+                               load3(planes[i], PLANE_NORMAL)) < tmax:
+                return True
+    if triangles is not None:
+        for i in range(triangles.shape[0]):
+            tri = triangles[i]
+            if intersect_triangle(position, w_i, tmin, tmax, load3(tri, TRI_V0), load3(tri, TRI_E0),
+                                  load3(tri, TRI_E1), load3(tri, TRI_N)) < tmax:
+                return True
+    if spheres is not None:
+        for i in range(spheres.shape[0]):
+            if intersect_sphere(position, w_i, tmin, tmax, load3(spheres[i], 0),
+                                spheres[i, SPHERE_RADIUS]) < tmax:
+                return True
+    return False

@@ -1,0 +1,21 @@
+"""sample_point_light (02562 "Sampling light in the shader", Kepler's inverse square law),
+operation for operation as rtfgu.lights.sample_point_light."""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ..layout import LIGHT_INTENSITY, LIGHT_POSITION
+from .float3 import div, load3, sub
+
+
+@njit(cache=True)
+def sample_point_light(light, pos):
+    """The slide's Light struct (L_i, w_i, dist) for the layout row ``light`` seen from pos:
+    L_i = I / ||p - x||^2."""
+    to_light = sub(load3(light, LIGHT_POSITION), pos)
+    dist_squared = to_light[0] * to_light[0] + to_light[1] * to_light[1] + to_light[2] * to_light[2]
+    dist = math.sqrt(dist_squared)
+    L_i = div(load3(light, LIGHT_INTENSITY), dist_squared)
+    return L_i, div(to_light, dist), dist

@@ -1,0 +1,465 @@
+"""numba versions of the slide and the robust single-ray intersections, and batch evaluators.
+
+The slide functions repeat rtfgu/shapes/ operation for operation; the robust ones repeat
+rtfgu/robust.py (Ray Tracing Gems ch. 7 for spheres, Woop, Benthin and Wald 2013 for
+triangles, compensated dot products for planes, PBRT-v4 6.8.6 for spawned rays); see the
+docstrings there for the reasons and sources.
+
+Every function takes scalars and returns the hit distance t in [tmin, tmax), or inf on a
+miss. They are generic over float32 and float64: every literal goes through ``F = type(x)``,
+because a bare numba literal is float64 (or int64) and would silently promote float32
+arithmetic to float64, which would hide exactly the float32 failures these kernels measure.
+The one deliberate float64 computation is the fallback of the watertight test for edge
+functions that round to zero (Woop et al. 2013, section 3).
+
+Shape parameters, one row per ray (the hard-case families of rtfgu.hardcases):
+    sphere    (N, 4)  center, radius
+    plane     (N, 6)  point, normal
+    triangle  (N, 9)  v0, v1, v2   (the vertices themselves: watertightness needs the same
+                                    floats in every triangle that shares them)
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..layout import PLANE, SPHERE, TRIANGLE
+from ..shading import SPAWN_EPSILON
+
+SLIDE = 0
+ROBUST = 1
+FORMULAS = {SLIDE: "slide", ROBUST: "robust"}
+
+
+@njit(cache=True)
+def _finite6(a, b, c, d, e, f):
+    # x - x is 0 for a finite x and NaN for inf and NaN; the sum carries any NaN through.
+    s = a + b + c + d + e + f
+    return s - s == type(a)(0.0)
+
+
+# --- sphere ---------------------------------------------------------------------------
+
+@njit(cache=True)
+def sphere_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
+    """Lecture 01 "Ray-Sphere Intersection": a t^2 + b t + c = 0, near root first."""
+    F = type(ox)
+    tx = ox - cx
+    ty = oy - cy
+    tz = oz - cz
+    a = dx * dx + dy * dy + dz * dz
+    b = F(2.0) * (tx * dx + ty * dy + tz * dz)
+    c = (tx * tx + ty * ty + tz * tz) - radius * radius
+    disc = (b * b) - (F(4.0) * a * c)
+    if disc < F(0.0):
+        return F(math.inf)
+    e = math.sqrt(disc)
+    denom = F(2.0) * a
+    t = (-b - e) / denom
+    if t >= tmin and t < tmax:
+        return t
+    t = (-b + e) / denom
+    if t >= tmin and t < tmax:
+        return t
+    return F(math.inf)
+
+
+@njit(cache=True)
+def sphere_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
+    """Ray Tracing Gems ch. 7 (Haines et al. 2019): disc = a (r^2 - |f + (b'/a) d|^2),
+    t0 = c / q, t1 = q / a with q = b' + sign(b') sqrt(disc). Non-finite input misses."""
+    F = type(ox)
+    inf = F(math.inf)
+    if not (_finite6(ox, oy, oz, dx, dy, dz) and _finite6(cx, cy, cz, radius, tmin, F(0.0))):
+        return inf
+    fx = ox - cx
+    fy = oy - cy
+    fz = oz - cz
+    a = dx * dx + dy * dy + dz * dz
+    b = -(fx * dx + fy * dy + fz * dz)
+    c = (fx * fx + fy * fy + fz * fz) - radius * radius
+    s = b / a
+    lx = fx + s * dx
+    ly = fy + s * dy
+    lz = fz + s * dz
+    disc = a * ((radius * radius) - (lx * lx + ly * ly + lz * lz))
+    if not (disc >= F(0.0)):
+        return inf
+    root = math.sqrt(disc)
+    q = b + root if b >= F(0.0) else b - root
+    if q == F(0.0):
+        t0 = F(0.0)
+        t1 = F(0.0)
+    else:
+        t0 = c / q
+        t1 = q / a
+    if t0 > t1:
+        t0, t1 = t1, t0
+    if t0 >= tmin and t0 < tmax:
+        return t0
+    if t1 >= tmin and t1 < tmax:
+        return t1
+    return inf
+
+
+# --- plane ----------------------------------------------------------------------------
+
+@njit(cache=True)
+def plane_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
+    """Lecture 01 "Ray-Plane Intersection": t = (C - A) / B with A = o.n, B = d.n, C = a.n."""
+    F = type(ox)
+    A = ox * nx + oy * ny + oz * nz
+    B = dx * nx + dy * ny + dz * nz
+    C = px * nx + py * ny + pz * nz
+    if B == F(0.0):
+        return F(math.inf)
+    t = (C - A) / B
+    if t >= tmin and t < tmax:
+        return t
+    return F(math.inf)
+
+
+@njit(cache=True)
+def _two_sum(a, b):
+    s = a + b
+    bb = s - a
+    return s, (a - (s - bb)) + (b - bb)
+
+
+@njit(cache=True)
+def _two_product(a, b):
+    F = type(a)
+    # Veltkamp's splitter 2^ceil(p/2) + 1: 2^12 + 1 for float32 (p = 24), 2^27 + 1 for float64.
+    ulp1 = np.nextafter(F(1.0), F(2.0)) - F(1.0)
+    splitter = F(4097.0) if ulp1 > F(1e-10) else F(134217729.0)
+    p = a * b
+    ca = splitter * a
+    ah = ca - (ca - a)
+    al = a - ah
+    cb = splitter * b
+    bh = cb - (cb - b)
+    bl = b - bh
+    return p, al * bl - (((p - ah * bh) - al * bh) - ah * bl)
+
+
+@njit(cache=True)
+def _dot2_3(x0, x1, x2, y0, y1, y2):
+    # Ogita, Rump and Oishi 2005, "Dot2", for three terms.
+    p, s = _two_product(x0, y0)
+    h, r = _two_product(x1, y1)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    h, r = _two_product(x2, y2)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    return p + s
+
+
+@njit(cache=True)
+def _dot2_6(x0, x1, x2, x3, x4, x5, y0, y1, y2, y3, y4, y5):
+    p, s = _two_product(x0, y0)
+    h, r = _two_product(x1, y1)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    h, r = _two_product(x2, y2)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    h, r = _two_product(x3, y3)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    h, r = _two_product(x4, y4)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    h, r = _two_product(x5, y5)
+    p, q = _two_sum(p, h)
+    s = s + (q + r)
+    return p + s
+
+
+@njit(cache=True)
+def plane_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
+    """t = ((a - o) . n) / (d . n) with a - o exact (TwoSum) and both dot products
+    compensated (Dot2); d . n == 0 and non-finite input are a defined miss."""
+    F = type(ox)
+    inf = F(math.inf)
+    if not (_finite6(ox, oy, oz, dx, dy, dz) and _finite6(px, py, pz, nx, ny, nz)
+            and _finite6(tmin, F(0.0), F(0.0), F(0.0), F(0.0), F(0.0))):
+        return inf
+    denom = _dot2_3(dx, dy, dz, nx, ny, nz)
+    if denom == F(0.0):
+        return inf
+    sx, ex = _two_sum(px, -ox)
+    sy, ey = _two_sum(py, -oy)
+    sz, ez = _two_sum(pz, -oz)
+    num = _dot2_6(sx, sy, sz, ex, ey, ez, nx, ny, nz, nx, ny, nz)
+    t = num / denom
+    if t >= tmin and t < tmax:
+        return t
+    return inf
+
+
+# --- triangle -------------------------------------------------------------------------
+
+@njit(cache=True)
+def triangle_slide(ox, oy, oz, dx, dy, dz, tmin, tmax,
+                   v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
+    """02562 "Ray-triangle intersection": e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1,
+    t = ((v0 - o) . n) / (w . n), beta and gamma from ((v0 - o) x w) . e1 and . e0."""
+    F = type(ox)
+    inf = F(math.inf)
+    e0x = v1x - v0x
+    e0y = v1y - v0y
+    e0z = v1z - v0z
+    e1x = v2x - v0x
+    e1y = v2y - v0y
+    e1z = v2z - v0z
+    nx = e0y * e1z - e0z * e1y
+    ny = e0z * e1x - e0x * e1z
+    nz = e0x * e1y - e0y * e1x
+    denom = dx * nx + dy * ny + dz * nz
+    if denom == F(0.0):
+        return inf
+    ax = v0x - ox
+    ay = v0y - oy
+    az = v0z - oz
+    t = (ax * nx + ay * ny + az * nz) / denom
+    if not (t >= tmin and t < tmax):
+        return inf
+    cx = ay * dz - az * dy
+    cy = az * dx - ax * dz
+    cz = ax * dy - ay * dx
+    beta = (cx * e1x + cy * e1y + cz * e1z) / denom
+    gamma = -(cx * e0x + cy * e0y + cz * e0z) / denom
+    if beta >= F(0.0) and gamma >= F(0.0) and beta + gamma <= F(1.0):
+        return t
+    return inf
+
+
+@njit(cache=True)
+def _pick(x, y, z, k):
+    if k == 0:
+        return x
+    if k == 1:
+        return y
+    return z
+
+
+@njit(cache=True)
+def triangle_robust(ox, oy, oz, dx, dy, dz, tmin, tmax,
+                    v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
+    """Watertight ray/triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (non-culling)."""
+    F = type(ox)
+    inf = F(math.inf)
+    zero = F(0.0)
+    if not (_finite6(ox, oy, oz, dx, dy, dz) and _finite6(v0x, v0y, v0z, v1x, v1y, v1z)
+            and _finite6(v2x, v2y, v2z, tmin, zero, zero)):
+        return inf
+    adx = abs(dx)
+    ady = abs(dy)
+    adz = abs(dz)
+    if adx > ady:
+        kz = 0 if adx > adz else 2
+    else:
+        kz = 1 if ady > adz else 2
+    kx = kz + 1
+    if kx == 3:
+        kx = 0
+    ky = kx + 1
+    if ky == 3:
+        ky = 0
+    dkz = _pick(dx, dy, dz, kz)
+    if dkz < zero:
+        kx, ky = ky, kx
+    Sx = _pick(dx, dy, dz, kx) / dkz
+    Sy = _pick(dx, dy, dz, ky) / dkz
+    Sz = F(1.0) / dkz
+    Ax = v0x - ox
+    Ay = v0y - oy
+    Az = v0z - oz
+    Bx = v1x - ox
+    By = v1y - oy
+    Bz = v1z - oz
+    Cx = v2x - ox
+    Cy = v2y - oy
+    Cz = v2z - oz
+    Akz = _pick(Ax, Ay, Az, kz)
+    Bkz = _pick(Bx, By, Bz, kz)
+    Ckz = _pick(Cx, Cy, Cz, kz)
+    ax = _pick(Ax, Ay, Az, kx) - Sx * Akz
+    ay = _pick(Ax, Ay, Az, ky) - Sy * Akz
+    bx = _pick(Bx, By, Bz, kx) - Sx * Bkz
+    by = _pick(Bx, By, Bz, ky) - Sy * Bkz
+    cx = _pick(Cx, Cy, Cz, kx) - Sx * Ckz
+    cy = _pick(Cx, Cy, Cz, ky) - Sy * Ckz
+    U = cx * by - cy * bx
+    V = ax * cy - ay * cx
+    W = bx * ay - by * ax
+    if U == zero or V == zero or W == zero:
+        # Woop et al. section 3: an edge function that rounds to zero is recomputed in
+        # double, so that the edge test stays consistent with the exact one (a no-op in
+        # float64).
+        U = F(np.float64(cx) * np.float64(by) - np.float64(cy) * np.float64(bx))
+        V = F(np.float64(ax) * np.float64(cy) - np.float64(ay) * np.float64(cx))
+        W = F(np.float64(bx) * np.float64(ay) - np.float64(by) * np.float64(ax))
+    if (U < zero or V < zero or W < zero) and (U > zero or V > zero or W > zero):
+        return inf
+    det = U + V + W
+    if det == zero:
+        return inf
+    T = U * (Sz * Akz) + V * (Sz * Bkz) + W * (Sz * Ckz)
+    t = T / det
+    if t >= tmin and t < tmax:
+        return t
+    return inf
+
+
+# --- spawned rays (PBRT-v4 6.8.6) -----------------------------------------------------
+
+@njit(cache=True)
+def gamma(n, x):
+    """PBRT's gamma(n) = n u / (1 - n u) in the precision of x (u = half the ulp of 1)."""
+    F = type(x)
+    u = (np.nextafter(F(1.0), F(2.0)) - F(1.0)) * F(0.5)
+    nu = F(n) * u
+    return nu / (F(1.0) - nu)
+
+
+@njit(cache=True)
+def sphere_point_error(px, py, pz, cx, cy, cz):
+    g5 = gamma(5, px)
+    g3 = gamma(3, px)
+    qx = abs(px - cx)
+    qy = abs(py - cy)
+    qz = abs(pz - cz)
+    return (g5 * qx + g3 * (qx + abs(cx)), g5 * qy + g3 * (qy + abs(cy)),
+            g5 * qz + g3 * (qz + abs(cz)))
+
+
+@njit(cache=True)
+def triangle_point_error(v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
+    g7 = gamma(7, v0x)
+    return (g7 * (abs(v0x) + abs(v1x) + abs(v2x)), g7 * (abs(v0y) + abs(v1y) + abs(v2y)),
+            g7 * (abs(v0z) + abs(v1z) + abs(v2z)))
+
+
+@njit(cache=True)
+def plane_point_error(px, py, pz, ax, ay, az):
+    g7 = gamma(7, px)
+    return (g7 * (abs(px) + abs(ax)), g7 * (abs(py) + abs(ay)), g7 * (abs(pz) + abs(az)))
+
+
+@njit(cache=True)
+def _away(x, o):
+    F = type(x)
+    if o > F(0.0):
+        return np.nextafter(x, F(math.inf))
+    if o < F(0.0):
+        return np.nextafter(x, F(-math.inf))
+    return x
+
+
+@njit(cache=True)
+def offset_ray_origin(px, py, pz, ex, ey, ez, nx, ny, nz, wx, wy, wz):
+    """PBRT-v4 OffsetRayOrigin: p + (|n| . p_error) n toward w, rounded away from p."""
+    F = type(px)
+    d = abs(nx) * ex + abs(ny) * ey + abs(nz) * ez
+    sx = d * nx
+    sy = d * ny
+    sz = d * nz
+    if wx * nx + wy * ny + wz * nz < F(0.0):
+        sx = -sx
+        sy = -sy
+        sz = -sz
+    return _away(px + sx, sx), _away(py + sy, sy), _away(pz + sz, sz)
+
+
+# --- batch evaluators -----------------------------------------------------------------
+
+@njit(cache=True)
+def batch_sphere(formula, origins, directions, tmin, tmax, shapes):
+    n = origins.shape[0]
+    out = np.empty(n, dtype=origins.dtype)
+    for i in range(n):
+        o = origins[i]
+        d = directions[i]
+        s = shapes[i]
+        if formula == ROBUST:
+            out[i] = sphere_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
+                                   s[0], s[1], s[2], s[3])
+        else:
+            out[i] = sphere_slide(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
+                                  s[0], s[1], s[2], s[3])
+    return out
+
+
+@njit(cache=True)
+def batch_plane(formula, origins, directions, tmin, tmax, shapes):
+    n = origins.shape[0]
+    out = np.empty(n, dtype=origins.dtype)
+    for i in range(n):
+        o = origins[i]
+        d = directions[i]
+        s = shapes[i]
+        if formula == ROBUST:
+            out[i] = plane_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
+                                  s[0], s[1], s[2], s[3], s[4], s[5])
+        else:
+            out[i] = plane_slide(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
+                                 s[0], s[1], s[2], s[3], s[4], s[5])
+    return out
+
+
+@njit(cache=True)
+def batch_triangle(formula, origins, directions, tmin, tmax, shapes):
+    n = origins.shape[0]
+    out = np.empty(n, dtype=origins.dtype)
+    for i in range(n):
+        o = origins[i]
+        d = directions[i]
+        s = shapes[i]
+        if formula == ROBUST:
+            out[i] = triangle_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
+                                     s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
+        else:
+            out[i] = triangle_slide(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
+                                    s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
+    return out
+
+
+@njit(cache=True)
+def batch_spawn(formula, kind, positions, normals, directions, shapes):
+    """Origins and tmin of secondary rays leaving ``positions`` (on the shapes of ``kind``):
+    the slide's fixed SPAWN_EPSILON as tmin, or PBRT's offset origin with tmin 0."""
+    n = positions.shape[0]
+    F = positions.dtype.type
+    origins = np.empty_like(positions)
+    tmin = np.empty(n, dtype=positions.dtype)
+    for i in range(n):
+        p = positions[i]
+        if formula != ROBUST:
+            origins[i, 0] = p[0]
+            origins[i, 1] = p[1]
+            origins[i, 2] = p[2]
+            tmin[i] = F(SPAWN_EPSILON)
+            continue
+        s = shapes[i]
+        if kind == SPHERE:
+            ex, ey, ez = sphere_point_error(p[0], p[1], p[2], s[0], s[1], s[2])
+        elif kind == TRIANGLE:
+            ex, ey, ez = triangle_point_error(s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
+        else:
+            ex, ey, ez = plane_point_error(p[0], p[1], p[2], s[0], s[1], s[2])
+        nn = normals[i]
+        w = directions[i]
+        ox, oy, oz = offset_ray_origin(p[0], p[1], p[2], ex, ey, ez, nn[0], nn[1], nn[2],
+                                       w[0], w[1], w[2])
+        origins[i, 0] = ox
+        origins[i, 1] = oy
+        origins[i, 2] = oz
+        tmin[i] = F(0.0)
+    return origins, tmin
+
+
+BATCH = {SPHERE: batch_sphere, PLANE: batch_plane, TRIANGLE: batch_triangle}
