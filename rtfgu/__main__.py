@@ -1,4 +1,4 @@
-"""The command line: ``python -m rtfgu list | render NAME | render-all``.
+"""The command line: ``python -m rtfgu list | render NAME | render-all | info | export-wgsl NAME``.
 
 Errors in what the user typed (unknown scene, bad size, bad backend) exit with code 2 and a
 message naming the parameter, as argparse does for its own errors.
@@ -13,6 +13,7 @@ import time
 from . import renderer as render_module
 from .image import write_png
 from .scenes import SCENES, get_scene
+from .wgsl import NoAdapterError, WGSLCompileError
 
 
 def _progress_printer(label: str):
@@ -35,7 +36,7 @@ def _render_one(name, width, height, backend, precision, out, show_progress):
     w, h = fn.size
     width = w if width is None else width
     height = h if height is None else height
-    progress = _progress_printer(name) if show_progress and backend == "reference" else None
+    progress = _progress_printer(name) if show_progress and backend in ("reference", "wgpu") else None
     start = time.perf_counter()
     image = render_module.render(fn(), width, height, backend=backend, precision=precision,
                                  progress=progress)
@@ -52,7 +53,8 @@ def main(argv=None) -> int:
     def add_render_options(p):
         p.add_argument("--backend", default=render_module.DEFAULT_BACKEND,
                        choices=render_module.BACKENDS)
-        p.add_argument("--precision", default="float64", choices=render_module.PRECISIONS)
+        p.add_argument("--precision", default=None, choices=render_module.PRECISIONS,
+                       help="default float64; float32 for --backend wgpu")
 
     p = sub.add_parser("render", help="render one scene to a PNG")
     p.add_argument("name")
@@ -64,6 +66,12 @@ def main(argv=None) -> int:
     p = sub.add_parser("render-all", help="render every homework scene into a folder")
     p.add_argument("--out", default="renders")
     add_render_options(p)
+
+    sub.add_parser("info", help="print the WebGPU adapter the wgpu backend uses")
+
+    p = sub.add_parser("export-wgsl", help="write the assembled WGSL program of a scene")
+    p.add_argument("name")
+    p.add_argument("-o", "--output", default=None, help="file path (default: standard output)")
 
     args = parser.parse_args(argv)
     try:
@@ -82,8 +90,23 @@ def main(argv=None) -> int:
                 seconds, w, h = _render_one(name, None, None, args.backend, args.precision,
                                             out, show_progress=True)
                 print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds), flush=True)
+        elif args.command == "info":
+            from .wgsl import adapter_description
+            print("wgpu adapter: %s" % adapter_description())
+            print("backends: %s" % ", ".join(render_module.BACKENDS))
+        elif args.command == "export-wgsl":
+            from .layout import compile_scene
+            from .wgsl import assemble
+            source = assemble(compile_scene(get_scene(args.name)(), "float32")).source
+            if args.output:
+                with open(args.output, "w", encoding="utf-8") as f:
+                    f.write(source)
+            else:
+                sys.stdout.write(source)
     except ValueError as error:
         parser.exit(2, "error: %s\n" % error)
+    except (NoAdapterError, WGSLCompileError) as error:
+        parser.exit(1, "error: %s\n" % error)
     return 0
 
 

@@ -13,7 +13,7 @@ from .float3 import Float3
 from .ray import Ray
 from .shading import MAX_DEPTH, HitInfo, shade
 
-BACKENDS = ("reference", "numba")
+BACKENDS = ("reference", "numba", "wgpu")
 DEFAULT_BACKEND = "reference"
 PRECISIONS = ("float64", "float32")
 
@@ -62,7 +62,7 @@ def check_size(width, height) -> None:
 
 
 def render(scene, width: int, height: int, backend: str = "reference",
-           precision: str = "float64", progress=None) -> np.ndarray:
+           precision: str | None = None, progress=None) -> np.ndarray:
     """Render ``scene`` to a (height, width, 3) float64 array, row 0 at the top, before gamma.
 
     backend: "reference" (the lecture layer, pure Python) or "numba" (rtfgu.kernels, all cores).
@@ -71,6 +71,8 @@ def render(scene, width: int, height: int, backend: str = "reference",
     check_size(width, height)
     if backend not in BACKENDS:
         raise ValueError("backend must be one of %s, got %r" % (", ".join(BACKENDS), backend))
+    if precision is None:  # each backend's own: WGSL computes in float32
+        precision = "float32" if backend == "wgpu" else "float64"
     if precision not in PRECISIONS:
         raise ValueError("precision must be one of %s, got %r" % (", ".join(PRECISIONS), precision))
     scene.validate()
@@ -81,6 +83,11 @@ def render(scene, width: int, height: int, backend: str = "reference",
     elif backend == "numba":
         from .kernels import render_numba  # numba is imported only when asked for
         image = render_numba(scene, width, height, precision)
+    elif backend == "wgpu":
+        if precision != "float32":
+            raise ValueError("precision: the wgpu backend computes in float32 only, got %r" % precision)
+        from .wgsl import render_wgpu  # wgpu is imported only when asked for
+        image = render_wgpu(scene, width, height, progress)
     if not np.all(np.isfinite(image)):
         raise ValueError("the %s backend produced non-finite pixels" % backend)
     return image
