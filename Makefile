@@ -4,7 +4,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: render test venv clean
+.PHONY: render test venv clean bench
 
 # Create the virtual environment and install the package (editable) with its test extras.
 # The stamp depends on setup.cfg, so a second run reinstalls nothing unless it changed.
@@ -17,7 +17,12 @@ $(STAMP): setup.cfg pyproject.toml
 venv: $(STAMP)
 
 render: $(STAMP)
-	$(PY) -m rtfgu render-all --out renders
+	$(PY) -m rtfgu render-all --backend numba --out renders
+
+# The benchmark (not a test): prints the table and writes docs/bench.md.
+bench: $(STAMP)
+	$(PY) -m pip install --quiet -e '.[test,bench]'
+	$(PY) benchmarks/bench.py
 
 test: $(STAMP)
 	$(PY) -m pytest
