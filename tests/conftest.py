@@ -37,5 +37,5 @@ def reference_images_dir() -> Path:
 
 @pytest.fixture
 def output_dir() -> Path:
-    OUTPUT_DIR.mkdir(exist_ok=True)
+    """Where a failing image test writes its images; created only when something is written."""
     return OUTPUT_DIR

@@ -27,12 +27,18 @@ def test_render_writes_a_png_of_the_asked_size(tmp_path):
     done = run("render", "lecture01_flat_colors", "-o", str(out), "--width", "16", "--height", "16",
                cwd=tmp_path)
     assert done.returncode == 0, done.stderr
-    png = read_png(out)
-    assert png.shape == (16, 16, 3)
+    assert read_png(out).shape == (16, 16, 3)
+    assert str(out) in done.stdout
+
+
+def test_render_reference_backend_writes_the_rendered_pixels(tmp_path):
+    out = tmp_path / "out.png"
+    done = run("render", "lecture01_flat_colors", "-o", str(out), "--width", "16", "--height", "16",
+               "--backend", "reference", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
     # the same pixels as rendering in this process and writing with gamma
     expected = to_8bit(rtfgu.render(SCENES["lecture01_flat_colors"](), 16, 16))
-    assert np.array_equal(png, expected)
-    assert str(out) in done.stdout
+    assert np.array_equal(read_png(out), expected)
     assert "16/16" in done.stderr  # the progress line reached the last row
 
 

@@ -75,6 +75,7 @@ def test_homework_image_matches_reference(name, reference_images_dir, output_dir
 
     worst = int(np.max(np.abs(got.astype(np.int16) - ref.astype(np.int16))))
     if worst > TOLERANCE:
+        output_dir.mkdir(exist_ok=True)
         got_path = output_dir / (name + ".png")
         ref_copy = output_dir / (name + ".reference.png")
         diff_path = output_dir / (name + ".diff.png")
