@@ -214,3 +214,10 @@ def test_write_png_refuses_non_finite(tmp_path, bad):
 def test_write_png_wrong_shape(tmp_path):
     with raises_naming("image"):
         write_png(np.zeros((4, 4)), tmp_path / "flat.png")
+
+
+def test_render_non_finite_background():
+    scene = tiny_scene()
+    scene.background = Float3(0, NAN, 0)
+    with raises_naming("background"):
+        rtfgu.render(scene, 4, 4)
