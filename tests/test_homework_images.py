@@ -89,6 +89,18 @@ def test_homework_image_matches_reference(name, reference_images_dir, output_dir
                     % (name, ref_path, worst, TOLERANCE, bad, width * height, got_path, diff_path))
 
 
+def test_widescreen_sphere_is_round():
+    # The sphere sits at the look-at point, so its image is a circle when the camera's aspect
+    # matches the image's; it is black (its colour is (0, 0, 0) and nothing else is exactly
+    # black), so its bounding box in a 96x54 render must be as wide as it is high.
+    image = rtfgu.render(SCENES["default_widescreen_800x450"](), 96, 54)
+    rows, cols = np.nonzero(np.all(image == 0.0, axis=2))
+    assert rows.size > 50
+    height = rows.max() - rows.min() + 1
+    width = cols.max() - cols.min() + 1
+    assert abs(int(width) - int(height)) <= 1, "sphere is %d wide and %d high" % (width, height)
+
+
 # Last in the file, so that under --update-reference-images it runs after the images are written.
 def test_every_scene_has_a_reference_and_no_reference_is_stale(reference_images_dir,
                                                                 update_reference_images):
