@@ -11,6 +11,7 @@ import sys
 import time
 
 from . import renderer as render_module
+from .cameras import PinholeCamera
 from .image import write_png
 from .scenes import SCENES, get_scene
 from .wgsl import NoAdapterError, WGSLCompileError
@@ -37,8 +38,12 @@ def _render_one(name, width, height, backend, precision, out, show_progress):
     width = w if width is None else width
     height = h if height is None else height
     progress = _progress_printer(name) if show_progress and backend in ("reference", "wgpu") else None
+    scene = fn()
+    if isinstance(scene.camera, PinholeCamera) and (width, height) != (w, h):
+        # A size other than the homework's: keep square pixels by following its aspect ratio.
+        scene.camera.aspect = width / height
     start = time.perf_counter()
-    image = render_module.render(fn(), width, height, backend=backend, precision=precision,
+    image = render_module.render(scene, width, height, backend=backend, precision=precision,
                                  progress=progress)
     write_png(image, out)
     return time.perf_counter() - start, width, height
