@@ -1,0 +1,176 @@
+"""The WGSL structs and ids agree with rtfgu.layout: one source of truth, checked twice.
+
+On the CPU: every named offset of layout.RECORDS picks the right value out of the rows
+that compile_scene writes, and the generated struct puts every field at that offset.
+On the GPU: a compute shader reads every field of every generated struct from buffers
+filled straight from layout arrays, and the ids from the generated constants; what it
+writes back must be the values numpy put there.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from rtfgu import layout
+from rtfgu.cameras import OrthographicCamera, PinholeCamera
+from rtfgu.float3 import Float3
+from rtfgu.lights import PointLight
+from rtfgu.material import PHONG, SHADER_NAMES, Material
+from rtfgu.scene import Scene
+from rtfgu.shapes import Plane, Sphere, Triangle
+from rtfgu.wgsl import structs
+
+from wgsl_support import wgpu_device  # noqa: F401  (fixture)
+
+
+def _scene(camera) -> Scene:
+    scene = Scene(camera)
+    material = Material(PHONG, specular=(0.25, 0.5, 0.75), shininess=17.0, ior=1.33,
+                        emission=(0.01, 0.02, 0.03))
+    scene.shapes.append(Plane((1, 2, 3), (0, 2, 0), (0.1, 0.2, 0.3), material))
+    scene.shapes.append(Triangle((0, 0, 0), (1, 0, 0), (0, 1, 0), (0.4, 0.5, 0.6)))
+    scene.shapes.append(Sphere((4, 5, 6), 0.7, (0.7, 0.8, 0.9)))
+    scene.lights.append(PointLight((-1, 3, 2), (5, 6, 7)))
+    return scene
+
+
+def _field(row, name, record):
+    width, fields = layout.RECORDS[record]
+    for field, components, column in fields:
+        if field == name:
+            return list(row[column:column + components])
+    raise KeyError(name)
+
+
+def test_named_offsets_pick_the_compiled_values():
+    camera = PinholeCamera((2, 1.5, 2), (0, 0.5, 0), (0, 1, 0), d=1.25, aspect=1.5)
+    scene = _scene(camera)
+    flat = layout.compile_scene(scene, "float64")
+    cam = flat.camera.ravel()
+    assert _field(cam, "eye", "PinholeCamera") == [2, 1.5, 2]
+    assert _field(cam, "d", "PinholeCamera") == [1.25]
+    assert _field(cam, "aspect", "PinholeCamera") == [1.5]
+    for name in ("b1", "b2", "v"):
+        expected = getattr(camera, name)
+        assert _field(cam, name, "PinholeCamera") == [expected.x, expected.y, expected.z]
+    assert _field(flat.planes[0], "point", "Plane") == [1, 2, 3]
+    assert _field(flat.planes[0], "normal", "Plane") == [0, 2, 0]
+    tri = scene.shapes[1]
+    for name in ("v0", "e0", "e1", "n"):
+        v = getattr(tri, name)
+        assert _field(flat.triangles[0], name, "Triangle") == [v.x, v.y, v.z]
+    assert _field(flat.spheres[0], "center", "Sphere") == [4, 5, 6]
+    assert _field(flat.spheres[0], "radius", "Sphere") == [0.7]
+    m = flat.materials[0]
+    assert _field(m, "color", "Material") == [0.1, 0.2, 0.3]
+    assert _field(m, "specular", "Material") == [0.25, 0.5, 0.75]
+    assert _field(m, "shininess", "Material") == [17.0]
+    assert _field(m, "emission", "Material") == [0.01, 0.02, 0.03]
+    assert _field(m, "ior", "Material") == [1.33]
+    assert _field(flat.lights[0], "position", "PointLight") == [-1, 3, 2]
+    assert _field(flat.lights[0], "intensity", "PointLight") == [5, 6, 7]
+
+    ortho = layout.compile_scene(_scene(OrthographicCamera(-1, 2, -3, 4, hither=0.5, yon=9)),
+                                 "float64").camera.ravel()
+    for name, value in (("left", -1), ("right", 2), ("bottom", -3), ("top", 4),
+                        ("hither", 0.5), ("yon", 9), ("tmin", 1e-5)):
+        assert _field(ortho, name, "OrthographicCamera") == [value]
+
+
+# WGSL's alignment and size rules for the types the records use.
+_ALIGN_SIZE = {"vec3f": (16, 12), "vec4f": (16, 16), "f32": (4, 4)}
+
+
+@pytest.mark.parametrize("record", sorted(layout.RECORDS))
+def test_generated_struct_puts_fields_at_layout_offsets(record):
+    width, fields = layout.RECORDS[record]
+    generated = structs.struct_fields(record)
+    # Walk the generated fields with WGSL's rules, independently of the generator's own offsets.
+    offset, align_max, placed = 0, 4, {}
+    for name, wgsl_type, _ in generated:
+        align, size = _ALIGN_SIZE[wgsl_type]
+        offset = -(-offset // align) * align
+        placed[name] = offset
+        offset += size
+        align_max = max(align_max, align)
+    assert -(-offset // align_max) * align_max == 4 * width
+    for name, components, column in fields:
+        assert placed[name] == 4 * column, name
+        assert dict((n, t) for n, t, _ in generated)[name] == ("vec3f" if components == 3 else "f32")
+
+
+def _readback_shader(space: str) -> tuple[str, list]:
+    """A compute shader copying every field of two rows of every record, then the ids."""
+    lines = [structs.constants_wgsl()]
+    lines += [structs.struct_wgsl(record) for record in layout.RECORDS]
+    plan = []
+    decl = "uniform" if space == "uniform" else "storage, read"
+    for binding, record in enumerate(layout.RECORDS):
+        lines.append("@group(0) @binding(%d) var<%s> r%d: array<%s, 2>;" % (binding, decl, binding, record))
+    lines.append("@group(0) @binding(%d) var<storage, read_write> out: array<f32>;" % len(layout.RECORDS))
+    body, k = [], 0
+    for binding, record in enumerate(layout.RECORDS):
+        width, fields = layout.RECORDS[record]
+        for row in range(2):
+            for name, components, column in fields:
+                for c in range(components):
+                    access = "r%d[%d].%s%s" % (binding, row, name, "" if components == 1 else "[%d]" % c)
+                    body.append("    out[%d] = %s;" % (k, access))
+                    plan.append((record, row, column + c))
+                    k += 1
+    ids = ([(name.upper(), i) for i, name in SHADER_NAMES.items()]
+           + [(name.upper(), i) for i, name in layout.SHAPE_KINDS.items()]
+           + [(name.upper(), i) for i, name in layout.CAMERA_KINDS.items()])
+    for name, value in ids:
+        body.append("    out[%d] = f32(%s);" % (k, name))
+        plan.append(("id", name, value))
+        k += 1
+    lines.append("@compute @workgroup_size(1)\nfn main() {\n%s\n}" % "\n".join(body))
+    return "\n".join(lines), plan
+
+
+@pytest.mark.parametrize("space", ["uniform", "storage"])
+def test_gpu_reads_every_field_where_layout_put_it(wgpu_device, space):
+    import wgpu
+
+    device = wgpu_device
+    source, plan = _readback_shader(space)
+    rng = np.random.default_rng(4)
+    rows = {record: rng.uniform(-100, 100, size=(2, width)).astype(np.float32)
+            for record, (width, _) in layout.RECORDS.items()}
+    usage = (wgpu.BufferUsage.UNIFORM if space == "uniform" else wgpu.BufferUsage.STORAGE)
+    entries = []
+    for binding, record in enumerate(layout.RECORDS):
+        buffer = device.create_buffer_with_data(data=rows[record].tobytes(), usage=usage)
+        entries.append({"binding": binding, "resource": {"buffer": buffer}})
+    out = device.create_buffer(size=4 * len(plan),
+                               usage=wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.COPY_SRC)
+    entries.append({"binding": len(layout.RECORDS), "resource": {"buffer": out}})
+    module = device.create_shader_module(code=source)
+    pipeline = device.create_compute_pipeline(layout="auto",
+                                              compute={"module": module, "entry_point": "main"})
+    group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0), entries=entries)
+    encoder = device.create_command_encoder()
+    compute = encoder.begin_compute_pass()
+    compute.set_pipeline(pipeline)
+    compute.set_bind_group(0, group)
+    compute.dispatch_workgroups(1)
+    compute.end()
+    device.queue.submit([encoder.finish()])
+    got = np.frombuffer(device.queue.read_buffer(out), dtype=np.float32)
+    for value, entry in zip(got, plan):
+        if entry[0] == "id":
+            assert value == entry[2], entry
+        else:
+            record, row, column = entry
+            assert value == rows[record][row, column], entry
+
+
+def test_id_constants_come_from_the_layout():
+    text = structs.constants_wgsl()
+    for shader_id, name in SHADER_NAMES.items():
+        assert "const %s: i32 = %d;" % (name.upper(), shader_id) in text
+    assert "const FAR = %rf;" % float(layout.FAR) in text
+    assert "const PI = %rf;" % math.pi in text
