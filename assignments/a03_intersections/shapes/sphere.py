@@ -1,0 +1,33 @@
+"""Sphere: the points p with (p - c) . (p - c) = r^2 (lecture 01, "Ray-Sphere Intersection")."""
+from __future__ import annotations
+
+import math
+
+from ..float3 import Float3, as_float3, dot, normalize
+from ..ray import Ray
+from .shape import Shape
+
+
+class Sphere(Shape):
+    def __init__(self, center, radius: float, color, material=None):
+        super().__init__(color, material)
+        self.center = as_float3(center, "Sphere.center")
+        try:
+            ok = math.isfinite(radius) and radius > 0
+        except TypeError:
+            ok = False
+        if not ok:
+            raise ValueError("Sphere.radius must be finite and > 0, got %r" % (radius,))
+        self.radius = float(radius)
+
+    def intersect_p(self, ray: Ray) -> bool:
+        # TODO a03: Sphere.intersect_p
+        #   a = d . d, b = 2 (o - c) . d, c = (o - c) . (o - c) - r^2, disc = b^2 - 4ac.
+        #   No hit if disc < 0. Otherwise try t = (-b - sqrt(disc)) / 2a, then (-b + sqrt(disc)) / 2a:
+        #   the first with tmin <= t < tmax is the hit (set ray.tmax = t, return True).
+        raise NotImplementedError('a03: Sphere.intersect_p')
+
+    def normal_at(self, position: Float3) -> Float3:
+        # TODO a03: Sphere.normal_at
+        #   Return the unit outward normal at a point on the sphere: (position - center) / radius.
+        raise NotImplementedError('a03: Sphere.normal_at')

@@ -1,0 +1,38 @@
+"""Triangle v0, v1, v2 with the 02562 barycentric intersection ("Ray-triangle intersection").
+
+    e0 = v1 - v0,  e1 = v2 - v0,  n = e0 x e1
+    t'    = ((v0 - o) . n) / (w . n)
+    beta  =  ((v0 - o) x w) . e1 / (w . n)
+    gamma = -((v0 - o) x w) . e0 / (w . n)
+    hit when beta >= 0, gamma >= 0, beta + gamma <= 1 and t' in [tmin, tmax).
+"""
+from __future__ import annotations
+
+from ..float3 import Float3, as_float3, cross, dot, normalize
+from ..ray import Ray
+from .shape import Shape
+
+
+class Triangle(Shape):
+    def __init__(self, v0, v1, v2, color, material=None):
+        super().__init__(color, material)
+        self.v0 = as_float3(v0, "Triangle.v0")
+        self.v1 = as_float3(v1, "Triangle.v1")
+        self.v2 = as_float3(v2, "Triangle.v2")
+        self.e0 = self.v1 - self.v0
+        self.e1 = self.v2 - self.v0
+        self.n = cross(self.e0, self.e1)
+        if self.n.length_squared() == 0.0:
+            raise ValueError("Triangle vertices v0, v1, v2 span zero area (collinear or repeated)")
+
+    def intersect_p(self, ray: Ray) -> bool:
+        # TODO a03: Triangle.intersect_p
+        #   With a = v0 - o and w = ray.direction: t = (a . n) / (w . n),
+        #   beta = ((a x w) . e1) / (w . n), gamma = -((a x w) . e0) / (w . n).
+        #   Hit if tmin <= t < tmax, beta >= 0, gamma >= 0 and beta + gamma <= 1: set ray.tmax = t.
+        raise NotImplementedError('a03: Triangle.intersect_p')
+
+    def normal_at(self, position: Float3) -> Float3:
+        # TODO a03: Triangle.normal_at
+        #   Return the triangle's normal n = e0 x e1 as a unit vector.
+        raise NotImplementedError('a03: Triangle.normal_at')

@@ -1,0 +1,160 @@
+"""python -m rtfgu.grading: generate the assignments, grade submissions, build the bundle.
+
+Errors in what the user typed (unknown assignment, missing folder) exit with code 2 and a
+message naming the parameter.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .assignments import ASSIGNMENTS, get_assignment
+
+
+def _cmd_render(a, folder, out, width, height):
+    import numpy as np
+
+    from ..image import write_png
+    from .sandbox import build_overlay, run_child
+    import tempfile
+
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="rtfgu-render-") as tmp:
+        overlay, notes = build_overlay(a, folder, Path(tmp))
+        for note in notes:
+            print("note:", note)
+        for name in a.images:
+            def observe(rt, name=name):
+                fn = rt.scenes.get_scene(name)
+                w, h = fn.size
+                return {"image": rt.renderer.render_reference(fn(), width or w, height or h).tolist()}
+            child = run_child(overlay, Path(tmp) / name, observe, time_limit=3600, memory_mb=4096)
+            if child.status != "ok" or "error" in child.data:
+                print("%s: failed: %s" % (name, child.detail or child.data.get("error")))
+                continue
+            path = out / (name + ".png")
+            write_png(np.asarray(child.data["image"]), path)
+            print(path)
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m rtfgu.grading", description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    sub.add_parser("list", help="the assignments")
+    p = sub.add_parser("generate", help="write the student tree (assignments/)")
+    p.add_argument("--out", default="assignments")
+    p.add_argument("--check", action="store_true", help="only compare; exit 1 if the folder differs")
+    p = sub.add_parser("solution", help="write the solved student files of an assignment")
+    p.add_argument("assignment")
+    p.add_argument("out")
+    p = sub.add_parser("stubs", help="write the student files (stubs) of an assignment")
+    p.add_argument("assignment")
+    p.add_argument("out")
+    p = sub.add_parser("references", help="regenerate the reference observations from the solution")
+    p.add_argument("assignments", nargs="*")
+
+    def grading_options(p):
+        p.add_argument("--time-limit", type=float, default=None, help="seconds per test")
+        p.add_argument("--memory-mb", type=int, default=1024, help="memory per test, MB")
+
+    p = sub.add_parser("grade", help="grade one submission (a folder or a zip)")
+    p.add_argument("assignment")
+    p.add_argument("submission")
+    p.add_argument("--out", default=None, help="folder for results.json, summary.txt and diffs/")
+    p.add_argument("--format", default="gradescope", choices=("gradescope", "prairielearn"))
+    p.add_argument("--visible-only", action="store_true")
+    grading_options(p)
+    p = sub.add_parser("check", help="the visible tests on a student's files")
+    p.add_argument("assignment")
+    p.add_argument("folder", nargs="?", default=None, help="default assignments/<id>")
+    p.add_argument("--out", default=None)
+    grading_options(p)
+    p = sub.add_parser("render", help="render the assignment's images with a student's files")
+    p.add_argument("assignment")
+    p.add_argument("folder", nargs="?", default=None)
+    p.add_argument("--out", default=None, help="default renders/<aNN>")
+    p.add_argument("--width", type=int, default=None)
+    p.add_argument("--height", type=int, default=None)
+    p = sub.add_parser("grade-all", help="grade a class: one folder (or zip) per student")
+    p.add_argument("assignment")
+    p.add_argument("submissions")
+    p.add_argument("--out", required=True)
+    p.add_argument("--processes", type=int, default=None, help="default: all cores")
+    grading_options(p)
+    p = sub.add_parser("autograder-zip", help="build the Gradescope autograder bundle")
+    p.add_argument("assignment")
+    p.add_argument("--out", default=None, help="default dist/autograder-<id>.zip")
+
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "list":
+            for a in ASSIGNMENTS.values():
+                print("%-40s %s" % (a.id, a.title))
+        elif args.command == "generate":
+            from .generate import compare_tree, write_tree
+
+            if args.check:
+                problems = compare_tree(args.out)
+                for line in problems:
+                    print(line)
+                return 1 if problems else 0
+            for path in write_tree(args.out):
+                print(path)
+        elif args.command in ("solution", "stubs"):
+            from .generate import solution_files, student_files, write_files
+
+            a = get_assignment(args.assignment)
+            files = solution_files(a) if args.command == "solution" else student_files(a)
+            for path in write_files(files, args.out):
+                print(path)
+        elif args.command == "references":
+            from .grader import compute_references
+
+            for name in args.assignments or list(ASSIGNMENTS):
+                for path in compute_references(get_assignment(name)):
+                    print(path)
+        elif args.command in ("grade", "check"):
+            from .grader import grade
+
+            a = get_assignment(args.assignment)
+            if args.command == "grade":
+                submission, visible_only, fmt = args.submission, args.visible_only, args.format
+            else:
+                submission = args.folder or str(Path("assignments") / a.id)
+                visible_only, fmt = True, "gradescope"
+            if not Path(submission).exists():
+                parser.exit(2, "error: submission %s does not exist\n" % submission)
+            log = (lambda line: print(line, flush=True)) if args.command == "check" else None
+            result = grade(a, submission, args.out, fmt_name=fmt, visible_only=visible_only,
+                           time_limit=args.time_limit, memory_mb=args.memory_mb, log=log)
+            print(result.summary())
+            if args.command == "check":
+                return 0 if result.score >= result.max_score - 1e-9 else 1
+        elif args.command == "render":
+            a = get_assignment(args.assignment)
+            folder = args.folder or str(Path("assignments") / a.id)
+            _cmd_render(a, folder, args.out or str(Path("renders") / a.short), args.width, args.height)
+        elif args.command == "grade-all":
+            from .gradebook import grade_all
+
+            a = get_assignment(args.assignment)
+            if not Path(args.submissions).is_dir():
+                parser.exit(2, "error: submissions folder %s does not exist\n" % args.submissions)
+            path = grade_all(a, args.submissions, args.out, processes=args.processes,
+                             time_limit=args.time_limit, memory_mb=args.memory_mb,
+                             log=lambda line: print(line, flush=True))
+            print(path)
+        elif args.command == "autograder-zip":
+            from .autograder import build_zip
+
+            a = get_assignment(args.assignment)
+            print(build_zip(a, args.out or str(Path("dist") / ("autograder-%s.zip" % a.id))))
+    except ValueError as error:
+        parser.exit(2, "error: %s\n" % error)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,247 @@
+"""The assignments: which marked solution blocks each one asks for, and what its README says.
+
+A block is a ``### BEGIN SOLUTION`` / ``### END SOLUTION`` region of the lecture layer (the
+nbgrader convention). It is identified by the file it sits in (relative to the ``rtfgu``
+package) and the function around it, so the markers in the source stay plain nbgrader
+markers and this table says which assignment each belongs to and what its TODO text is.
+
+The order is that of both courses: lecture 01 (Float3, Ray, orthographic camera, plane,
+sphere) and 02562 weeks 1-3 (pinhole camera, triangle, Kepler and Lambert, shadows, Phong,
+mirror, refraction), then the intersection functions again in WGSL.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Block:
+    file: str       # relative to the rtfgu package, e.g. "shapes/sphere.py"
+    qualname: str   # the function around the block, e.g. "Sphere.intersect_p"
+    todo: str       # what to write, in a few lines (becomes the stub's comment)
+
+
+@dataclass(frozen=True)
+class Assignment:
+    id: str                     # aNN_name
+    title: str
+    blocks: tuple
+    task: str                   # README: what to do (markdown)
+    formulas: str               # README: the formulas, each with the slide it comes from
+    slides: tuple               # slide titles (lecture deck, slide)
+    images: tuple = ()          # homework scene names (rtfgu.scenes) to hand in as PNG
+    language: str = "python"
+    time_limit: float = 10.0    # per test, seconds (the CLI may override it)
+    extra: str = field(default="")
+
+    @property
+    def short(self) -> str:
+        return self.id.split("_", 1)[0]
+
+    @property
+    def number(self) -> int:
+        return int(self.short[1:])
+
+    @property
+    def files(self) -> tuple:
+        """The files a student hands in, relative to the rtfgu package, in block order."""
+        seen = []
+        for block in self.blocks:
+            if block.file not in seen:
+                seen.append(block.file)
+        return tuple(seen)
+
+
+A01 = Assignment(
+    id="a01_float3_ray",
+    title="Float3 and Ray",
+    blocks=(
+        Block("float3.py", "Float3.__add__", "Return the componentwise sum self + o as a new Float3."),
+        Block("float3.py", "Float3.__neg__", "Return the Float3 with every component negated."),
+        Block("float3.py", "Float3.__sub__", "Return the componentwise difference self - o as a new Float3."),
+        Block("float3.py", "Float3.__mul__",
+              "o is a Float3 (multiply componentwise) or a number (scale every component);\n"
+              "return a new Float3 either way."),
+        Block("float3.py", "Float3.__truediv__",
+              "o is a Float3 (divide componentwise) or a number: the slide computes\n"
+              "inv = 1 / o once and multiplies every component by it."),
+        Block("float3.py", "Float3.length_squared", "Return x*x + y*y + z*z."),
+        Block("float3.py", "Float3.length", "Return the square root of length_squared()."),
+        Block("float3.py", "normalize", "Return v divided by its length (a unit vector)."),
+        Block("float3.py", "dot", "Return v1.x*v2.x + v1.y*v2.y + v1.z*v2.z (a number)."),
+        Block("float3.py", "cross",
+              "Return the Float3 (v1.y*v2.z - v1.z*v2.y, v1.z*v2.x - v1.x*v2.z, v1.x*v2.y - v1.y*v2.x)."),
+        Block("ray.py", "Ray.__call__", "Return the point origin + direction * t (a new Float3)."),
+    ),
+    task=("Write the vector arithmetic of `Float3` (sum, difference, negation, componentwise and\n"
+          "scalar products and quotients, length) and the functions `normalize`, `dot` and `cross`,\n"
+          "then the point of a ray at parameter t. Every operation returns a new `Float3` and leaves\n"
+          "its operands unchanged. `*` is componentwise (or by a number); the dot and cross\n"
+          "products are the named functions."),
+    formulas=("- a + b = (a.x + b.x, a.y + b.y, a.z + b.z); a * b componentwise; a * f = (a.x f, a.y f, a.z f)\n"
+              "- a / f = a * (1 / f) (the slide computes `inv = 1.0f / x` once)\n"
+              "- |a|^2 = a.x^2 + a.y^2 + a.z^2, |a| = sqrt(|a|^2), normalize(a) = a / |a|\n"
+              "- a . b = a.x b.x + a.y b.y + a.z b.z\n"
+              "- a x b = (a.y b.z - a.z b.y, a.z b.x - a.x b.z, a.x b.y - a.y b.x)\n"
+              "- ray: r(t) = o + t d, for tmin <= t < tmax"),
+    slides=("Lecture 01: Float3 Structure (six slides)", "Lecture 01: Ray",
+            "02562 week 1: Rays in theory and in practice"),
+)
+
+A02 = Assignment(
+    id="a02_cameras",
+    title="Cameras: orthographic and pinhole ray generation",
+    blocks=(
+        Block("cameras/orthographic.py", "OrthographicCamera.gen_ray",
+              "Map sx, sy from [-1, 1] to [0, 1] (0.5 + s / 2), then to x in [left, right] and\n"
+              "y in [bottom, top]. Return Ray(Float3(x, y, hither), Float3(0, 0, -1), 0.00001, yon - hither)."),
+        Block("cameras/pinhole.py", "PinholeCamera.gen_ray",
+              "u = sx * aspect * 0.5 and w = sy * 0.5 (the slide's uv); q = b1 * u + b2 * w + v * d.\n"
+              "Return a Ray from a copy of the eye along normalize(q)."),
+    ),
+    task=("Write `gen_ray(sx, sy)` of both cameras. The renderer calls it once per pixel with the\n"
+          "pixel's centre on the image plane: sx = 2 (ix + 0.5) / width - 1 and likewise sy, so\n"
+          "(-1, -1) is the bottom left corner of the image and the camera must not add any offset\n"
+          "of its own. The orthographic camera sends parallel rays along -z; the pinhole camera\n"
+          "sends every ray from the eye through the image plane at distance d. Its basis\n"
+          "v, b1, b2 is computed for you in `__init__`."),
+    formulas=("- Orthographic (lecture 01, \"Orthographic Camera\"): x = left + (right - left)(0.5 + sx / 2),\n"
+              "  y = bottom + (top - bottom)(0.5 + sy / 2); origin (x, y, hither), direction (0, 0, -1),\n"
+              "  tmin = 0.00001, tmax = yon - hither\n"
+              "- Pinhole (02562 week 1, get_camera_ray): v = normalize(lookat - eye), b1 = normalize(v x up),\n"
+              "  b2 = b1 x v; q = b1 u + b2 w + v d with (u, w) = (sx * aspect * 0.5, sy * 0.5);\n"
+              "  direction = normalize(q), origin = eye"),
+    slides=("Lecture 01: Camera", "Lecture 01: Orthographic Camera (two slides)",
+            "Lecture 01: Rendering a Scene",
+            "02562 week 1: Rays in theory and in practice; main_fs (uv from coords)"),
+    images=("lecture01_flat_colors", "default_ray_directions"),
+)
+
+A03 = Assignment(
+    id="a03_intersections",
+    title="Ray-plane, ray-sphere and ray-triangle intersection, and the closest hit",
+    blocks=(
+        Block("shapes/plane.py", "Plane.intersect_p",
+              "t = ((a - o) . n) / (d . n), written as on the slide with A = o . n, B = d . n,\n"
+              "C = a . n. A ray parallel to the plane (B == 0) misses. Accept t only if\n"
+              "tmin <= t < tmax; then set ray.tmax = t and return True, else return False."),
+        Block("shapes/plane.py", "Plane.normal_at", "Return the plane's normal as a unit vector."),
+        Block("shapes/sphere.py", "Sphere.intersect_p",
+              "a = d . d, b = 2 (o - c) . d, c = (o - c) . (o - c) - r^2, disc = b^2 - 4ac.\n"
+              "No hit if disc < 0. Otherwise try t = (-b - sqrt(disc)) / 2a, then (-b + sqrt(disc)) / 2a:\n"
+              "the first with tmin <= t < tmax is the hit (set ray.tmax = t, return True)."),
+        Block("shapes/sphere.py", "Sphere.normal_at",
+              "Return the unit outward normal at a point on the sphere: (position - center) / radius."),
+        Block("shapes/triangle.py", "Triangle.intersect_p",
+              "With a = v0 - o and w = ray.direction: t = (a . n) / (w . n),\n"
+              "beta = ((a x w) . e1) / (w . n), gamma = -((a x w) . e0) / (w . n).\n"
+              "Hit if tmin <= t < tmax, beta >= 0, gamma >= 0 and beta + gamma <= 1: set ray.tmax = t."),
+        Block("shapes/triangle.py", "Triangle.normal_at", "Return the triangle's normal n = e0 x e1 as a unit vector."),
+    ),
+    task=("Write `intersect_p(ray)` of the plane, the sphere and the triangle, and their\n"
+          "`normal_at(position)`. `intersect_p` returns True only for a hit with\n"
+          "tmin <= t < tmax, and then shrinks `ray.tmax` to t; it changes nothing on a miss. The\n"
+          "scene calls it on every shape in turn, so the last shape that reports a hit is the\n"
+          "closest one (hidden-surface removal, the slide's render loop). Do not assume the ray\n"
+          "direction has unit length: keep `a = d . d` in the quadratic."),
+    formulas=("- Plane (lecture 01, \"Ray-Plane Intersection\"): t = ((a - o) . n) / (d . n)\n"
+              "- Sphere (lecture 01, \"Ray-Sphere Intersection\"): a t^2 + b t + c = 0 with a = d . d,\n"
+              "  b = 2 (o - c) . d, c = (o - c) . (o - c) - r^2; the discriminant b^2 - 4ac < 0 means no hit;\n"
+              "  t = (-b -+ sqrt(b^2 - 4ac)) / 2a, the least t in [tmin, tmax) wins\n"
+              "- Triangle (02562, \"Ray-triangle intersection\"): e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1,\n"
+              "  t' = ((v0 - o) . n) / (w . n), beta = ((v0 - o) x w) . e1 / (w . n),\n"
+              "  gamma = -((v0 - o) x w) . e0 / (w . n); hit if beta >= 0, gamma >= 0, beta + gamma <= 1"),
+    slides=("Lecture 01: Class Shape", "Lecture 01: Plane, Ray-Plane Intersection",
+            "Lecture 01: Sphere, Ray-Sphere Intersection (five slides)",
+            "Lecture 01: Rendering a Scene (the closest hit)",
+            "02562 week 2: Ray-plane, ray-triangle and ray-sphere intersection"),
+    images=("lecture01_flat_colors", "default_flat_colors"),
+)
+
+A04 = Assignment(
+    id="a04_diffuse",
+    title="Diffuse shading with a point light: Kepler, Lambert and ambient",
+    blocks=(
+        Block("lights.py", "sample_point_light",
+              "Return Light(L_i, w_i, dist): L_i = intensity / |p - x|^2 (Kepler),\n"
+              "w_i = (p - x) / |p - x| (unit, toward the light), dist = |p - x|."),
+        Block("shading.py", "lambertian",
+              "rho_d = 0.9 * color, L_a = 0.1 * color. Start from emission + L_a and, for each light,\n"
+              "sample it at hit.position and add rho_d / pi * L_i * (n . w_i) when n . w_i > 0.\n"
+              "Skip the light when scene.shadows and in_shadow(...) (in_shadow is assignment 5)."),
+    ),
+    task=("Write the point light's sample (Kepler's inverse square law) and the Lambertian\n"
+          "shader: the diffusely reflected light by Lambert's cosine law plus a constant ambient\n"
+          "term. The light sample's direction points from the surface toward the light and has\n"
+          "unit length. A light below the surface (n . w_i <= 0) adds nothing."),
+    formulas=("- Kepler's inverse square law (02562, \"Kepler's inverse square law\"): L_i = I / |p - x|^2\n"
+              "- Lambert's cosine law (02562, \"Lambert's cosine law\"): L_r,d = rho_d / pi * L_i * (n . w_i)\n"
+              "- The diffuse shader (02562, \"Sampling light in the shader\"):\n"
+              "  L_o = L_e + rho_d / pi * L_i * (n . w_i) + L_a, with rho_d = 0.9 and L_a = 0.1 of the colour"),
+    slides=("02562: Kepler's inverse square law", "02562: Lambert's cosine law",
+            "02562: Sampling light in the shader", "02562: The signature of an intersection function and that of a shader"),
+    images=("default_lambertian",),
+)
+
+A05 = Assignment(
+    id="a05_shadows_phong_mirror_refraction",
+    title="Shadows, Phong, mirror and refraction",
+    blocks=(
+        Block("shading.py", "in_shadow",
+              "Cast Ray(position, w_i, SPAWN_EPSILON, dist - SPAWN_EPSILON) and return True if any\n"
+              "shape of scene.shapes hits it. The offset keeps the ray from hitting the surface it\n"
+              "leaves (shadow acne) and from hitting the light's own position."),
+        Block("shading.py", "phong",
+              "As lambertian, plus the lobe rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s with\n"
+              "w_o = -r.direction and w_r = 2 (n . w_i) n - w_i; both terms times L_i (n . w_i)."),
+        Block("shading.py", "mirror",
+              "Continue the path along d - 2 (d . n) n with _continue_path(r, hit, direction)\n"
+              "and return hit.emission."),
+        Block("shading.py", "transparent",
+              "cos_i = -(d . n). Entering (cos_i >= 0): eta = 1 / ior. Leaving: eta = ior, flip n and\n"
+              "cos_i. sin2_t = eta^2 (1 - cos_i^2); if sin2_t > 1 mirror (total internal reflection),\n"
+              "else continue along d * eta + n * (eta cos_i - sqrt(1 - sin2_t)). Return hit.emission."),
+    ),
+    task=("Write the shadow ray, the Phong shader and the two shaders that continue the path:\n"
+          "the mirror and refraction by Snell's law. A shader that continues the path turns `r`\n"
+          "into the next ray with `_continue_path` (it resets tmin and tmax and clears\n"
+          "`hit.has_hit`, so the path loop goes on)."),
+    formulas=("- Shadow ray (02562 week 2): from x toward the light, t in [eps, dist - eps]\n"
+              "- Phong (02562 worksheet 3): L_r = (rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s) L_i (n . w_i),\n"
+              "  w_r = 2 (n . w_i) n - w_i\n"
+              "- Mirror: w = d - 2 (d . n) n\n"
+              "- Refraction (Snell's law, eta = n1 / n2): cos_t = sqrt(1 - eta^2 (1 - cos_i^2)),\n"
+              "  t = eta d + (eta cos_i - cos_t) n; no real cos_t means total internal reflection"),
+    slides=("02562: The signature of an intersection function and that of a shader (shade switch)",
+            "02562: Intersecting with the scene and tracing a path",
+            "02562 week 2: shadows; worksheet 3: Phong, mirror, refraction"),
+    images=("default_lambertian_shadows", "default_phong_sphere", "default_mirror_sphere",
+            "default_refractive_sphere", "default_glossy_sphere"),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05)
+ASSIGNMENTS = {a.id: a for a in PYTHON_ASSIGNMENTS}
+
+
+def register(assignment: Assignment) -> None:
+    ASSIGNMENTS[assignment.id] = assignment
+
+
+def get_assignment(name: str) -> Assignment:
+    """By full id (a03_intersections) or short id (a03); a ValueError listing the ids if unknown."""
+    for a in ASSIGNMENTS.values():
+        if name in (a.id, a.short):
+            return a
+    raise ValueError("unknown assignment %r; known assignments: %s" % (name, ", ".join(ASSIGNMENTS)))
+
+
+def block_table() -> dict:
+    """(file, qualname) -> (assignment, block) for every block of every assignment."""
+    table = {}
+    for a in ASSIGNMENTS.values():
+        for b in a.blocks:
+            key = (b.file, b.qualname)
+            if key in table:
+                raise ValueError("block %s:%s is claimed by %s and %s" % (b.file, b.qualname, table[key][0].id, a.id))
+            table[key] = (a, b)
+    return table

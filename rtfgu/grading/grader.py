@@ -1,0 +1,221 @@
+"""Grading one submission: overlay, one sandboxed child per test, judge, diff images.
+
+The reference observations (``rtfgu/grading/reference/<assignment>/``) are what the
+solution gives for every test; they are regenerated only on request
+(``python -m rtfgu.grading references``). The grader reads them into memory before any
+student code runs, never lets the overlay contain them, and checks afterwards that their
+files are unchanged (restoring them if a submission wrote to them).
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from ..image import read_png, to_8bit
+from .assignments import get_assignment
+from .checks import IMAGE_FRACTION, IMAGE_LEVELS, checks_for, fmt, judge_cases
+from .results import Result, TestResult
+from .sandbox import build_overlay, run_child
+
+REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
+
+
+# --- references ----------------------------------------------------------------------------
+
+def reference_paths(assignment):
+    folder = REFERENCE_DIR / assignment.id
+    return folder, folder / "observations.json"
+
+
+def compute_references(assignment, time_limit: float = 120.0) -> list:
+    """Run every test on the solution and store what it gives; returns the files written."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    folder, obs_path = reference_paths(a)
+    folder.mkdir(parents=True, exist_ok=True)
+    observations, written = {}, []
+    with tempfile.TemporaryDirectory(prefix="rtfgu-ref-") as tmp:
+        overlay, _ = build_overlay(a, None, Path(tmp))
+        for check in checks_for(a.id):
+            child = run_child(overlay, Path(tmp) / "scratch" / check.slug, check.observe,
+                              time_limit=time_limit, memory_mb=0, extra_modules=getattr(check, "modules", ()))
+            if child.status != "ok" or "error" in child.data or any("error" in c for c in child.data.get("cases", [])):
+                raise RuntimeError("the solution fails %s (%s): %s %s" % (check.name, child.status, child.detail,
+                                                                          json.dumps(child.data)[:2000]))
+            if check.kind == "image":
+                from ..image import write_png
+
+                path = folder / (check.slug + ".png")
+                write_png(np.asarray(child.data["image"]), path)
+                written.append(path)
+            else:
+                observations[check.slug] = child.data
+    obs_path.write_text(json.dumps(observations, indent=1, sort_keys=True) + "\n")
+    written.append(obs_path)
+    return written
+
+
+def load_references(assignment) -> dict:
+    """slug -> reference observation (uint8 image for image tests), plus the raw bytes of
+    every reference file so that they can be checked and restored."""
+    folder, obs_path = reference_paths(assignment)
+    if not obs_path.is_file():
+        raise ValueError("assignment %s has no reference observations; run "
+                         "`python -m rtfgu.grading references %s`" % (assignment.id, assignment.short))
+    files = {p: p.read_bytes() for p in sorted(folder.iterdir()) if p.is_file()}
+    observations = json.loads(files[obs_path])
+    refs = {}
+    for check in checks_for(assignment.id):
+        if check.kind == "image":
+            path = folder / (check.slug + ".png")
+            if path not in files:
+                raise ValueError("reference image %s is missing; run `python -m rtfgu.grading references %s`"
+                                 % (path, assignment.short))
+            refs[check.slug] = read_png(path)
+        else:
+            if check.slug not in observations:
+                raise ValueError("reference for %r is missing; run `python -m rtfgu.grading references %s`"
+                                 % (check.name, assignment.short))
+            refs[check.slug] = observations[check.slug]
+    return refs, files
+
+
+def _digest(files: dict) -> dict:
+    return {p: hashlib.sha256(b).hexdigest() for p, b in files.items()}
+
+
+# --- images ----------------------------------------------------------------------------------
+
+def neighbourhood_difference(mine: np.ndarray, reference: np.ndarray) -> np.ndarray:
+    """Per pixel, the smallest (over the 3 x 3 neighbourhood of the reference pixel) of the
+    largest channel difference, in 8-bit levels: a silhouette one pixel off costs nothing."""
+    m = mine.astype(np.int32)
+    r = np.pad(reference.astype(np.int32), ((1, 1), (1, 1), (0, 0)), mode="edge")
+    h, w = reference.shape[:2]
+    best = np.full((h, w), 1 << 30, dtype=np.int32)
+    for dy in range(3):
+        for dx in range(3):
+            best = np.minimum(best, np.abs(m - r[dy:dy + h, dx:dx + w]).max(axis=2))
+    return best
+
+
+def write_diff_image(mine, reference, difference, bad, path: Path, scale: int = 4) -> None:
+    """yours | reference | difference (grey: small, red: beyond the tolerance), enlarged."""
+    from PIL import Image
+
+    h, w = reference.shape[:2]
+    heat = np.clip(difference * 4, 0, 255).astype(np.uint8)
+    diff = np.stack([heat, heat, heat], axis=2)
+    diff[bad] = [255, 0, 0]
+    gap = np.full((h, 2, 3), 255, dtype=np.uint8)
+    mine = mine if mine is not None else np.zeros_like(reference)
+    strip = np.concatenate([mine, gap, reference, gap, diff], axis=1)
+    strip = strip.repeat(scale, axis=0).repeat(scale, axis=1)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    Image.fromarray(strip, mode="RGB").save(path)
+
+
+def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
+    """(fraction, message lines, diff image path)."""
+    h, w = reference.shape[:2]
+    if "error" in data:
+        if diff_path is not None:
+            write_diff_image(None, reference, np.zeros((h, w), np.int32), np.ones((h, w), bool), diff_path)
+        return 0.0, ["rendering the image failed: " + data["error"]], diff_path
+    image = np.asarray(data.get("image"), dtype=np.float64)
+    if image.shape != (h, w, 3):
+        return 0.0, ["the render has shape %s; expected (%d, %d, 3)" % (image.shape, h, w)], None
+    if not np.all(np.isfinite(image)):
+        row, col = np.argwhere(~np.isfinite(image).all(axis=2))[0]
+        return 0.0, ["the pixel at column %d, row %d (row 0 at the top) is not a finite number (%s): "
+                     "a NaN or infinity came out of your code there" % (col, row, image[row, col].tolist())], None
+    mine = to_8bit(image)
+    difference = neighbourhood_difference(mine, reference)
+    bad = difference > IMAGE_LEVELS
+    allowed = max(1, int(IMAGE_FRACTION * h * w))
+    if diff_path is not None:
+        write_diff_image(mine, reference, difference, bad, diff_path)
+    n_bad = int(bad.sum())
+    where = "; the diff image is %s (yours | reference | differences in red)" % diff_path.name if diff_path else ""
+    if n_bad <= allowed:
+        return 1.0, ["%dx%d image matches the reference (%d pixels beyond the tolerance, %d allowed)%s"
+                     % (w, h, n_bad, allowed, where)], diff_path
+    row, col = np.unravel_index(np.argmax(difference), difference.shape)
+    return 0.0, ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
+                 "allowing a one-pixel shift (at most %d may). The largest difference is at column %d, "
+                 "row %d (row 0 at the top): the reference pixel is %s, yours is %s%s"
+                 % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, col, row,
+                    fmt([int(v) for v in reference[row, col]]), fmt([int(v) for v in mine[row, col]]), where)], diff_path
+
+
+# --- grading -------------------------------------------------------------------------------
+
+def _child_failure(child, time_limit, memory_mb) -> str:
+    if child.status == "timeout":
+        return ("stopped after the time limit of %g s: your code did not finish (an endless loop, or far "
+                "too slow)" % time_limit)
+    if child.status == "too much output":
+        return "stopped: " + child.detail
+    if child.status == "crashed":
+        return "the test process died: %s (the memory limit is %d MB)" % (child.detail, memory_mb)
+    return "the test gave no usable answer: %s" % child.detail
+
+
+def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope", visible_only: bool = False,
+          time_limit: float | None = None, memory_mb: int = 1024, output_limit: int = 1024 * 1024,
+          log=None) -> Result:
+    """Grade ``submission`` (a folder, a zip file, or None for the solution) and, if
+    ``out_dir`` is given, write results.json, summary.txt and diffs/ there."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    time_limit = a.time_limit if time_limit is None else time_limit
+    start = time.monotonic()
+    refs, ref_files = load_references(a)
+    digest = _digest(ref_files)
+    result = Result(a.id, str(submission))
+    out_dir = Path(out_dir) if out_dir is not None else None
+    with tempfile.TemporaryDirectory(prefix="rtfgu-grade-") as tmp:
+        overlay, notes = build_overlay(a, submission, Path(tmp))
+        result.notes.extend(notes)
+        for check in checks_for(a.id):
+            if visible_only and check.visibility != "visible":
+                continue
+            child = run_child(overlay, Path(tmp) / "scratch" / check.slug, check.observe, time_limit=time_limit,
+                              memory_mb=memory_mb, output_limit=output_limit,
+                              extra_modules=getattr(check, "modules", ()))
+            diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
+            image_path = None
+            if child.status != "ok":
+                fraction, lines = 0.0, [_child_failure(child, time_limit, memory_mb)]
+            elif check.kind == "image":
+                fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
+            else:
+                fraction, lines = judge_cases(check, child.data, refs[check.slug])
+            if child.output.strip() and fraction < 1.0:
+                lines.append("What your code printed:\n" + child.output)
+            message = "\n".join(lines) if lines else "all cases right"
+            if fraction >= 1.0 and check.kind != "image":
+                message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
+            test = TestResult(check.number, check.name, float(check.weight),
+                              round(check.weight * fraction, 4), check.visibility, message,
+                              str(image_path) if image_path else None)
+            result.tests.append(test)
+            if log:
+                log("%-5s %-70s %5.2f / %g  (%.2f s)" % (test.number, test.name[:70], test.score,
+                                                        test.max_score, child.seconds))
+    now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
+    if now != digest:
+        for path, data in ref_files.items():
+            path.write_bytes(data)
+        for test in result.tests:
+            test.score = 0.0
+            test.output = "the submission wrote to the grader's reference files; they were restored\n" + test.output
+        result.notes.append("The submission changed the grader's reference files: they were restored "
+                            "and the submission scores 0.")
+    result.execution_time = time.monotonic() - start
+    if out_dir is not None:
+        result.write(out_dir, fmt_name)
+    return result

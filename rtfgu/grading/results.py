@@ -1,0 +1,123 @@
+"""The result model of one grading, and its writers: Gradescope's results.json,
+PrairieLearn's results format, and a summary a person reads."""
+from __future__ import annotations
+
+import base64
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+OUTPUT_LIMIT = 8000   # characters of message per test
+
+
+@dataclass
+class TestResult:
+    number: str
+    name: str
+    max_score: float
+    score: float
+    visibility: str
+    output: str
+    image: str | None = None   # the diff image of an image test (path)
+
+    @property
+    def status(self) -> str:
+        return "passed" if self.score >= self.max_score - 1e-9 else "failed"
+
+
+@dataclass
+class Result:
+    assignment: str
+    submission: str
+    tests: list = field(default_factory=list)
+    execution_time: float = 0.0
+    notes: list = field(default_factory=list)
+
+    @property
+    def score(self) -> float:
+        return round(sum(t.score for t in self.tests), 4)
+
+    @property
+    def max_score(self) -> float:
+        return round(sum(t.max_score for t in self.tests), 4)
+
+    def output(self) -> str:
+        lines = ["%s: %g / %g points" % (self.assignment, self.score, self.max_score)]
+        lines += self.notes
+        return "\n".join(lines)
+
+    def to_gradescope(self) -> dict:
+        return {
+            "score": self.score,
+            "execution_time": round(self.execution_time, 3),
+            "output": self.output(),
+            "visibility": "visible",
+            "stdout_visibility": "hidden",
+            "tests": [{"name": t.name, "number": t.number, "score": round(t.score, 4),
+                       "max_score": t.max_score, "status": t.status, "output": t.output[:OUTPUT_LIMIT],
+                       "visibility": t.visibility} for t in self.tests],
+        }
+
+    def to_prairielearn(self) -> dict:
+        tests = []
+        for t in self.tests:
+            entry = {"name": t.name, "description": "test %s" % t.number, "points": round(t.score, 4),
+                     "max_points": t.max_score, "message": t.output[:OUTPUT_LIMIT], "output": ""}
+            if t.image and Path(t.image).is_file():
+                data = base64.b64encode(Path(t.image).read_bytes()).decode()
+                entry["images"] = [{"label": "yours | reference | difference",
+                                    "url": "data:image/png;base64," + data}]
+            tests.append(entry)
+        return {"gradable": True, "score": self.score / self.max_score if self.max_score else 0.0,
+                "message": self.output(), "output": "", "tests": tests}
+
+    def summary(self) -> str:
+        width = max([len(t.name) for t in self.tests] + [10])
+        lines = [self.output(), ""]
+        for t in self.tests:
+            lines.append("%-5s %-*s %5.2f / %-4g %s%s" % (t.number, width, t.name, t.score, t.max_score,
+                                                        t.status.upper(), "" if t.visibility == "visible" else " (hidden)"))
+        for t in self.tests:
+            if t.status != "passed":
+                lines += ["", "--- %s %s" % (t.number, t.name), t.output]
+        lines += ["", "total %g / %g   (%.1f s)" % (self.score, self.max_score, self.execution_time)]
+        return "\n".join(lines) + "\n"
+
+    def write(self, out_dir, fmt: str = "gradescope") -> Path:
+        out_dir = Path(out_dir)
+        out_dir.mkdir(parents=True, exist_ok=True)
+        if fmt == "gradescope":
+            path = out_dir / "results.json"
+            data = self.to_gradescope()
+        elif fmt == "prairielearn":
+            path = out_dir / "results.json"
+            data = self.to_prairielearn()
+        else:
+            raise ValueError("format must be gradescope or prairielearn, got %r" % (fmt,))
+        path.write_text(json.dumps(data, indent=2) + "\n")
+        (out_dir / "summary.txt").write_text(self.summary())
+        return path
+
+
+GRADESCOPE_TEST_FIELDS = {"name": str, "number": str, "score": (int, float), "max_score": (int, float),
+                          "status": str, "output": str, "visibility": str}
+
+
+def validate_gradescope(data: dict) -> None:
+    """Raise a ValueError naming the field if ``data`` is not a Gradescope results.json."""
+    for key, kind in (("score", (int, float)), ("execution_time", (int, float)), ("output", str),
+                      ("tests", list)):
+        if not isinstance(data.get(key), kind) or isinstance(data.get(key), bool):
+            raise ValueError("results.json: %s missing or of the wrong type" % key)
+    for i, test in enumerate(data["tests"]):
+        for key, kind in GRADESCOPE_TEST_FIELDS.items():
+            if not isinstance(test.get(key), kind) or isinstance(test.get(key), bool):
+                raise ValueError("results.json: tests[%d].%s missing or of the wrong type" % (i, key))
+        if test["status"] not in ("passed", "failed"):
+            raise ValueError("results.json: tests[%d].status must be passed or failed" % i)
+        if test["visibility"] not in ("visible", "hidden", "after_due_date", "after_published"):
+            raise ValueError("results.json: tests[%d].visibility is %r" % (i, test["visibility"]))
+        if not 0 <= test["score"] <= test["max_score"] + 1e-9:
+            raise ValueError("results.json: tests[%d].score is outside [0, max_score]" % i)
+    if abs(sum(t["score"] for t in data["tests"]) - data["score"]) > 1e-3:
+        raise ValueError("results.json: score is not the sum of the tests' scores")
