@@ -10,7 +10,9 @@ miss. They are generic over float32 and float64: every literal goes through ``F 
 because a bare numba literal is float64 (or int64) and would silently promote float32
 arithmetic to float64, which would hide exactly the float32 failures these kernels measure.
 The one deliberate float64 computation is the fallback of the watertight test for edge
-functions that round to zero (Woop et al. 2013, section 3).
+functions that round to zero (Woop et al. 2013, section 3). ``error_model="numpy"`` keeps
+IEEE division (x / 0 is inf or NaN) instead of numba's default ZeroDivisionError, so that
+bad input gives a defined miss and never an exception.
 
 Shape parameters, one row per ray (the hard-case families of rtfgu.hardcases):
     sphere    (N, 4)  center, radius
@@ -33,7 +35,7 @@ ROBUST = 1
 FORMULAS = {SLIDE: "slide", ROBUST: "robust"}
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _finite6(a, b, c, d, e, f):
     # x - x is 0 for a finite x and NaN for inf and NaN; the sum carries any NaN through.
     s = a + b + c + d + e + f
@@ -42,7 +44,7 @@ def _finite6(a, b, c, d, e, f):
 
 # --- sphere ---------------------------------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sphere_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
     """Lecture 01 "Ray-Sphere Intersection": a t^2 + b t + c = 0, near root first."""
     F = type(ox)
@@ -66,7 +68,7 @@ def sphere_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
     return F(math.inf)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sphere_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
     """Ray Tracing Gems ch. 7 (Haines et al. 2019): disc = a (r^2 - |f + (b'/a) d|^2),
     t0 = c / q, t1 = q / a with q = b' + sign(b') sqrt(disc). Non-finite input misses."""
@@ -106,7 +108,7 @@ def sphere_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
 
 # --- plane ----------------------------------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def plane_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
     """Lecture 01 "Ray-Plane Intersection": t = (C - A) / B with A = o.n, B = d.n, C = a.n."""
     F = type(ox)
@@ -121,14 +123,14 @@ def plane_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
     return F(math.inf)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _two_sum(a, b):
     s = a + b
     bb = s - a
     return s, (a - (s - bb)) + (b - bb)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _two_product(a, b):
     F = type(a)
     # Veltkamp's splitter 2^ceil(p/2) + 1: 2^12 + 1 for float32 (p = 24), 2^27 + 1 for float64.
@@ -144,7 +146,7 @@ def _two_product(a, b):
     return p, al * bl - (((p - ah * bh) - al * bh) - ah * bl)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _dot2_3(x0, x1, x2, y0, y1, y2):
     # Ogita, Rump and Oishi 2005, "Dot2", for three terms.
     p, s = _two_product(x0, y0)
@@ -157,7 +159,7 @@ def _dot2_3(x0, x1, x2, y0, y1, y2):
     return p + s
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _dot2_6(x0, x1, x2, x3, x4, x5, y0, y1, y2, y3, y4, y5):
     p, s = _two_product(x0, y0)
     h, r = _two_product(x1, y1)
@@ -178,7 +180,7 @@ def _dot2_6(x0, x1, x2, x3, x4, x5, y0, y1, y2, y3, y4, y5):
     return p + s
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def plane_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
     """t = ((a - o) . n) / (d . n) with a - o exact (TwoSum) and both dot products
     compensated (Dot2); d . n == 0 and non-finite input are a defined miss."""
@@ -202,7 +204,7 @@ def plane_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
 
 # --- triangle -------------------------------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def triangle_slide(ox, oy, oz, dx, dy, dz, tmin, tmax,
                    v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
     """02562 "Ray-triangle intersection": e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1,
@@ -237,7 +239,7 @@ def triangle_slide(ox, oy, oz, dx, dy, dz, tmin, tmax,
     return inf
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _pick(x, y, z, k):
     if k == 0:
         return x
@@ -246,7 +248,7 @@ def _pick(x, y, z, k):
     return z
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def triangle_robust(ox, oy, oz, dx, dy, dz, tmin, tmax,
                     v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
     """Watertight ray/triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (non-culling)."""
@@ -296,6 +298,17 @@ def triangle_robust(ox, oy, oz, dx, dy, dz, tmin, tmax,
     U = cx * by - cy * bx
     V = ax * cy - ay * cx
     W = bx * ay - by * ax
+    # A zero-area triangle has exactly zero e0 x e1; the paper's det == 0 test alone lets
+    # some through, because U + V + W of a collinear triangle need not round to zero.
+    e0x = v1x - v0x
+    e0y = v1y - v0y
+    e0z = v1z - v0z
+    e1x = v2x - v0x
+    e1y = v2y - v0y
+    e1z = v2z - v0z
+    if (e0y * e1z - e0z * e1y == zero and e0z * e1x - e0x * e1z == zero
+            and e0x * e1y - e0y * e1x == zero):
+        return inf
     if U == zero or V == zero or W == zero:
         # Woop et al. section 3: an edge function that rounds to zero is recomputed in
         # double, so that the edge test stays consistent with the exact one (a no-op in
@@ -317,7 +330,7 @@ def triangle_robust(ox, oy, oz, dx, dy, dz, tmin, tmax,
 
 # --- spawned rays (PBRT-v4 6.8.6) -----------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gamma(n, x):
     """PBRT's gamma(n) = n u / (1 - n u) in the precision of x (u = half the ulp of 1)."""
     F = type(x)
@@ -326,7 +339,7 @@ def gamma(n, x):
     return nu / (F(1.0) - nu)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sphere_point_error(px, py, pz, cx, cy, cz):
     g5 = gamma(5, px)
     g3 = gamma(3, px)
@@ -337,20 +350,20 @@ def sphere_point_error(px, py, pz, cx, cy, cz):
             g5 * qz + g3 * (qz + abs(cz)))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def triangle_point_error(v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
     g7 = gamma(7, v0x)
     return (g7 * (abs(v0x) + abs(v1x) + abs(v2x)), g7 * (abs(v0y) + abs(v1y) + abs(v2y)),
             g7 * (abs(v0z) + abs(v1z) + abs(v2z)))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def plane_point_error(px, py, pz, ax, ay, az):
     g7 = gamma(7, px)
     return (g7 * (abs(px) + abs(ax)), g7 * (abs(py) + abs(ay)), g7 * (abs(pz) + abs(az)))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _away(x, o):
     F = type(x)
     if o > F(0.0):
@@ -360,7 +373,7 @@ def _away(x, o):
     return x
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def offset_ray_origin(px, py, pz, ex, ey, ez, nx, ny, nz, wx, wy, wz):
     """PBRT-v4 OffsetRayOrigin: p + (|n| . p_error) n toward w, rounded away from p."""
     F = type(px)
@@ -377,7 +390,7 @@ def offset_ray_origin(px, py, pz, ex, ey, ez, nx, ny, nz, wx, wy, wz):
 
 # --- batch evaluators -----------------------------------------------------------------
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def batch_sphere(formula, origins, directions, tmin, tmax, shapes):
     n = origins.shape[0]
     out = np.empty(n, dtype=origins.dtype)
@@ -394,7 +407,7 @@ def batch_sphere(formula, origins, directions, tmin, tmax, shapes):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def batch_plane(formula, origins, directions, tmin, tmax, shapes):
     n = origins.shape[0]
     out = np.empty(n, dtype=origins.dtype)
@@ -411,7 +424,7 @@ def batch_plane(formula, origins, directions, tmin, tmax, shapes):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def batch_triangle(formula, origins, directions, tmin, tmax, shapes):
     n = origins.shape[0]
     out = np.empty(n, dtype=origins.dtype)
@@ -428,7 +441,7 @@ def batch_triangle(formula, origins, directions, tmin, tmax, shapes):
     return out
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def batch_spawn(formula, kind, positions, normals, directions, shapes):
     """Origins and tmin of secondary rays leaving ``positions`` (on the shapes of ``kind``):
     the slide's fixed SPAWN_EPSILON as tmin, or PBRT's offset origin with tmin 0."""

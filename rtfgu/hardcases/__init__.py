@@ -1,0 +1,13 @@
+"""Hard cases for ray/shape intersection (issue 6): seeded families with exact truth, the
+paths they run through, and the evaluator that counts what each path gets wrong.
+
+    from rtfgu.hardcases import FAMILIES, build, evaluate, available_paths
+    family = build("sphere_far_small", "float32")
+    result = evaluate(family, NumbaPath("slide", "float32"))   # result.wrong, .leaks, ...
+"""
+from .evaluate import Result, evaluate
+from .families import FAMILIES, Family, build
+from .paths import FORMULAS, NumbaPath, ReferencePath, available_paths
+
+__all__ = ["FAMILIES", "FORMULAS", "Family", "NumbaPath", "ReferencePath", "Result",
+           "available_paths", "build", "evaluate"]

@@ -1,0 +1,154 @@
+"""Exact ground truth: rational arithmetic (``fractions.Fraction``) for every decision, and
+50-digit ``mpmath`` only for the square root of a sphere's hit distance.
+
+Every input float (float32 or float64) converts to a Fraction without rounding, so the
+truth is that of the very numbers a path receives, not of the values they approximate. No
+float computation enters a decision. A hit distance is returned as a double-double
+(hi, lo) with hi + lo = t to about 1e-32 relative, so that even float64 errors near one
+ulp are measured against something much finer than themselves.
+"""
+from __future__ import annotations
+
+import math
+from fractions import Fraction as Q
+
+import mpmath
+
+DIGITS = 50
+MISS = (math.inf, 0.0)
+
+
+def q3(v) -> tuple:
+    return (Q(float(v[0])), Q(float(v[1])), Q(float(v[2])))
+
+
+def finite(*values) -> bool:
+    return all(math.isfinite(float(x)) for x in values)
+
+
+def sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def dd_from_fraction(t: Q) -> tuple[float, float]:
+    hi = float(t)
+    return hi, float(t - Q(hi))
+
+
+def dd_from_mpf(t) -> tuple[float, float]:
+    with mpmath.workdps(DIGITS):
+        hi = float(t)
+        return hi, float(t - mpmath.mpf(hi))
+
+
+def _mpf(x: Q):
+    return mpmath.mpf(x.numerator) / x.denominator
+
+
+def _in_range_rational(t: Q, tmin: float, tmax: float) -> bool:
+    return t >= Q(tmin) and (math.isinf(tmax) or t < Q(tmax))
+
+
+# --- sphere ---------------------------------------------------------------------------
+
+def sphere_roots(o, d, center, radius):
+    """The exact roots of (o + t d - c)^2 = r^2 as mpf (t1 <= t2), or None if none are real.
+    Also returns the rational (a, b, disc) of t = (-b -+ sqrt(disc)) / a with b = f . d."""
+    f = sub(q3(o), q3(center))
+    dq = q3(d)
+    r = Q(float(radius))
+    a = dot(dq, dq)
+    b = dot(f, dq)
+    c = dot(f, f) - r * r
+    disc = b * b - a * c
+    if disc < 0:
+        return None
+    with mpmath.workdps(DIGITS):
+        s = mpmath.sqrt(_mpf(disc))
+        A, B = _mpf(a), _mpf(b)
+        return (-B - s) / A, (-B + s) / A, (a, b, disc)
+
+
+def _sqrt_ge(sign: int, disc: Q, x: Q) -> bool:
+    # sign * sqrt(disc) >= x, decided exactly
+    if sign > 0:
+        return x <= 0 or disc >= x * x
+    return x <= 0 and disc <= x * x
+
+
+def _sqrt_lt(sign: int, disc: Q, y: Q) -> bool:
+    # sign * sqrt(disc) < y, decided exactly
+    if sign > 0:
+        return y > 0 and disc < y * y
+    return y > 0 or disc > y * y
+
+
+def sphere(o, d, tmin, tmax, center, radius):
+    """The least root in [tmin, tmax) as (hi, lo), or MISS; decided in rationals."""
+    if not (finite(*o, *d, *center, radius, tmin) and not math.isnan(tmax)):
+        return MISS
+    if float(radius) <= 0 or (d[0] == 0 and d[1] == 0 and d[2] == 0):
+        return MISS
+    roots = sphere_roots(o, d, center, radius)
+    if roots is None:
+        return MISS
+    t1, t2, (a, b, disc) = roots
+    for sign, t in ((-1, t1), (1, t2)):
+        # t = (-b + sign sqrt(disc)) / a with a > 0
+        if not _sqrt_ge(sign, disc, a * Q(float(tmin)) + b):
+            continue
+        if not math.isinf(tmax) and not _sqrt_lt(sign, disc, a * Q(float(tmax)) + b):
+            continue
+        return dd_from_mpf(t)
+    return MISS
+
+
+# --- plane ----------------------------------------------------------------------------
+
+def plane(o, d, tmin, tmax, point, normal):
+    """t = ((a - o) . n) / (d . n) in rationals; d . n == 0 is a miss."""
+    if not (finite(*o, *d, *point, *normal, tmin) and not math.isnan(tmax)):
+        return MISS
+    n = q3(normal)
+    den = dot(q3(d), n)
+    if den == 0:
+        return MISS
+    t = dot(sub(q3(point), q3(o)), n) / den
+    if _in_range_rational(t, tmin, tmax):
+        return dd_from_fraction(t)
+    return MISS
+
+
+# --- triangle -------------------------------------------------------------------------
+
+def triangle(o, d, tmin, tmax, v0, v1, v2):
+    """The 02562 barycentric test in rationals, edges and vertices included; a zero-area
+    triangle or a ray parallel to its plane is a miss."""
+    if not (finite(*o, *d, *v0, *v1, *v2, tmin) and not math.isnan(tmax)):
+        return MISS
+    oq, dq = q3(o), q3(d)
+    p0, p1, p2 = q3(v0), q3(v1), q3(v2)
+    e0 = sub(p1, p0)
+    e1 = sub(p2, p0)
+    n = cross(e0, e1)
+    den = dot(dq, n)
+    if den == 0:
+        return MISS
+    a = sub(p0, oq)
+    t = dot(a, n) / den
+    if not _in_range_rational(t, tmin, tmax):
+        return MISS
+    c = cross(a, dq)
+    beta = dot(c, e1) / den
+    gamma = -dot(c, e0) / den
+    if beta >= 0 and gamma >= 0 and beta + gamma <= 1:
+        return dd_from_fraction(t)
+    return MISS

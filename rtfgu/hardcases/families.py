@@ -1,0 +1,537 @@
+"""The seeded hard-case families, each with its exact truth.
+
+A family is a batch of rays, each with its own K shapes of one kind (K = 1 for most; 6 for a
+triangle fan; 2 for a spawned ray: the surface it leaves and a neighbour just beyond). The
+inputs are drawn in float64 from a seeded generator and then rounded once to the precision
+of the path under test; the truth is computed from the rounded numbers (``exact``), so a
+float32 family and a float64 family share their geometry but not their last bits.
+"""
+from __future__ import annotations
+
+import math
+import zlib
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import numpy as np
+
+from ..layout import DTYPES, PLANE, SPHERE, TRIANGLE
+from ..ray import RAY_EPSILON
+from . import exact
+
+SHAPE_WIDTH = {SPHERE: 4, PLANE: 6, TRIANGLE: 9}
+KIND_NAMES = {SPHERE: "sphere", PLANE: "plane", TRIANGLE: "triangle"}
+DEFAULT_RAYS = 200
+
+
+@dataclass
+class Family:
+    """One family in one precision. ``shapes`` is (K, N, width); ``truth_t`` is the exact
+    hit distance as a double-double (truth_t + truth_lo), inf on a miss.
+
+    ``spawn`` (secondary-ray families) holds positions, normals and directions: the path
+    turns them into ray origins and tmin with its own spawn rule, and the truth is the first
+    real hit beyond the surface left (its own root at t ~ 0 excluded). ``self_threshold``
+    separates that root from the real hits: a hit closer than it is a self-hit.
+    ``invalid`` marks input the lecture layer must reject with a ValueError."""
+
+    name: str
+    group: str
+    kind: int
+    description: str
+    precision: str
+    origins: np.ndarray
+    directions: np.ndarray
+    tmin: np.ndarray
+    tmax: np.ndarray
+    shapes: np.ndarray
+    truth_t: np.ndarray
+    truth_lo: np.ndarray
+    spawn: dict | None = None
+    self_threshold: np.ndarray | None = None
+    invalid: bool = False
+    meta: dict = field(default_factory=dict)
+
+    @property
+    def size(self) -> int:
+        return self.origins.shape[0]
+
+    @property
+    def truth_hit(self) -> np.ndarray:
+        return np.isfinite(self.truth_t)
+
+
+# --- small geometric helpers (float64, before rounding) -------------------------------
+
+def _unit(v):
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def _random_unit(rng, n, dtype=np.float64):
+    return _unit(rng.normal(size=(n, 3)))
+
+
+def _perpendicular(rng, u):
+    return _unit(np.cross(u, rng.normal(size=u.shape)))
+
+
+def _log_uniform(rng, lo, hi, n):
+    return 10.0 ** rng.uniform(lo, hi, n)
+
+
+def _aim_at_sphere(rng, center, radius, distance, impact):
+    """Origins at ``distance`` from the centre and unit directions whose line passes at
+    ``impact`` from it (impact < radius: a hit; > radius: a miss; = radius: tangent)."""
+    n = center.shape[0]
+    u = _random_unit(rng, n)
+    v = _perpendicular(rng, u)
+    sin_phi = (impact / distance)[:, None]
+    d = -u * np.sqrt(1.0 - sin_phi ** 2) + v * sin_phi
+    return center + u * distance[:, None], d
+
+
+# --- spheres --------------------------------------------------------------------------
+
+def _sphere_tangent(rng, n, dtype=np.float64):
+    c = rng.uniform(-2, 2, (n, 3))
+    r = rng.uniform(0.5, 2.0, n)
+    D = r * rng.uniform(20, 100, n)
+    p = r * (1.0 + rng.uniform(-2e-4, 2e-4, n))
+    o, d = _aim_at_sphere(rng, c, r, D, p)
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+def _sphere_far_small(rng, n, dtype=np.float64):
+    D = rng.uniform(100, 1000, n)
+    r = D * _log_uniform(rng, -4, -3, n)
+    o0 = rng.uniform(-1, 1, (n, 3))
+    u = _random_unit(rng, n)
+    c = o0 + u * D[:, None]
+    o, d = _aim_at_sphere(rng, c, r, D, r * rng.uniform(0, 1.5, n))
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+def _sphere_tiny_radius(rng, n, dtype=np.float64):
+    r = _log_uniform(rng, -6, -3, n)
+    D = r * _log_uniform(rng, 2.5, 4, n)
+    c = _random_unit(rng, n) * (D * rng.uniform(0, 1, n))[:, None]
+    o, d = _aim_at_sphere(rng, c, r, D, r * rng.uniform(0, 1.5, n))
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+def _sphere_inside(rng, n, dtype=np.float64):
+    c = rng.uniform(-2, 2, (n, 3))
+    r = rng.uniform(0.5, 2.0, n)
+    o = c + _random_unit(rng, n) * (r * rng.uniform(0, 0.999, n))[:, None]
+    return dict(origins=o, directions=_random_unit(rng, n), shapes=[np.column_stack([c, r])])
+
+
+def _sphere_direction_scale(rng, n, dtype=np.float64):
+    c = rng.uniform(-2, 2, (n, 3))
+    r = rng.uniform(0.5, 2.0, n)
+    o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(2, 10, n), r * rng.uniform(0, 1.3, n))
+    d = d * _log_uniform(rng, -12, 12, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+# --- planes ---------------------------------------------------------------------------
+
+_INTEGER_NORMALS = np.array([(0, 0, 1), (1, 2, 2), (3, 4, 0), (1, 1, 1), (2, -1, 2), (0, 3, 4),
+                             (1, -2, 5), (-4, 1, 8)], dtype=np.float64)
+
+
+def _plane_parallel(rng, n, dtype=np.float64):
+    # Small integers times powers of two: d . n is exactly 0 in either precision.
+    nrm = _INTEGER_NORMALS[rng.integers(0, len(_INTEGER_NORMALS), n)]
+    m = rng.integers(-3, 4, (n, 3)).astype(np.float64)
+    d = np.cross(nrm, m)
+    bad = np.all(d == 0, axis=1)
+    d[bad] = np.cross(nrm[bad], nrm[bad][:, ::-1] + np.array([1.0, 0.0, 0.0]))
+    d *= 2.0 ** rng.integers(-8, 9, n)[:, None]
+    nrm = nrm * 2.0 ** rng.integers(-4, 5, n)[:, None]
+    a = rng.uniform(-5, 5, (n, 3))
+    o = rng.uniform(-5, 5, (n, 3))
+    o[: n // 4] = a[: n // 4]  # some rays lie in the plane itself
+    return dict(origins=o, directions=d, shapes=[np.column_stack([a, nrm])])
+
+
+def _plane_nearly_parallel(rng, n, dtype=np.float64):
+    nrm = _random_unit(rng, n)
+    along = _perpendicular(rng, nrm)
+    theta = rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -20, -2, n)
+    d = along * np.cos(theta)[:, None] + nrm * np.sin(theta)[:, None]
+    a = rng.uniform(-5, 5, (n, 3))
+    h = rng.choice([-1.0, 1.0], n) * rng.uniform(0.1, 10, n)
+    o = a + nrm * h[:, None] + _perpendicular(rng, nrm) * rng.uniform(-5, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([a, nrm])])
+
+
+def _plane_start_on(rng, n, dtype=np.float64):
+    nrm = _random_unit(rng, n)
+    a = rng.uniform(-50, 50, (n, 3))
+    o = a + _perpendicular(rng, nrm) * rng.uniform(0, 50, n)[:, None]
+    return dict(origins=o, directions=_random_unit(rng, n), shapes=[np.column_stack([a, nrm])],
+                tmin=np.full(n, RAY_EPSILON))
+
+
+# --- triangles ------------------------------------------------------------------------
+
+FAN = 6
+
+
+def _grid(x, dtype):
+    """x (inside [2, 4)) rounded to dtype: every float of [2, 4) is a multiple of the same
+    ulp, so sums and differences of such points that stay inside [2, 4) are exact."""
+    return np.clip(x, 2.0, np.nextafter(4.0, 0.0)).astype(dtype).astype(np.float64)
+
+
+def _fans(rng, n, dtype):
+    """A closed fan of FAN triangles around a centre vertex per ray, slightly non-planar,
+    inside the box [2, 4)^3 where the float grid is uniform. Ring vertex i is vc + 2 e_i, so
+    the point vc + e_i lies exactly on the shared edge (vc, ring i), in either precision."""
+    vc = _grid(rng.uniform(2.9, 3.1, (n, 3)), dtype)
+    t1 = _random_unit(rng, n)
+    t2 = _perpendicular(rng, t1)
+    nz = np.cross(t1, t2)
+    half = []
+    for i in range(FAN):
+        ang = 2 * math.pi * i / FAN + rng.uniform(-0.3, 0.3, n)
+        rad = rng.uniform(0.1, 0.4, n)
+        e = (t1 * (rad * np.cos(ang))[:, None] + t2 * (rad * np.sin(ang))[:, None]
+             + nz * rng.uniform(-0.05, 0.05, n)[:, None])
+        half.append(_grid(vc + e, dtype) - vc)
+    ring = [vc + 2.0 * e for e in half]
+    return vc, ring, half, nz
+
+
+def _fan_shapes(rng, vc, ring):
+    """Triangle i is (vc, ring i, ring i+1), its vertex list rotated by a random cyclic
+    shift (the winding kept), as in a mesh file: a shared edge is then e0 in one triangle
+    and v1 -> v2 in the other, and the two slide tests round it differently. (With vc as
+    v0 everywhere the slide test would share one numerator along the edges from vc.)"""
+    shapes = []
+    for i in range(FAN):
+        verts = [vc, ring[i], ring[(i + 1) % FAN]]
+        shift = rng.integers(0, 3, vc.shape[0])
+        cols = [np.where((shift == 0)[:, None], verts[j],
+                         np.where((shift == 1)[:, None], verts[(j + 1) % 3], verts[(j + 2) % 3]))
+                for j in range(3)]
+        shapes.append(np.column_stack(cols))
+    return shapes
+
+
+def _fan_origins(rng, target, nz, n, dtype):
+    # target - origin is exact (both on the uniform grid), so the exact ray passes exactly
+    # through the target point.
+    side = rng.choice([-1.0, 1.0], n)[:, None]
+    return _grid(target + nz * side * rng.uniform(0.3, 0.8, n)[:, None]
+                 + rng.uniform(-0.2, 0.2, (n, 3)), dtype)
+
+
+def _tri_fan_edges(rng, n, dtype=np.float64):
+    vc, ring, half, nz = _fans(rng, n, dtype)
+    pick = rng.integers(0, FAN, n)
+    target = vc + np.stack(half)[pick, np.arange(n)]
+    o = _fan_origins(rng, target, nz, n, dtype)
+    return dict(origins=o, directions=target - o, shapes=_fan_shapes(rng, vc, ring))
+
+
+def _tri_fan_vertex(rng, n, dtype=np.float64):
+    vc, ring, half, nz = _fans(rng, n, dtype)
+    o = _fan_origins(rng, vc, nz, n, dtype)
+    return dict(origins=o, directions=vc - o, shapes=_fan_shapes(rng, vc, ring))
+
+
+def _triangle_rays(rng, v0, v1, v2, lo, hi, n, distance=(1.0, 5.0)):
+    """Rays from above or below a triangle, aimed at barycentrics drawn from [lo, hi]."""
+    e0, e1 = v1 - v0, v2 - v0
+    b1 = rng.uniform(lo, hi, n)
+    b2 = rng.uniform(lo, hi, n)
+    target = v0 + e0 * b1[:, None] + e1 * b2[:, None]
+    nrm = _unit(np.cross(e0, e1))
+    size = np.linalg.norm(e0, axis=1)
+    w = _unit(nrm * rng.choice([-1.0, 1.0], n)[:, None] + rng.uniform(-0.7, 0.7, (n, 3)))
+    o = target + w * (size * rng.uniform(*distance, n))[:, None]
+    return o, target - o
+
+
+def _tri_needle(rng, n, dtype=np.float64):
+    v0 = rng.uniform(-2, 2, (n, 3))
+    e = _random_unit(rng, n)
+    side = _perpendicular(rng, e)
+    length = rng.uniform(0.5, 2, n)[:, None]
+    v1 = v0 + e * length
+    v2 = v0 + e * length * rng.uniform(0, 1, n)[:, None] + side * _log_uniform(rng, -7, -3, n)[:, None]
+    o, d = _triangle_rays(rng, v0, v1, v2, -0.5, 1.5, n)
+    return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
+
+
+def _tri_zero_area(rng, n, dtype=np.float64):
+    # Collinear or repeated vertices with small integer coordinates: the area is exactly 0.
+    v0 = rng.integers(-8, 9, (n, 3)).astype(np.float64)
+    e = rng.integers(-3, 4, (n, 3)).astype(np.float64)
+    e[np.all(e == 0, axis=1)] = (1.0, 2.0, 0.0)
+    a = rng.integers(0, 4, n).astype(np.float64)[:, None]
+    b = rng.integers(-3, 4, n).astype(np.float64)[:, None]
+    v1, v2 = v0 + e * a, v0 + e * b
+    target = v0 + e * rng.uniform(-1, 3, n)[:, None]
+    o = target + _random_unit(rng, n) * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([v0, v1, v2])])
+
+
+def _tri_nearly_parallel(rng, n, dtype=np.float64):
+    v0 = rng.uniform(-2, 2, (n, 3))
+    v1 = v0 + rng.uniform(-1, 1, (n, 3))
+    v2 = v0 + rng.uniform(-1, 1, (n, 3))
+    e0, e1 = v1 - v0, v2 - v0
+    nrm = _unit(np.cross(e0, e1))
+    target = v0 + e0 * rng.uniform(-0.2, 1.2, n)[:, None] + e1 * rng.uniform(-0.2, 1.2, n)[:, None]
+    along = _perpendicular(rng, nrm)
+    theta = rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -1, n)
+    d = along * np.cos(theta)[:, None] + nrm * np.sin(theta)[:, None]
+    o = target - d * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
+
+
+# --- large offsets and tiny scenes ----------------------------------------------------
+
+def _offset_sphere(rng, n, dtype=np.float64):
+    offset = _random_unit(rng, n) * _log_uniform(rng, 4, 7, n)[:, None]
+    r = _log_uniform(rng, 0, 1, n)
+    c = offset + rng.uniform(-1, 1, (n, 3)) * r[:, None]
+    o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(3, 10, n), r * rng.uniform(0, 1.3, n))
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+def _offset_triangle(rng, n, dtype=np.float64):
+    offset = _random_unit(rng, n) * _log_uniform(rng, 4, 7, n)[:, None]
+    size = _log_uniform(rng, 0, 1, n)[:, None]
+    v0 = offset + rng.uniform(-1, 1, (n, 3)) * size
+    v1 = v0 + rng.uniform(-1, 1, (n, 3)) * size
+    v2 = v0 + rng.uniform(-1, 1, (n, 3)) * size
+    o, d = _triangle_rays(rng, v0, v1, v2, -0.2, 1.2, n)
+    return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
+
+
+def _tiny_sphere(rng, n, dtype=np.float64):
+    scale = _log_uniform(rng, -6, -3, n)
+    c = rng.uniform(-1, 1, (n, 3)) * scale[:, None]
+    r = scale * rng.uniform(0.3, 1, n)
+    o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(2, 10, n), r * rng.uniform(0, 1.3, n))
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+def _tiny_triangle(rng, n, dtype=np.float64):
+    size = _log_uniform(rng, -6, -3, n)[:, None]
+    v0 = rng.uniform(-1, 1, (n, 3)) * size
+    v1 = v0 + rng.uniform(-1, 1, (n, 3)) * size
+    v2 = v0 + rng.uniform(-1, 1, (n, 3)) * size
+    o, d = _triangle_rays(rng, v0, v1, v2, -0.2, 1.2, n)
+    return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
+
+
+# --- secondary rays -------------------------------------------------------------------
+# mode per ray: 0 "out" (shadow or mirror ray, a neighbour surface just beyond),
+# 1 "in" (refracted ray, a neighbour just inside), 2 "none" (out, nothing beyond).
+
+def _spawn_directions(rng, nrm, mode):
+    n = nrm.shape[0]
+    cos = rng.uniform(0.2, 1.0, n)[:, None]
+    v = _perpendicular(rng, nrm)
+    sign = np.where(mode == 1, -1.0, 1.0)[:, None]
+    return nrm * (cos * sign) + v * np.sqrt(1 - cos ** 2)
+
+
+def _spawn_sphere(rng, n, dtype=np.float64):
+    scale = _log_uniform(rng, -3, 4, n)
+    c = rng.uniform(-1, 1, (n, 3)) * scale[:, None]
+    r = scale * rng.uniform(0.5, 2, n)
+    u = _random_unit(rng, n)
+    mode = np.arange(n) % 3
+    delta = r * _log_uniform(rng, -3, -2, n)
+    r2 = np.where(mode == 0, r + delta, np.where(mode == 1, r - delta, 0.5 * r))
+    return dict(positions=c + u * r[:, None], normals=u, directions=_spawn_directions(rng, u, mode),
+                shapes=[np.column_stack([c, r]), np.column_stack([c, r2])],
+                self_threshold=1e-4 * r, mode=mode)
+
+
+def _spawn_plane(rng, n, dtype=np.float64):
+    scale = _log_uniform(rng, -3, 4, n)
+    a = rng.uniform(-1, 1, (n, 3)) * scale[:, None]
+    nrm = _random_unit(rng, n)
+    p = a + _perpendicular(rng, nrm) * (scale * rng.uniform(0, 1, n))[:, None]
+    mode = np.arange(n) % 3
+    delta = scale * _log_uniform(rng, -3, -2, n)
+    shift = np.where(mode == 0, delta, -delta)[:, None]
+    return dict(positions=p, normals=nrm, directions=_spawn_directions(rng, nrm, mode),
+                shapes=[np.column_stack([a, nrm]), np.column_stack([a + nrm * shift, nrm])],
+                self_threshold=1e-4 * scale, mode=mode)
+
+
+def _spawn_triangle(rng, n, dtype=np.float64):
+    scale = _log_uniform(rng, -3, 4, n)[:, None]
+    v0 = rng.uniform(-1, 1, (n, 3)) * scale
+    v1 = v0 + _random_unit(rng, n) * scale
+    v2 = v0 + _unit(_perpendicular(rng, v1 - v0) + (v1 - v0) / scale * 0.3) * scale
+    nrm = _unit(np.cross(v1 - v0, v2 - v0))
+    p = v0 + (v1 - v0) * rng.uniform(0.2, 0.4, n)[:, None] + (v2 - v0) * rng.uniform(0.2, 0.4, n)[:, None]
+    mode = np.arange(n) % 3
+    delta = scale[:, 0] * _log_uniform(rng, -3, -2, n)
+    shift = nrm * np.where(mode == 0, delta, -delta)[:, None]
+    return dict(positions=p, normals=nrm, directions=_spawn_directions(rng, nrm, mode),
+                shapes=[np.column_stack([v0, v1, v2]), np.column_stack([v0 + shift, v1 + shift, v2 + shift])],
+                self_threshold=1e-4 * scale[:, 0], mode=mode)
+
+
+# --- NaN and infinite input -----------------------------------------------------------
+
+def _corrupt(rng, built, width):
+    """Put a NaN, +inf or -inf into one field of each ray: origin, direction (or a zero
+    direction), tmin, or the shape. The truth of every such ray is a miss."""
+    n = built["origins"].shape[0]
+    o, d = built["origins"].copy(), built["directions"].copy()
+    s = built["shapes"][0].copy()
+    tmin = np.zeros(n)
+    bad = rng.choice([math.nan, math.inf, -math.inf], n)
+    field_of = rng.integers(0, 5, n)
+    for i in range(n):
+        f = field_of[i]
+        if f == 0:
+            o[i, rng.integers(0, 3)] = bad[i]
+        elif f == 1:
+            d[i, rng.integers(0, 3)] = bad[i]
+        elif f == 2:
+            d[i] = 0.0
+        elif f == 3:
+            tmin[i] = math.nan
+        else:
+            s[i, rng.integers(0, width)] = bad[i]
+    return dict(origins=o, directions=d, shapes=[s], tmin=tmin, field_of=field_of)
+
+
+def _invalid_sphere(rng, n, dtype=np.float64):
+    return _corrupt(rng, _sphere_inside(rng, n), 4)
+
+
+def _invalid_plane(rng, n, dtype=np.float64):
+    return _corrupt(rng, _plane_nearly_parallel(rng, n), 6)
+
+
+def _invalid_triangle(rng, n, dtype=np.float64):
+    return _corrupt(rng, _tri_needle(rng, n), 9)
+
+
+# name: (group, kind, builder, description)
+FAMILIES = {
+    "sphere_tangent": ("sphere", SPHERE, _sphere_tangent,
+                       "tangent and grazing rays: impact parameter r (1 +- 2e-4), origin 20-100 r away"),
+    "sphere_far_small": ("sphere", SPHERE, _sphere_far_small,
+                         "far, small spheres: 100-1000 away, radius 1e-4..1e-3 of the distance"),
+    "sphere_tiny_radius": ("sphere", SPHERE, _sphere_tiny_radius,
+                           "radii 1e-6..1e-3, origin 3e2..1e4 radii away"),
+    "sphere_inside": ("sphere", SPHERE, _sphere_inside, "rays that start inside the sphere"),
+    "sphere_direction_scale": ("sphere", SPHERE, _sphere_direction_scale,
+                               "unnormalised directions of length 1e-12..1e12"),
+    "plane_parallel": ("plane", PLANE, _plane_parallel,
+                       "d . n exactly 0 (a quarter of the rays lie in the plane)"),
+    "plane_nearly_parallel": ("plane", PLANE, _plane_nearly_parallel,
+                              "angle to the plane 1e-20..1e-2, origin 0.1-10 off the plane"),
+    "plane_start_on": ("plane", PLANE, _plane_start_on,
+                       "origins on the plane (rounded), tmin = RAY_EPSILON, coordinates up to 100"),
+    "tri_fan_edges": ("triangle", TRIANGLE, _tri_fan_edges,
+                      "rays exactly through an edge shared by two triangles of a closed 6-triangle fan"),
+    "tri_fan_vertex": ("triangle", TRIANGLE, _tri_fan_vertex,
+                       "rays exactly through the vertex shared by all six triangles of a closed fan"),
+    "tri_needle": ("triangle", TRIANGLE, _tri_needle, "needle triangles 1e-7..1e-3 wide"),
+    "tri_zero_area": ("triangle", TRIANGLE, _tri_zero_area,
+                      "zero-area triangles (collinear or repeated vertices): always a miss"),
+    "tri_nearly_parallel": ("triangle", TRIANGLE, _tri_nearly_parallel,
+                            "angle to the triangle's plane 1e-8..1e-1"),
+    "spawn_sphere": ("secondary", SPHERE, _spawn_sphere,
+                     "rays leaving a sphere (out, in, out with nothing beyond), scale 1e-3..1e4"),
+    "spawn_plane": ("secondary", PLANE, _spawn_plane,
+                    "rays leaving a plane, a parallel plane 1e-3..1e-2 beyond, scale 1e-3..1e4"),
+    "spawn_triangle": ("secondary", TRIANGLE, _spawn_triangle,
+                       "rays leaving a triangle, a parallel one 1e-3..1e-2 beyond, scale 1e-3..1e4"),
+    "offset_sphere": ("offset", SPHERE, _offset_sphere, "spheres 1e4..1e7 from the world origin"),
+    "offset_triangle": ("offset", TRIANGLE, _offset_triangle, "triangles 1e4..1e7 from the world origin"),
+    "tiny_sphere": ("offset", SPHERE, _tiny_sphere, "scenes of size 1e-6..1e-3, tmin 0"),
+    "tiny_triangle": ("offset", TRIANGLE, _tiny_triangle, "scenes of size 1e-6..1e-3, tmin 0"),
+    "invalid_sphere": ("invalid", SPHERE, _invalid_sphere, "NaN, inf or zero direction in one field"),
+    "invalid_plane": ("invalid", PLANE, _invalid_plane, "NaN, inf or zero direction in one field"),
+    "invalid_triangle": ("invalid", TRIANGLE, _invalid_triangle, "NaN, inf or zero direction in one field"),
+}
+
+
+def _round_ulps(rng, x, dtype):
+    """x rounded to dtype, then moved by -1, 0 or +1 ulp per component: a hit point as a
+    path computes it, within a few roundings of the surface."""
+    x = x.astype(dtype)
+    step = rng.integers(-1, 2, x.shape)
+    up = np.nextafter(x, np.array(np.inf, dtype))
+    down = np.nextafter(x, np.array(-np.inf, dtype))
+    return np.where(step > 0, up, np.where(step < 0, down, x))
+
+
+def _truth(kind, o, d, tmin, tmax, shape):
+    if kind == SPHERE:
+        return exact.sphere(o, d, tmin, tmax, shape[:3], shape[3])
+    if kind == PLANE:
+        return exact.plane(o, d, tmin, tmax, shape[:3], shape[3:6])
+    return exact.triangle(o, d, tmin, tmax, shape[:3], shape[3:6], shape[6:9])
+
+
+def _spawn_truth(kind, p, w, tmax, own, neighbour, threshold):
+    """The first real hit from p along w: the neighbour (t > 0) or the surface left, except
+    its root at t ~ 0 (only a sphere has a second, real root)."""
+    best = exact.MISS
+    if kind == SPHERE:
+        roots = exact.sphere_roots(p, w, own[:3], own[3])
+        if roots is not None:
+            for t in roots[:2]:
+                if t > threshold and (math.isinf(tmax) or t < tmax):
+                    best = min(best, exact.dd_from_mpf(t))
+                    break
+    return min(best, _truth(kind, p, w, 0.0, tmax, neighbour))
+
+
+@lru_cache(maxsize=None)
+def build(name: str, precision: str, n: int = DEFAULT_RAYS, seed: int = 2024) -> Family:
+    """The family ``name`` in ``precision`` ("float32" or "float64"), with its exact truth."""
+    if name not in FAMILIES:
+        raise ValueError("family must be one of %s, got %r" % (", ".join(FAMILIES), name))
+    if precision not in DTYPES:
+        raise ValueError("precision must be one of %s, got %r" % (", ".join(DTYPES), precision))
+    dtype = DTYPES[precision]
+    group, kind, builder, description = FAMILIES[name]
+    rng = np.random.default_rng([seed, zlib.crc32(name.encode())])
+    with np.errstate(all="ignore"):
+        raw = builder(rng, n, dtype)
+        shapes = np.stack(raw["shapes"]).astype(dtype)
+        tmax = np.full(n, np.inf, dtype)
+        spawn = None
+        threshold = None
+        if "positions" in raw:
+            positions = _round_ulps(rng, raw["positions"], dtype)
+            spawn = dict(positions=positions, normals=raw["normals"].astype(dtype),
+                         directions=raw["directions"].astype(dtype), mode=raw["mode"])
+            origins, directions = positions, spawn["directions"]
+            tmin = np.zeros(n, dtype)
+            threshold = raw["self_threshold"]
+        else:
+            origins = raw["origins"].astype(dtype)
+            directions = raw["directions"].astype(dtype)
+            tmin = np.asarray(raw.get("tmin", np.zeros(n)), dtype=dtype)
+    truth = []
+    for i in range(n):
+        if spawn is not None:
+            truth.append(_spawn_truth(kind, origins[i], directions[i], float(tmax[i]),
+                                      shapes[0, i], shapes[1, i], threshold[i]))
+        else:
+            truth.append(min(_truth(kind, origins[i], directions[i], float(tmin[i]), float(tmax[i]),
+                                    shapes[k, i]) for k in range(shapes.shape[0])))
+    meta = {key: raw[key] for key in ("field_of",) if key in raw}
+    return Family(name=name, group=group, kind=kind, description=description, precision=precision,
+                  origins=origins, directions=directions, tmin=tmin, tmax=tmax, shapes=shapes,
+                  truth_t=np.array([t[0] for t in truth]), truth_lo=np.array([t[1] for t in truth]),
+                  spawn=spawn, self_threshold=threshold, invalid=(group == "invalid"), meta=meta)
