@@ -206,3 +206,23 @@ def test_export_wgsl_and_info_commands(tmp_path, wgpu_device, capsys):
     assert main(["info"]) == 0
     printed = capsys.readouterr().out
     assert wgsl_device.adapter_description() in printed
+
+
+def test_scene_without_shapes_shows_its_background(wgpu_device):
+    from rtfgu.scene import Scene
+
+    scene = Scene(SCENES["default_flat_colors"]().camera)
+    scene.background = Float3(0.2, 0.3, 0.4)
+    image = render_wgpu(scene, 8, 8)
+    np.testing.assert_allclose(image, np.broadcast_to([0.2, 0.3, 0.4], image.shape), rtol=1e-6)
+
+
+def test_arrays_too_large_for_a_uniform_binding_go_to_storage():
+    from rtfgu.shapes import Sphere
+
+    scene = SCENES["default_lambertian"]()
+    for k in range(1200):  # 1203 materials x 64 bytes > 64 KiB
+        scene.shapes.append(Sphere(Float3(0.01 * k, 0.0, -5.0), 0.01, Float3(0.5, 0.5, 0.5)))
+    kinds = {b.name: b.kind for b in assemble(compile_scene(scene, "float32")).bindings}
+    assert kinds["materials"] == "storage"
+    assert kinds["spheres"] == "uniform" and kinds["camera"] == "uniform"

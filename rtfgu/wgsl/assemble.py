@@ -122,8 +122,11 @@ class Program:
 
 def scene_features(flat) -> frozenset:
     """FlatScene.features plus what the assembly derives from it: "trace" when the path
-    loop runs (not the ray-direction image), "sample_lights" when a shader samples lights."""
+    loop runs (not the ray-direction image), "sample_lights" when a shader samples lights,
+    "shapes" when there is any shape."""
     f = set(flat.features)
+    if len(flat.shaders):
+        f.add("shapes")
     if not flat.show_ray_direction:
         f.add("trace")
         if "lights" in f and LIGHT_SHADERS & f:

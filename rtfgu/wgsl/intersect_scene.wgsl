@@ -6,6 +6,7 @@
 
 // Index arrays (int32) arrive packed four to a vec4i (a uniform array needs a 16-byte
 // stride): entry k is [k / 4][k % 4].
+// #if shapes
 fn set_material(hit: ptr<function, HitInfo>, k: u32)
 {
     let m = materials[k];
@@ -16,6 +17,7 @@ fn set_material(hit: ptr<function, HitInfo>, k: u32)
     (*hit).ior = m.ior;
     (*hit).emission = m.emission;
 }
+// #endif
 
 fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
 {
@@ -45,8 +47,10 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
         }
     }
     // #endif
+    // #if shapes
     if (shape >= 0) {
         set_material(hit, u32(shape));
     }
+    // #endif
     return (*hit).has_hit;
 }

@@ -59,7 +59,8 @@ def _compile_error(program, error, stage) -> WGSLCompileError:
     file, file_line, function = program.origin(line) if 0 < line <= len(lines) else (None, None, None)
     text = lines[line - 1] if 0 < line <= len(lines) else ""
     where = ("rtfgu/wgsl/%s" % file if file and file != GENERATED else (file or "?"))
-    summary = next((s.strip() for s in raw.splitlines() if "error" in s.lower() and "wgsl:" not in s),
+    # naga's own sentence ("... parsing error: ...") rather than wgpu's "Validation Error".
+    summary = next((s.strip() for s in raw.splitlines() if "error:" in s.lower()),
                    raw.strip().splitlines()[-1] if raw.strip() else "")
     message = "%s:%s:%d%s: %s\n    %s\n(line %d of the assembled program)\n%s" % (
         where, file_line, column, " in fn %s" % function if function else "", summary,
