@@ -4,7 +4,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: render test venv clean bench
+.PHONY: render test venv clean bench assignments check grade grade-all autograder-zip
 
 # Create the virtual environment and install the package (editable) with its test extras.
 # The stamp depends on setup.cfg, so a second run reinstalls nothing unless it changed.
@@ -17,7 +17,7 @@ $(STAMP): setup.cfg pyproject.toml
 venv: $(STAMP)
 
 render: $(STAMP)
-	$(PY) -m rtfgu render-all --backend numba --out renders
+	$(if $(A),$(PY) -m rtfgu.grading render $(A),$(PY) -m rtfgu render-all --backend numba --out renders)
 
 # The benchmark (not a test): prints the table and writes docs/bench.md.
 bench: $(STAMP)
@@ -29,3 +29,21 @@ test: $(STAMP)
 
 clean:
 	rm -rf $(VENV) renders
+
+# Assignments and the autograder (rtfgu/grading). A is an assignment id (a03 or
+# a03_intersections); `make render A=a03` renders that assignment's images with the
+# student's files in assignments/.
+assignments: $(STAMP)
+	$(PY) -m rtfgu.grading generate --out assignments
+
+check: $(STAMP)
+	$(PY) -m rtfgu.grading check $(A)
+
+grade: $(STAMP)
+	$(PY) -m rtfgu.grading grade $(A) $(SUBMISSION) --out $(or $(OUT),grading-results/$(A)/$(notdir $(patsubst %/,%,$(SUBMISSION))))
+
+grade-all: $(STAMP)
+	$(PY) -m rtfgu.grading grade-all $(A) $(SUBMISSIONS) --out $(or $(OUT),grading-results/$(A))
+
+autograder-zip: $(STAMP)
+	$(PY) -m rtfgu.grading autograder-zip $(A)

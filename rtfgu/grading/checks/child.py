@@ -20,7 +20,7 @@ def _type_name(value) -> str:
 
 def num(value, what: str) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) and not hasattr(value, "__float__"):
-        raise StudentError("%s should be a number, but it is %r (a %s)" % (what, value, _type_name(value)))
+        raise StudentError("%s should be a number, but it is %r (of type %s)" % (what, value, _type_name(value)))
     return float(value)
 
 
@@ -28,7 +28,7 @@ def vec(value, what: str) -> list:
     try:
         x, y, z = value.x, value.y, value.z
     except AttributeError:
-        raise StudentError("%s should be a Float3, but it is %r (a %s)"
+        raise StudentError("%s should be a Float3, but it is %r (of type %s)"
                            % (what, value, _type_name(value))) from None
     return [num(x, what + ".x"), num(y, what + ".y"), num(z, what + ".z")]
 
@@ -36,7 +36,7 @@ def vec(value, what: str) -> list:
 def boolean(value, what: str) -> bool:
     if isinstance(value, bool) or type(value).__name__ == "bool_":
         return bool(value)
-    raise StudentError("%s should be True or False, but it is %r (a %s)" % (what, value, _type_name(value)))
+    raise StudentError("%s should be True or False, but it is %r (of type %s)" % (what, value, _type_name(value)))
 
 
 def describe_exception(error: BaseException) -> str:
@@ -76,6 +76,8 @@ class Cases:
             entry["out"] = fn()
         except StudentError as error:
             entry["error"] = str(error)
+        except MemoryError:
+            raise  # out of memory: the whole test stops (the next case would only run out again)
         except Exception as error:
             entry["error"] = describe_exception(error)
         self.cases.append(entry)

@@ -1,0 +1,52 @@
+"""Sphere: the points p with (p - c) . (p - c) = r^2 (lecture 01, "Ray-Sphere Intersection")."""
+from __future__ import annotations
+
+import math
+
+from ..float3 import Float3, as_float3, dot, normalize
+from ..ray import Ray
+from .shape import Shape
+
+
+class Sphere(Shape):
+    def __init__(self, center, radius: float, color, material=None):
+        super().__init__(color, material)
+        self.center = as_float3(center, "Sphere.center")
+        try:
+            ok = math.isfinite(radius) and radius > 0
+        except TypeError:
+            ok = False
+        if not ok:
+            raise ValueError("Sphere.radius must be finite and > 0, got %r" % (radius,))
+        self.radius = float(radius)
+
+    def intersect_p(self, ray: Ray) -> bool:
+        # a t^2 + b t + c = 0 with a = d.d, b = 2 (o - c).d, c = (o - c).(o - c) - r^2
+        temp = ray.origin - self.center
+        a = dot(ray.direction, ray.direction)
+        b = 2 * dot(temp, ray.direction)
+        c = dot(temp, temp) - self.radius * self.radius
+        disc = b * b + 4 * a * c
+
+        if disc < 0.0:
+            return False
+        else:
+            e = math.sqrt(disc)
+            denom = 2.0 * a
+            # Find the least t in [tmin, tmax): the near root first, then the far one
+            # (a ray that starts inside the sphere hits the far root).
+            t = (-b - e) / denom
+
+            if t >= ray.tmin and t < ray.tmax:
+                ray.tmax = t
+                return True
+
+            t = (-b + e) / denom
+            if t >= ray.tmin and t < ray.tmax:
+                ray.tmax = t
+                return True
+            else:
+                return False
+
+    def normal_at(self, position: Float3) -> Float3:
+        return normalize(position - self.center)
