@@ -4,7 +4,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: render test venv clean bench assignments check grade grade-all autograder-zip
+.PHONY: render test venv clean bench montage assignments check grade grade-all autograder-zip
 
 # Create the virtual environment and install the package (editable) with its test extras.
 # The stamp depends on setup.cfg, so a second run reinstalls nothing unless it changed.
@@ -23,6 +23,10 @@ render: $(STAMP)
 bench: $(STAMP)
 	$(PY) -m pip install --quiet -e '.[test,bench]'
 	$(PY) benchmarks/bench.py
+
+# The contact sheet shown in the README.
+montage: $(STAMP)
+	$(PY) -m rtfgu.montage docs/homework_renders.png
 
 test: $(STAMP)
 	$(PY) -m pytest
