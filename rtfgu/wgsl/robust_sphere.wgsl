@@ -1,0 +1,69 @@
+// Robust ray-sphere intersection after Haines, Guenther and Akenine-Moeller, "Precision
+// Improvements for Ray/Sphere Intersection", Ray Tracing Gems, chapter 7 (2019); the Python
+// and numba versions are rtfgu/robust.py and rtfgu/kernels/robust.py.
+// With f = o - c, a = w . w and b' = -f . w:
+//   disc = a (r^2 - |f + (b'/a) w|^2)   the squared distance from the centre to the line,
+//                                       instead of b^2 - 4ac, which cancels for a far or
+//                                       small sphere in f32;
+//   t0 = c / q, t1 = q / a with q = b' + sign(b') sqrt(disc), never a difference of two
+//   nearly equal numbers.
+// Non-finite input is a miss (tested on the bits: WGSL may assume finite floats).
+
+fn sphere_robust_finite(v: vec4f) -> bool
+{
+    let e = bitcast<vec4u>(v) & vec4u(0x7f800000u);
+    return all(e != vec4u(0x7f800000u));
+}
+
+fn intersect_sphere_robust(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
+{
+    if (!(sphere_robust_finite(vec4f(r.origin, r.tmin)) && sphere_robust_finite(vec4f(r.direction, 0.0))
+          && sphere_robust_finite(vec4f(center, radius)))) {
+        return false;
+    }
+    let f = r.origin - center;
+    let a = dot(r.direction, r.direction);
+    let b = -dot(f, r.direction);
+    let c = dot(f, f) - radius * radius;
+    let l = f + (b / a) * r.direction;
+    let disc = a * (radius * radius - dot(l, l));
+    if (!(disc >= 0.0)) {
+        return false;
+    }
+    let root = sqrt(disc);
+    var q = b - root;
+    if (b >= 0.0) {
+        q = b + root;
+    }
+    var t0 = 0.0;
+    var t1 = 0.0;
+    if (q != 0.0) {
+        t0 = c / q;
+        t1 = q / a;
+    }
+    let near = min(t0, t1);
+    let far = max(t0, t1);
+    var t = near;
+    if (!(t >= r.tmin && t < r.tmax)) {
+        t = far;
+        if (!(t >= r.tmin && t < r.tmax)) {
+            return false;
+        }
+    }
+    (*hit).has_hit = true;
+    (*hit).dist = t;
+    (*hit).position = r.origin + r.direction * t;
+    (*hit).normal = normalize((*hit).position - center);
+    return true;
+}
+
+// A bound on the error of a computed point on the sphere (PBRT-v4 section 6.8.5):
+// gamma(5) |p - c| in the sphere's frame plus gamma(3) (|p - c| + |c|) for the translation.
+fn sphere_point_error(p: vec3f, center: vec3f) -> vec3f
+{
+    let u = 0.5 * 1.1920929e-7;  // f32 unit roundoff 2^-24
+    let g5 = 5.0 * u / (1.0 - 5.0 * u);
+    let g3 = 3.0 * u / (1.0 - 3.0 * u);
+    let q = abs(p - center);
+    return g5 * q + g3 * (q + abs(center));
+}
