@@ -1,0 +1,220 @@
+"""The autograder: full marks for the solution, zero for the stubs, planted bugs caught by
+the tests meant to catch them, untrusted code contained, and the output formats."""
+from __future__ import annotations
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from rtfgu.grading.assignments import ASSIGNMENTS, get_assignment
+from rtfgu.grading.generate import solution_files, student_files, write_files
+from rtfgu.grading.grader import REFERENCE_DIR, grade, neighbourhood_difference
+from rtfgu.grading.results import validate_gradescope
+
+ROOT = Path(__file__).resolve().parent.parent
+SUBMISSIONS = ROOT / "tests" / "submissions"
+PYTHON_IDS = [a.id for a in ASSIGNMENTS.values() if a.language == "python"]
+LIMIT = 5.0
+
+
+def _by_number(result):
+    return {t.number: t for t in result.tests}
+
+
+@pytest.fixture(scope="module")
+def solved(tmp_path_factory):
+    """aid -> (folder of solved files, result of grading them)."""
+    out = {}
+    for aid in PYTHON_IDS:
+        folder = tmp_path_factory.mktemp("solution_" + aid)
+        write_files(solution_files(aid), folder)
+        results = tmp_path_factory.mktemp("results_" + aid)
+        out[aid] = (folder, results, grade(aid, folder, results, time_limit=LIMIT))
+    return out
+
+
+@pytest.mark.parametrize("aid", PYTHON_IDS)
+def test_the_solution_scores_full_marks(solved, aid):
+    _, _, result = solved[aid]
+    failed = [(t.name, t.output) for t in result.tests if t.status != "passed"]
+    assert failed == []
+    assert result.score == result.max_score > 0
+    assert any(t.visibility == "hidden" for t in result.tests)
+    assert any(t.visibility == "visible" for t in result.tests)
+
+
+@pytest.mark.parametrize("aid", PYTHON_IDS)
+def test_fresh_stubs_score_zero_and_the_grader_finishes(tmp_path, aid):
+    write_files(student_files(aid), tmp_path / "stubs")
+    result = grade(aid, tmp_path / "stubs", tmp_path / "out", time_limit=LIMIT)
+    assert len(result.tests) == len(_by_number(result)) > 0
+    assert result.score == 0
+    assert all("not written yet" in t.output or "NotImplementedError" in t.output for t in result.tests)
+    validate_gradescope(json.loads((tmp_path / "out" / "results.json").read_text()))
+
+
+# submission, assignment, {test number: words the message must contain}; every other test keeps its points
+PLANTED = [
+    ("a03_discriminant_sign", "a03", {"3.2": "b^2 - 4ac", "3.3": "discriminant", "3.4": "discriminant",
+                                      "3.7": "pixels", "3.8": "pixels", "3.10": "discriminant"}),
+    ("a03_missing_tmin", "a03", {"3.4": "less than ray.tmin"}),
+    ("a03_unnormalised_normal", "a03", {"3.6": "unit vector"}),
+    ("a02_half_pixel_offset", "a02", {"2.1": "half-pixel offset", "2.5": "half-pixel offset"}),
+    ("a04_missing_cosine", "a04", {"4.2": "cosine term", "4.4": "pixels", "4.5": "should be"}),
+    ("a05_shadow_acne", "a05", {"5.2": "shadow acne", "5.6": "pixels"}),
+]
+
+
+@pytest.mark.parametrize("name,aid,caught", PLANTED, ids=[p[0] for p in PLANTED])
+def test_planted_bugs_lose_the_tests_that_should_catch_them_and_keep_the_rest(tmp_path, name, aid, caught):
+    result = grade(aid, SUBMISSIONS / name, tmp_path, time_limit=LIMIT)
+    for number, test in _by_number(result).items():
+        if number in caught:
+            assert test.score < test.max_score, (number, test.name)
+            assert caught[number] in test.output, (number, test.output)
+        else:
+            assert test.score == test.max_score, (number, test.name, test.output)
+    # every image test wrote its diff image
+    for test in result.tests:
+        if test.name.startswith("image:"):
+            assert Path(test.image).is_file()
+
+
+def test_an_endless_loop_is_stopped_at_the_time_limit_and_the_other_tests_run(tmp_path):
+    # Triangle.normal_at never returns: the normals test and the default-scene image call it.
+    result = grade("a03", SUBMISSIONS / "a03_infinite_loop", tmp_path, time_limit=2.0)
+    tests = _by_number(result)
+    for number in ("3.6", "3.8"):
+        assert tests[number].score == 0
+        assert "time limit of 2 s" in tests[number].output
+    for number in ("3.1", "3.2", "3.3", "3.4", "3.5", "3.7", "3.9", "3.10"):
+        assert tests[number].score == tests[number].max_score, tests[number].output
+
+
+def test_memory_printing_and_wrong_types_cost_only_their_tests(tmp_path):
+    result = grade("a03", SUBMISSIONS / "a03_misbehaving", tmp_path, time_limit=LIMIT, memory_mb=256)
+    tests = _by_number(result)
+    assert tests["3.1"].score == 0 and "MemoryError" in tests["3.1"].output          # 64 GB of bytearrays
+    assert tests["3.5"].score == 0 and "printed" in tests["3.5"].output              # megabytes of printing
+    assert tests["3.3"].score == 0 and "True or False" in tests["3.3"].output        # returns 0, not False
+    assert tests["3.6"].score < 1 and "should be a Float3" in tests["3.6"].output    # returns a tuple
+    assert tests["3.2"].score == tests["3.2"].max_score                              # the rest still counts
+
+
+def test_a_submission_cannot_change_the_reference_files(tmp_path, monkeypatch):
+    target = REFERENCE_DIR / "a03_intersections" / "observations.json"
+    before = target.read_bytes()
+    monkeypatch.setenv("RTFGU_ATTACK_PATH", str(target))
+    result = grade("a03", SUBMISSIONS / "a03_writes_references", tmp_path, time_limit=LIMIT)
+    assert target.read_bytes() == before
+    assert result.score == 0
+    assert any("reference files" in note for note in result.notes)
+
+
+def test_results_json_has_gradescopes_fields_and_prairielearn_is_written_from_the_same_model(solved, tmp_path):
+    folder, results, result = solved["a03_intersections"]
+    data = json.loads((results / "results.json").read_text())
+    validate_gradescope(data)
+    assert data["score"] == result.score
+    assert [t["number"] for t in data["tests"]] == [t.number for t in result.tests]
+    assert (results / "summary.txt").read_text().startswith("a03_intersections: 17 / 17 points")
+    assert len(list((results / "diffs").glob("*.png"))) == sum(t.name.startswith("image:") for t in result.tests)
+    with pytest.raises(ValueError, match="tests\\[0\\].status"):
+        bad = json.loads(json.dumps(data))
+        bad["tests"][0]["status"] = "ok"
+        validate_gradescope(bad)
+
+    result.write(tmp_path / "pl", "prairielearn")
+    pl = json.loads((tmp_path / "pl" / "results.json").read_text())
+    assert pl["gradable"] is True and pl["score"] == 1.0
+    assert [t["points"] for t in pl["tests"]] == [t.score for t in result.tests]
+    assert any("images" in t for t in pl["tests"])
+
+
+def test_visible_only_runs_the_visible_tests(solved, tmp_path):
+    folder, _, full = solved["a02_cameras"]
+    result = grade("a02", folder, None, visible_only=True, time_limit=LIMIT)
+    assert [t.number for t in result.tests] == [t.number for t in full.tests if t.visibility == "visible"]
+
+
+def test_submissions_as_a_zip_or_flat_files_are_found(solved, tmp_path):
+    folder, _, _ = solved["a03_intersections"]
+    archive = tmp_path / "upload.zip"
+    with zipfile.ZipFile(archive, "w") as z:
+        for path in folder.rglob("*.py"):
+            z.write(path, "my-work/" + path.name)   # flattened, in a folder of the student's choosing
+    assert grade("a03", archive, None, time_limit=LIMIT).score == 17
+    partial = tmp_path / "partial"
+    partial.mkdir()
+    shutil.copy(folder / "shapes" / "sphere.py", partial / "sphere.py")
+    result = grade("a03", partial, None, visible_only=True, time_limit=LIMIT)
+    assert any("plane.py was not in your submission" in note for note in result.notes)
+    assert _by_number(result)["3.2"].score == 2 and _by_number(result)["3.1"].score == 0
+
+
+def test_grade_all_writes_one_gradebook_row_and_one_results_folder_per_submission(solved, tmp_path):
+    klass = tmp_path / "class"
+    shutil.copytree(solved["a04_diffuse"][0], klass / "alice")
+    write_files(student_files("a04"), klass / "bob")
+    shutil.copytree(SUBMISSIONS / "a04_missing_cosine", klass / "carol")
+    from rtfgu.grading.gradebook import grade_all
+
+    path = grade_all("a04", klass, tmp_path / "out", processes=2, time_limit=LIMIT)
+    rows = list(csv.DictReader(open(path)))
+    assert [r["student"] for r in rows] == ["alice", "bob", "carol"]
+    scores = {r["student"]: float(r["score"]) for r in rows}
+    assert scores["alice"] == 10 and scores["bob"] == 0 and 0 < scores["carol"] < 10
+    for student in ("alice", "bob", "carol"):
+        validate_gradescope(json.loads((tmp_path / "out" / student / "results.json").read_text()))
+
+
+def test_the_gradescope_bundle_runs_on_a_submission_in_a_grader_like_layout(solved, tmp_path):
+    from rtfgu.grading.autograder import build_zip
+
+    bundle = build_zip(get_assignment("a05"), tmp_path / "autograder.zip")
+    with zipfile.ZipFile(bundle) as z:
+        names = z.namelist()
+        assert "setup.sh" in names and "run_autograder" in names
+        root = tmp_path / "autograder"
+        z.extractall(root / "source")
+    shutil.copytree(solved["a05_shadows_phong_mirror_refraction"][0], root / "submission")
+    env = dict(os.environ, AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable, AUTOGRADER_TIME_LIMIT="5")
+    subprocess.run(["bash", str(root / "source" / "run_autograder")], env=env, check=True, timeout=120,
+                   capture_output=True)
+    data = json.loads((root / "results" / "results.json").read_text())
+    validate_gradescope(data)
+    assert data["score"] == 16
+
+
+def test_the_image_tolerance_forgives_a_one_pixel_silhouette_shift_but_not_a_colour_change():
+    ref = np.zeros((16, 16, 3), np.uint8)
+    ref[4:12, 4:12] = 200
+    shifted = np.zeros_like(ref)
+    shifted[5:13, 4:12] = 200
+    assert neighbourhood_difference(shifted, ref).max() == 0
+    darker = ref.copy()
+    darker[4:12, 4:12] = 150
+    assert (neighbourhood_difference(darker, ref) > 8).sum() >= 36   # the inside of the square
+
+
+def test_cli_names_an_unknown_assignment(tmp_path):
+    run = subprocess.run([sys.executable, "-m", "rtfgu.grading", "grade", "a99", str(tmp_path)],
+                         capture_output=True, text=True, cwd=ROOT)
+    assert run.returncode == 2 and "unknown assignment 'a99'" in run.stderr
+
+
+def test_cli_solution_writes_the_solved_files(tmp_path):
+    run = subprocess.run([sys.executable, "-m", "rtfgu.grading", "solution", "a03", str(tmp_path)],
+                         capture_output=True, text=True, cwd=ROOT)
+    assert run.returncode == 0
+    assert sorted(p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*.py")) == [
+        "shapes/plane.py", "shapes/sphere.py", "shapes/triangle.py"]
+    assert "NotImplementedError" not in (tmp_path / "shapes" / "sphere.py").read_text()
