@@ -2,6 +2,7 @@
 // t' = ((p0 - o) . n) / (w . n), written with A = o . n, B = w . n, C = p0 . n.
 fn intersect_plane(r: Ray, hit: ptr<function, HitInfo>, position: vec3f, normal: vec3f) -> bool
 {
+    // ### BEGIN SOLUTION
     let A = dot(r.origin, normal);
     let B = dot(r.direction, normal);
     let C = dot(position, normal);
@@ -17,4 +18,5 @@ fn intersect_plane(r: Ray, hit: ptr<function, HitInfo>, position: vec3f, normal:
         return true;
     }
     return false;
+    // ### END SOLUTION
 }

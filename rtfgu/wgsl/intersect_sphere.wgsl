@@ -2,6 +2,7 @@
 // a t^2 + b t + c = 0 with a = w . w, b = 2 (o - c) . w, c = (o - c) . (o - c) - r^2.
 fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
 {
+    // ### BEGIN SOLUTION
     let temp = r.origin - center;
     let a = dot(r.direction, r.direction);
     let b = 2.0 * dot(temp, r.direction);
@@ -26,4 +27,5 @@ fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: 
     (*hit).position = r.origin + r.direction * t;
     (*hit).normal = normalize((*hit).position - center);
     return true;
+    // ### END SOLUTION
 }

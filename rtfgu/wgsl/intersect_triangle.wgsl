@@ -5,6 +5,7 @@
 // and n = e0 x e1 already computed, so every path uses the same rounded edges.
 fn intersect_triangle(r: Ray, hit: ptr<function, HitInfo>, v0: vec3f, e0: vec3f, e1: vec3f, n: vec3f) -> bool
 {
+    // ### BEGIN SOLUTION
     let denom = dot(r.direction, n);
     if (denom == 0.0) {
         return false;  // the ray is parallel to the triangle's plane
@@ -25,4 +26,5 @@ fn intersect_triangle(r: Ray, hit: ptr<function, HitInfo>, v0: vec3f, e0: vec3f,
         return true;
     }
     return false;
+    // ### END SOLUTION
 }
