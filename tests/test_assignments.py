@@ -90,3 +90,12 @@ def test_block_table_covers_the_lecture_layer_files():
               "shapes/sphere.py", "shapes/triangle.py", "lights.py", "shading.py"):
         assert f in files
         assert (PACKAGE_DIR / f).is_file()
+
+
+def test_wgsl_stubs_name_their_todo_and_keep_the_signature():
+    files = student_files("a06")
+    for name in ("intersect_plane", "intersect_sphere", "intersect_triangle"):
+        text = files["wgsl/%s.wgsl" % name]
+        assert "return TODO_a06_%s;" % name in text
+        assert "fn %s(r: Ray, hit: ptr<function, HitInfo>" % name in text
+        assert "BEGIN SOLUTION" not in text

@@ -218,3 +218,21 @@ def test_cli_solution_writes_the_solved_files(tmp_path):
     assert sorted(p.relative_to(tmp_path).as_posix() for p in tmp_path.rglob("*.py")) == [
         "shapes/plane.py", "shapes/sphere.py", "shapes/triangle.py"]
     assert "NotImplementedError" not in (tmp_path / "shapes" / "sphere.py").read_text()
+
+
+def test_the_wgsl_assignment_gives_the_solution_full_marks_and_the_stubs_zero(tmp_path):
+    # The adapter is probed in a child process: the grader forks, and a GPU driver must not
+    # be initialised in the process that forks.
+    probe = subprocess.run([sys.executable, "-c", "from rtfgu.wgsl.device import adapter_description as a; print(a())"],
+                           capture_output=True, text=True, cwd=ROOT)
+    if probe.returncode != 0:
+        pytest.skip("no WebGPU adapter for the WGSL assignment (wgpu, Mesa llvmpipe: libgl1-mesa-dri): "
+                    + probe.stderr.strip().splitlines()[-1])
+    write_files(solution_files("a06"), tmp_path / "solution")
+    solved = grade("a06", tmp_path / "solution", tmp_path / "out", time_limit=60)
+    assert [t.output for t in solved.tests if t.status != "passed"] == []
+    assert solved.score == solved.max_score > 0
+    write_files(student_files("a06"), tmp_path / "stubs")
+    stubs = grade("a06", tmp_path / "stubs", None, time_limit=60)
+    assert stubs.score == 0
+    assert all("TODO_a06_" in t.output for t in stubs.tests)

@@ -19,6 +19,7 @@ class Block:
     file: str       # relative to the rtfgu package, e.g. "shapes/sphere.py"
     qualname: str   # the function around the block, e.g. "Sphere.intersect_p"
     todo: str       # what to write, in a few lines (becomes the stub's comment)
+    stub: str = ""  # WGSL only: the stub's code (it names the TODO, so it does not compile)
 
 
 @dataclass(frozen=True)
@@ -219,8 +220,48 @@ A05 = Assignment(
             "default_refractive_sphere", "default_glossy_sphere"),
 )
 
+def _wgsl_block(name, todo):
+    return Block("wgsl/%s.wgsl" % name, name, todo,
+                 stub="return TODO_a06_%s;  // not written yet: replace this line with your code" % name)
+
+
+A06 = Assignment(
+    id="a06_wgsl_intersections",
+    title="The intersection functions again, in WGSL",
+    language="wgsl",
+    time_limit=60.0,
+    blocks=(
+        _wgsl_block("intersect_plane",
+                    "t' = ((position - r.origin) . normal) / (r.direction . normal); a ray parallel to the\n"
+                    "plane misses. On a hit with r.tmin <= t' < r.tmax set (*hit).has_hit = true,\n"
+                    "dist = t', position = r.origin + r.direction * t', normal = normalize(normal);\n"
+                    "return true. Otherwise return false and leave *hit alone."),
+        _wgsl_block("intersect_triangle",
+                    "a = v0 - r.origin, t' = (a . n) / (w . n), beta = ((a x w) . e1) / (w . n),\n"
+                    "gamma = -((a x w) . e0) / (w . n). Hit if t' in [tmin, tmax), beta >= 0, gamma >= 0\n"
+                    "and beta + gamma <= 1: fill *hit as for the plane (normal = normalize(n))."),
+        _wgsl_block("intersect_sphere",
+                    "a = w . w, b = 2 (o - c) . w, c = (o - c) . (o - c) - r^2, disc = b^2 - 4ac.\n"
+                    "No hit if disc < 0; else the first of (-b - sqrt(disc)) / 2a and (-b + sqrt(disc)) / 2a\n"
+                    "in [tmin, tmax): fill *hit, normal = normalize(position - center)."),
+    ),
+    task=("Write the three intersection functions of the WGSL ray tracer (`rtfgu/wgsl/`), with\n"
+          "the slide's signatures: they take the ray by value and a pointer to the HitInfo, and on a\n"
+          "hit fill `has_hit`, `dist`, `position` and `normal` and return true. `intersect_scene`\n"
+          "(given) calls them and shrinks the ray's tmax. The triangle arrives as v0 and the\n"
+          "precomputed e0, e1 and n of `rtfgu.layout`. The grader runs your functions on the GPU\n"
+          "adapter through wgpu (on a machine without a GPU, Mesa's llvmpipe), in float32."),
+    formulas=A03.formulas,
+    slides=("02562: Ray-plane intersection, Ray-triangle intersection (two slides), Ray-sphere intersection",
+            "02562: The signature of an intersection function and that of a shader"),
+    images=("default_flat_colors",),
+    extra=("Until a function is written its stub names an undefined `TODO_a06_...`, so the shader does not\n"
+           "compile; the test of that function says so. Render with your WGSL: `python -m rtfgu render\n"
+           "default_flat_colors --backend wgpu` from a folder where your copy of the package comes first."),
+)
+
 PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05)
-ASSIGNMENTS = {a.id: a for a in PYTHON_ASSIGNMENTS}
+ASSIGNMENTS = {a.id: a for a in PYTHON_ASSIGNMENTS + (A06,)}
 
 
 def register(assignment: Assignment) -> None:

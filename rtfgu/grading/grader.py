@@ -42,7 +42,8 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
         overlay, _ = build_overlay(a, None, Path(tmp))
         for check in checks_for(a.id):
             child = run_child(overlay, Path(tmp) / "scratch" / check.slug, check.observe,
-                              time_limit=time_limit, memory_mb=0, extra_modules=getattr(check, "modules", ()))
+                              time_limit=time_limit, memory_mb=0, extra_modules=getattr(check, "modules", ()),
+                              fresh=(a.id, check.slug) if check.fresh else None)
             if child.status != "ok" or "error" in child.data or any("error" in c for c in child.data.get("cases", [])):
                 raise RuntimeError("the solution fails %s (%s): %s %s" % (check.name, child.status, child.detail,
                                                                           json.dumps(child.data)[:2000]))
@@ -184,8 +185,9 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
             if visible_only and check.visibility != "visible":
                 continue
             child = run_child(overlay, Path(tmp) / "scratch" / check.slug, check.observe, time_limit=time_limit,
-                              memory_mb=memory_mb, output_limit=output_limit,
-                              extra_modules=getattr(check, "modules", ()))
+                              memory_mb=memory_mb if check.memory_mb is None else check.memory_mb,
+                              output_limit=output_limit, extra_modules=getattr(check, "modules", ()),
+                              fresh=(a.id, check.slug) if check.fresh else None)
             diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
             image_path = None
             if child.status != "ok":

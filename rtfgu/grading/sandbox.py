@@ -115,8 +115,45 @@ def _vm_bytes() -> int:
     return 0
 
 
+_BOOT = ("import sys; sys.path.insert(0, sys.argv[1]); "
+         "from rtfgu.grading.sandbox import answer_fresh; answer_fresh(*sys.argv[2:])")
+
+
+def _observe_and_answer(observe, overlay, write_fd, extra_modules, describe_exception) -> None:
+    sys.path.insert(0, str(overlay))
+    import importlib
+
+    importlib.invalidate_caches()
+    try:
+        rt = importlib.import_module("rtfgu")
+        if not Path(rt.__file__).resolve().is_relative_to(Path(overlay).resolve()):
+            raise RuntimeError("the grader imported rtfgu from %s, not from the overlay" % rt.__file__)
+        for name in SUBMODULES + tuple(extra_modules):
+            importlib.import_module("rtfgu." + name)
+        data = observe(rt)
+    except BaseException as error:  # the student's import or code failed as a whole
+        data = {"error": describe_exception(error)}
+    payload = json.dumps(data).encode()
+    view = memoryview(payload)
+    while view:
+        n = os.write(write_fd, view[:1 << 16])
+        view = view[n:]
+
+
+def answer_fresh(assignment_id: str, slug: str, write_fd: str, *extra_modules) -> None:
+    """The entry of a fresh child (``Check.fresh``): find the check and answer as _child does."""
+    from .checks import checks_for
+    from .checks.child import describe_exception
+
+    check = next(c for c in checks_for(assignment_id) if c.slug == slug)
+    _observe_and_answer(check.observe, Path(sys.path[0]), int(write_fd), extra_modules, describe_exception)
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(0)
+
+
 def _child(write_fd: int, overlay: Path, scratch: Path, observe, time_limit: float, memory_mb: int,
-           output_limit: int, extra_modules) -> None:
+           output_limit: int, extra_modules, fresh=None) -> None:
     """In the forked child: limit, isolate, import the overlay package, observe, answer."""
     status = 0
     from .checks.child import describe_exception
@@ -140,26 +177,14 @@ def _child(write_fd: int, overlay: Path, scratch: Path, observe, time_limit: flo
             limit = _vm_bytes() + memory_mb * 1024 * 1024
             resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
         os.environ.update(HOME=str(scratch), TMPDIR=str(scratch), RTFGU_MEMORY_MB=str(memory_mb))
+        if fresh is not None:
+            # A newly started interpreter: the parent's GPU driver state must not be inherited.
+            os.set_inheritable(write_fd, True)
+            os.execv(sys.executable, [sys.executable, "-c", _BOOT, str(overlay), fresh[0], fresh[1],
+                                      str(write_fd)] + list(extra_modules))
         for name in [m for m in sys.modules if m == "rtfgu" or m.startswith("rtfgu.")]:
             del sys.modules[name]
-        sys.path.insert(0, str(overlay))
-        import importlib
-
-        importlib.invalidate_caches()
-        try:
-            rt = importlib.import_module("rtfgu")
-            if not Path(rt.__file__).resolve().is_relative_to(Path(overlay).resolve()):
-                raise RuntimeError("the grader imported rtfgu from %s, not from the overlay" % rt.__file__)
-            for name in SUBMODULES + tuple(extra_modules):
-                importlib.import_module("rtfgu." + name)
-            data = observe(rt)
-        except BaseException as error:  # the student's import or code failed as a whole
-            data = {"error": describe_exception(error)}
-        payload = json.dumps(data).encode()
-        view = memoryview(payload)
-        while view:
-            n = os.write(write_fd, view[:1 << 16])
-            view = view[n:]
+        _observe_and_answer(observe, overlay, write_fd, extra_modules, describe_exception)
     except BaseException:
         status = 3
     finally:
@@ -172,7 +197,9 @@ def _child(write_fd: int, overlay: Path, scratch: Path, observe, time_limit: flo
 
 
 def run_child(overlay: Path, scratch: Path, observe, *, time_limit: float = 10.0, memory_mb: int = 1024,
-              output_limit: int = 1024 * 1024, extra_modules=()) -> ChildResult:
+              output_limit: int = 1024 * 1024, extra_modules=(), fresh=None) -> ChildResult:
+    """Run ``observe`` in a sandboxed child; ``fresh=(assignment id, check slug)`` starts a new
+    interpreter for it instead of running it in the forked copy of the grader."""
     scratch = Path(scratch)
     scratch.mkdir(parents=True, exist_ok=True)
     sys.stdout.flush()
@@ -182,7 +209,7 @@ def run_child(overlay: Path, scratch: Path, observe, *, time_limit: float = 10.0
     pid = os.fork()
     if pid == 0:  # pragma: no cover (the child)
         os.close(read_fd)
-        _child(write_fd, overlay, scratch, observe, time_limit, memory_mb, output_limit, extra_modules)
+        _child(write_fd, overlay, scratch, observe, time_limit, memory_mb, output_limit, extra_modules, fresh)
     os.close(write_fd)
     chunks, size, status, detail = [], 0, None, ""
     deadline = start + time_limit

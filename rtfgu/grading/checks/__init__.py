@@ -35,6 +35,8 @@ class Check:
     number: str = ""
     slug: str = ""
     tags: tuple = field(default_factory=tuple)
+    fresh: bool = False             # run in a newly started interpreter (GPU drivers do not survive fork)
+    memory_mb: int | None = None    # overrides the grader's limit (0: none; llvmpipe reserves much address space)
 
 
 def register(assignment_id: str, checks) -> None:
@@ -136,7 +138,8 @@ def judge_cases(check: Check, got, want):
     return right / len(cases_want), lines
 
 
-def image_check(name: str, weight: float, build, size=(48, 48), visibility: str = "visible") -> Check:
+def image_check(name: str, weight: float, build, size=(48, 48), visibility: str = "visible", render=None,
+                **options) -> Check:
     """An image test: ``build(rt)`` returns the scene (or a registered scene name), rendered by
     the lecture layer's pixel loop with the student's code at ``size``."""
     width, height = size
@@ -145,6 +148,8 @@ def image_check(name: str, weight: float, build, size=(48, 48), visibility: str 
         from .child import image
 
         scene = build(rt) if callable(build) else rt.scenes.get_scene(build)()
+        if render is not None:
+            return image(render(rt, scene, width, height))
         return image(rt.renderer.render_reference(scene, width, height))
 
-    return Check(name, weight, observe, visibility=visibility, kind="image", size=size)
+    return Check(name, weight, observe, visibility=visibility, kind="image", size=size, **options)

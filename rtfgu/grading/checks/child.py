@@ -41,6 +41,8 @@ def boolean(value, what: str) -> bool:
 
 def describe_exception(error: BaseException) -> str:
     """The exception in words, with the place in the student's files where it happened."""
+    if isinstance(error, StudentError):
+        return str(error)
     if isinstance(error, MemoryError):
         return "MemoryError: your code ran out of memory (the limit is %s MB per test)" % (
             os.environ.get("RTFGU_MEMORY_MB", "?"))
