@@ -157,3 +157,25 @@ def test_float32_runs_in_float32():
     assert np.array_equal(image32, expected.astype(np.float64))
     assert not np.array_equal(image32, image64)
     assert np.abs(image32 - image64).max() < 1e-6
+
+
+def _benchmark_scene(name):
+    """A scene of benchmarks/scenes.py (a script folder, not a package)."""
+    import importlib.util
+    from pathlib import Path
+    path = Path(__file__).resolve().parent.parent / "benchmarks" / "scenes.py"
+    spec = importlib.util.spec_from_file_location("rtfgu_benchmark_scenes", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return getattr(module, name)()
+
+
+def test_tile_culling_loses_no_sphere():
+    """64 overlapping spheres: each tile of primary rays tests only the spheres in its cone
+    (rtfgu.kernels.culling), and the image is still the lecture layer's, bit for bit."""
+    scene = _benchmark_scene("random_spheres_64")
+    width = height = 48
+    ref = render(scene, width, height, backend="reference")
+    image = render(scene, width, height, backend="numba", precision="float64")
+    assert len({tuple(c) for c in to_8bit(ref).reshape(-1, 3)}) > 20  # many spheres show
+    assert np.array_equal(image, ref)

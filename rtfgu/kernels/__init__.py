@@ -16,6 +16,7 @@ import numpy as np
 from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_scene
 from ..material import GLOSSY, MIRROR, TRANSPARENT
 from ..shading import MAX_DEPTH
+from .culling import cone_table
 from .intersect import sphere_eye_terms
 from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
 
@@ -51,17 +52,21 @@ def kernel_arguments(flat, width: int, height: int):
     triangles, triangle_index = present(flat.triangles, flat.triangle_index)
     spheres, sphere_index = present(flat.spheres, flat.sphere_index)
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
-    sphere_eye = None
+    sphere_eye = cones = None
+    camera64 = camera.astype(np.float64)
     if spheres is not None and flat.camera_kind == PINHOLE:
-        # Every primary ray starts at the eye: temp and c per sphere once per frame.
+        # Every primary ray starts at the eye: temp and c per sphere once per frame, and a
+        # cone per sphere for the per-tile culling.
         sphere_eye = np.empty((len(spheres), 4), dtype=flat.dtype)
         sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), spheres, sphere_eye)
+        cones = cone_table(camera64, spheres)
     lights = flat.lights if len(flat.lights) else None
     continues = any(int(s) in (MIRROR, TRANSPARENT, GLOSSY) for s in flat.shaders)
     bounces = MAX_DEPTH if continues else None
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     return (width, height, flat.camera_kind, camera, planes, plane_index, triangles,
-            triangle_index, spheres, sphere_index, sphere_eye, flat.materials, flat.shaders,
+            triangle_index, spheres, sphere_index, sphere_eye, cones, camera64, flat.materials,
+            flat.shaders,
             lights, flat.background, flat.shadows, flat.show_ray_direction, bounces,
             _coprime_stride(tiles)), tiles
 

@@ -15,7 +15,7 @@ from ..layout import (ORTHO_BOTTOM, ORTHO_HITHER, ORTHO_LEFT, ORTHO_RIGHT, ORTHO
 from .float3 import add, lit, load3, normalize, scale
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def gen_ray(camera_kind, camera, sx, sy):
     """The ray through (sx, sy) of the image plane [-1, 1]^2; ``camera`` is the layout's
     camera block read as one flat row."""

@@ -5,6 +5,12 @@ float64 rounds exactly as the lecture layer does. ``lit(value, like)`` is a cons
 float type of ``like``: in numba a Python float literal is float64 and an integer is int64,
 and either one would promote a float32 expression to float64. Writing every constant as
 ``lit(0.5, x)`` keeps a float32 kernel in float32 from end to end.
+
+Every kernel is compiled with ``error_model="numpy"``: a float division by zero gives inf
+or NaN (as in C and WGSL) instead of raising, and a function that cannot raise is one LLVM
+inlines into its caller, which made the intersection loop several times faster. The lecture
+layer guards every division a valid scene can reach, and ``render`` refuses an image with a
+non-finite pixel.
 """
 from __future__ import annotations
 
@@ -31,63 +37,70 @@ def _lit_overload(value, like):
     return None
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def add(a, b):
     return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sub(a, b):
     return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def neg(a):
     return (-a[0], -a[1], -a[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def mul(a, b):
     """Componentwise product (the slide's Float3 * Float3)."""
     return (a[0] * b[0], a[1] * b[1], a[2] * b[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def scale(a, f):
     """Float3 * scalar."""
     return (a[0] * f, a[1] * f, a[2] * f)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def div(a, f):
     """Float3 / scalar through the reciprocal, as the slide's operator/: inv = 1.0f / x."""
     inv = lit(1.0, f) / f
     return (a[0] * inv, a[1] * inv, a[2] * inv)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def dot(a, b):
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def cross(a, b):
     return ((a[1] * b[2]) - (a[2] * b[1]),
             (a[2] * b[0]) - (a[0] * b[2]),
             (a[0] * b[1]) - (a[1] * b[0]))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def length(a):
     return math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def normalize(a):
     return div(a, length(a))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def load3(row, offset):
     """Three floats of a layout row as a Float3."""
     return (row[offset], row[offset + 1], row[offset + 2])
+
+
+@njit(cache=True, error_model="numpy")
+def row3(table, i, offset):
+    """Three floats of row i of a layout table, indexed directly: a row view (table[i])
+    in a hot loop costs numba an array struct per shape."""
+    return (table[i, offset], table[i, offset + 1], table[i, offset + 2])

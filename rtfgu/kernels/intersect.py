@@ -12,11 +12,12 @@ import math
 
 from numba import njit
 
-from ..layout import PLANE, SPHERE, TRIANGLE, PLANE_NORMAL, PLANE_POINT, SPHERE_RADIUS, TRI_E0, TRI_E1, TRI_N, TRI_V0
-from .float3 import cross, dot, lit, load3, sub
+from ..layout import (PLANE, PLANE_NORMAL, PLANE_POINT, SPHERE, SPHERE_CENTER, SPHERE_RADIUS,
+                      TRI_E0, TRI_E1, TRI_N, TRI_V0, TRIANGLE)
+from .float3 import cross, dot, lit, row3, sub
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def intersect_plane(origin, direction, tmin, tmax, point, normal):
     # t = ((a - o) . n) / (d . n), written as on the slide with A, B, C.
     A = dot(origin, normal)
@@ -30,7 +31,7 @@ def intersect_plane(origin, direction, tmin, tmax, point, normal):
     return lit(math.inf, B)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def intersect_triangle(origin, direction, tmin, tmax, v0, e0, e1, n):
     # 02562 barycentric test: beta, gamma from ((v0 - o) x w) . e / (w . n).
     denom = dot(direction, n)
@@ -49,7 +50,7 @@ def intersect_triangle(origin, direction, tmin, tmax, v0, e0, e1, n):
     return lit(math.inf, denom)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sphere_roots(temp, c, direction, tmin, tmax):
     """The sphere test from temp = o - center and c = temp . temp - r^2: the part of
     ``intersect_sphere`` that depends on the direction. Rays that share an origin (a pinhole
@@ -71,7 +72,7 @@ def sphere_roots(temp, c, direction, tmin, tmax):
     return lit(math.inf, a)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def intersect_sphere(origin, direction, tmin, tmax, center, radius):
     # a t^2 + b t + c = 0 with a = d.d, b = 2 (o - c).d, c = (o - c).(o - c) - r^2
     temp = sub(origin, center)
@@ -79,11 +80,11 @@ def intersect_sphere(origin, direction, tmin, tmax, center, radius):
     return sphere_roots(temp, c, direction, tmin, tmax)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def sphere_eye_terms(eye, spheres, out):
     """temp = eye - center and c = temp . temp - r^2 for every sphere, once per frame."""
     for i in range(spheres.shape[0]):
-        temp = sub(eye, load3(spheres[i], 0))
+        temp = sub(eye, row3(spheres, i, SPHERE_CENTER))
         radius = spheres[i, SPHERE_RADIUS]
         out[i, 0] = temp[0]
         out[i, 1] = temp[1]
@@ -91,7 +92,7 @@ def sphere_eye_terms(eye, spheres, out):
         out[i, 3] = dot(temp, temp) - radius * radius
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangles,
                     triangle_index, spheres, sphere_index, sphere_eye, candidates, n_candidates):
     """``intersect_scene``: the nearest hit over all shapes, as (t, scene index, shape kind,
@@ -104,8 +105,8 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
     # A hit replaces the nearest so far if nearer, or as near and earlier in Scene.shapes.
     if planes is not None:
         for i in range(planes.shape[0]):
-            t = intersect_plane(origin, direction, tmin, tmax, load3(planes[i], PLANE_POINT),
-                                load3(planes[i], PLANE_NORMAL))
+            t = intersect_plane(origin, direction, tmin, tmax, row3(planes, i, PLANE_POINT),
+                                row3(planes, i, PLANE_NORMAL))
             idx = plane_index[i]
             if t < tmax or (t == tmax and idx < best):
                 tmax = t
@@ -114,9 +115,9 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
                 row = i
     if triangles is not None:
         for i in range(triangles.shape[0]):
-            tri = triangles[i]
-            t = intersect_triangle(origin, direction, tmin, tmax, load3(tri, TRI_V0),
-                                   load3(tri, TRI_E0), load3(tri, TRI_E1), load3(tri, TRI_N))
+            t = intersect_triangle(origin, direction, tmin, tmax, row3(triangles, i, TRI_V0),
+                                   row3(triangles, i, TRI_E0), row3(triangles, i, TRI_E1),
+                                   row3(triangles, i, TRI_N))
             idx = triangle_index[i]
             if t < tmax or (t == tmax and idx < best):
                 tmax = t
@@ -128,10 +129,11 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
         for k in range(n):
             i = k if candidates is None else candidates[k]
             if sphere_eye is None:
-                t = intersect_sphere(origin, direction, tmin, tmax, load3(spheres[i], 0),
+                t = intersect_sphere(origin, direction, tmin, tmax,
+                                     row3(spheres, i, SPHERE_CENTER),
                                      spheres[i, SPHERE_RADIUS])
             else:
-                t = sphere_roots(load3(sphere_eye[i], 0), sphere_eye[i, 3], direction, tmin, tmax)
+                t = sphere_roots(row3(sphere_eye, i, 0), sphere_eye[i, 3], direction, tmin, tmax)
             idx = sphere_index[i]
             if t < tmax or (t == tmax and idx < best):
                 tmax = t
@@ -141,23 +143,23 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
     return tmax, best, kind, row
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def in_shadow(position, w_i, tmin, tmax, planes, triangles, spheres):
     """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""
     if planes is not None:
         for i in range(planes.shape[0]):
-            if intersect_plane(position, w_i, tmin, tmax, load3(planes[i], PLANE_POINT),
-                               load3(planes[i], PLANE_NORMAL)) < tmax:
+            if intersect_plane(position, w_i, tmin, tmax, row3(planes, i, PLANE_POINT),
+                               row3(planes, i, PLANE_NORMAL)) < tmax:
                 return True
     if triangles is not None:
         for i in range(triangles.shape[0]):
-            tri = triangles[i]
-            if intersect_triangle(position, w_i, tmin, tmax, load3(tri, TRI_V0), load3(tri, TRI_E0),
-                                  load3(tri, TRI_E1), load3(tri, TRI_N)) < tmax:
+            if intersect_triangle(position, w_i, tmin, tmax, row3(triangles, i, TRI_V0),
+                                  row3(triangles, i, TRI_E0), row3(triangles, i, TRI_E1),
+                                  row3(triangles, i, TRI_N)) < tmax:
                 return True
     if spheres is not None:
         for i in range(spheres.shape[0]):
-            if intersect_sphere(position, w_i, tmin, tmax, load3(spheres[i], 0),
+            if intersect_sphere(position, w_i, tmin, tmax, row3(spheres, i, SPHERE_CENTER),
                                 spheres[i, SPHERE_RADIUS]) < tmax:
                 return True
     return False

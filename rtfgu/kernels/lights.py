@@ -7,15 +7,15 @@ import math
 from numba import njit
 
 from ..layout import LIGHT_INTENSITY, LIGHT_POSITION
-from .float3 import div, load3, sub
+from .float3 import div, row3, sub
 
 
-@njit(cache=True)
-def sample_point_light(light, pos):
-    """The slide's Light struct (L_i, w_i, dist) for the layout row ``light`` seen from pos:
+@njit(cache=True, error_model="numpy")
+def sample_point_light(lights, j, pos):
+    """The slide's Light struct (L_i, w_i, dist) for light j of the layout seen from pos:
     L_i = I / ||p - x||^2."""
-    to_light = sub(load3(light, LIGHT_POSITION), pos)
+    to_light = sub(row3(lights, j, LIGHT_POSITION), pos)
     dist_squared = to_light[0] * to_light[0] + to_light[1] * to_light[1] + to_light[2] * to_light[2]
     dist = math.sqrt(dist_squared)
-    L_i = div(load3(light, LIGHT_INTENSITY), dist_squared)
+    L_i = div(row3(lights, j, LIGHT_INTENSITY), dist_squared)
     return L_i, div(to_light, dist), dist

@@ -13,10 +13,11 @@ import math
 import numpy as np
 from numba import njit, prange
 
-from ..layout import PINHOLE, PLANE, PLANE_NORMAL, SPHERE, SPHERE_CENTER, TRI_N, TRIANGLE
+from ..layout import PLANE, PLANE_NORMAL, SPHERE, SPHERE_CENTER, TRI_N, TRIANGLE
 from ..shading import SPAWN_EPSILON
 from .camera import gen_ray
-from .float3 import add, lit, load3, normalize, scale, sub
+from .float3 import add, lit, load3, normalize, row3, scale, sub
+from .culling import tile_candidates
 from .intersect import intersect_scene
 from .shaders import shade
 
@@ -29,23 +30,23 @@ SHADOW = 1
 SECONDARY = 2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def shape_normal(kind, row, position, planes, triangles, spheres):
     """normal_at(position) of the shape hit: the unit normal of a plane or triangle, and
     normalize(position - center) on a sphere."""
     if planes is not None:
         if kind == PLANE:
-            return normalize(load3(planes[row], PLANE_NORMAL))
+            return normalize(row3(planes, row, PLANE_NORMAL))
     if triangles is not None:
         if kind == TRIANGLE:
-            return normalize(load3(triangles[row], TRI_N))
+            return normalize(row3(triangles, row, TRI_N))
     if spheres is not None:
         if kind == SPHERE:
-            return normalize(sub(position, load3(spheres[row], SPHERE_CENTER)))
+            return normalize(sub(position, row3(spheres, row, SPHERE_CENTER)))
     return position  # not reached: a hit has one of the kinds above
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangle_index,
           spheres, sphere_index, sphere_eye, candidates, n_candidates, materials, shaders,
           lights, background, shadows, bounces):
@@ -88,11 +89,16 @@ def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangl
     return result, n_shadow, n_secondary
 
 
-@njit(parallel=True, cache=True)
+@njit(parallel=True, cache=True, error_model="numpy")
 def render_kernel(width, height, camera_kind, camera, planes, plane_index, triangles,
-                  triangle_index, spheres, sphere_index, sphere_eye, materials, shaders, lights,
-                  background, shadows, show_ray_direction, bounces, tile_stride, image, counts):
-    """Fill ``image`` (height, width, 3), row 0 at the top, and ``counts`` (tiles, 3)."""
+                  triangle_index, spheres, sphere_index, sphere_eye, cones, camera64, materials,
+                  shaders, lights, background, shadows, show_ray_direction, bounces, tile_stride,
+                  image, counts):
+    """Fill ``image`` (height, width, 3), row 0 at the top, and ``counts`` (tiles, 3).
+
+    For a pinhole camera with spheres, ``sphere_eye`` holds each sphere's temp and c for rays
+    from the eye and ``cones`` (culling.sphere_cones, with the float64 ``camera64``) lets each
+    tile test only the spheres its primary rays can hit; both are None otherwise."""
     tiles_x = (width + TILE - 1) // TILE
     tiles_y = (height + TILE - 1) // TILE
     n_tiles = tiles_x * tiles_y
@@ -105,8 +111,14 @@ def render_kernel(width, height, camera_kind, camera, planes, plane_index, trian
         n_shadow = 0
         n_secondary = 0
         n_primary = 0
-        for iy in range(y0, min(y0 + TILE, height)):
-            for ix in range(x0, min(x0 + TILE, width)):
+        x1 = min(x0 + TILE, width)
+        y1 = min(y0 + TILE, height)
+        if cones is not None:
+            candidates = np.empty(cones.shape[0], dtype=np.int64)
+            n_candidates = tile_candidates(camera64, cones, x0, x1, y0, y1, width, height,
+                                           candidates)
+        for iy in range(y0, y1):
+            for ix in range(x0, x1):
                 one = lit(1, camera[0])
                 sx = lit(2, one) * (lit(ix, one) + lit(0.5, one)) / lit(width, one) - one
                 sy = lit(2, one) * (lit(iy, one) + lit(0.5, one)) / lit(height, one) - one
@@ -115,11 +127,11 @@ def render_kernel(width, height, camera_kind, camera, planes, plane_index, trian
                 if show_ray_direction:
                     half = lit(0.5, one)
                     color = add(scale(direction, half), (half, half, half))
-                elif camera_kind == PINHOLE:
+                elif cones is not None:
                     color, shadow_rays, secondary_rays = trace(
                         origin, direction, tmin, tmax, planes, plane_index, triangles,
-                        triangle_index, spheres, sphere_index, sphere_eye, None, 0,
-                        materials, shaders, lights, background, shadows, bounces)
+                        triangle_index, spheres, sphere_index, sphere_eye, candidates,
+                        n_candidates, materials, shaders, lights, background, shadows, bounces)
                     n_shadow += shadow_rays
                     n_secondary += secondary_rays
                 else:

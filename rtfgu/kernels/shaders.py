@@ -20,7 +20,7 @@ from .intersect import in_shadow
 from .lights import sample_point_light
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres):
     """L_e + sum over lights of rho_d / pi * L_i * max(n . w_i, 0), unless shadowed, + L_a."""
     color = load3(mat, MAT_COLOR)
@@ -32,7 +32,7 @@ def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, s
         zero = lit(0, r_d[0])
         eps = lit(SPAWN_EPSILON, r_d[0])
         for j in range(lights.shape[0]):
-            L_i, w_i, dist = sample_point_light(lights[j], position)
+            L_i, w_i, dist = sample_point_light(lights, j, position)
             cos_theta = dot(normal, w_i)
             if zero > cos_theta:  # Python's max(cos_theta, 0.0)
                 cos_theta = zero
@@ -46,7 +46,7 @@ def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, s
     return result, n_shadow
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres):
     """Lambertian plus the normalised Phong lobe (02562 worksheet 3):
     (rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s) L_i (n . w_i)."""
@@ -64,7 +64,7 @@ def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, sphere
         specular = load3(mat, MAT_SPECULAR)
         shininess = mat[MAT_SHININESS]
         for j in range(lights.shape[0]):
-            L_i, w_i, dist = sample_point_light(lights[j], position)
+            L_i, w_i, dist = sample_point_light(lights, j, position)
             cos_theta = dot(normal, w_i)
             if zero > cos_theta:
                 cos_theta = zero
@@ -83,13 +83,13 @@ def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, sphere
     return result, n_shadow
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def mirror(r_d, normal):
     """Perfect reflection: the path continues along d - 2 (d . n) n."""
     return sub(r_d, scale(normal, lit(2.0, r_d[0]) * dot(r_d, normal)))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def transparent(r_d, normal, ior):
     """Snell's law with eta = n1 / n2; d . n < 0 enters (eta = 1 / ior), otherwise the ray
     leaves (eta = ior, normal flipped); total internal reflection mirrors the ray."""
@@ -110,7 +110,7 @@ def transparent(r_d, normal, ior):
     return add(scale(d, eta), scale(n, eta * cos_i - cos_t))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def shade(shader, mat, r_d, position, normal, lights, shadows, bounces, planes, triangles,
           spheres):
     """The slide's ``switch (*hit).shader``; the default case is the base colour."""
