@@ -54,10 +54,11 @@ def kernel_arguments(flat, width: int, height: int):
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     sphere_eye = cones = None
     camera64 = camera.astype(np.float64)
+    if spheres is not None:
+        sphere_eye = np.zeros((len(spheres), 4), dtype=flat.dtype)  # one type for both cameras
     if spheres is not None and flat.camera_kind == PINHOLE:
         # Every primary ray starts at the eye: temp and c per sphere once per frame, and a
         # cone per sphere for the per-tile culling.
-        sphere_eye = np.empty((len(spheres), 4), dtype=flat.dtype)
         sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), spheres, sphere_eye)
         cones = cone_table(camera64, spheres)
     lights = flat.lights if len(flat.lights) else None

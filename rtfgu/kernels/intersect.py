@@ -92,13 +92,15 @@ def sphere_eye_terms(eye, spheres, out):
         out[i, 3] = dot(temp, temp) - radius * radius
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangles,
-                    triangle_index, spheres, sphere_index, sphere_eye, candidates, n_candidates):
+                    triangle_index, spheres, sphere_index, sphere_eye, candidates, n_candidates,
+                    from_eye):
     """``intersect_scene``: the nearest hit over all shapes, as (t, scene index, shape kind,
-    row in that kind's array), scene index -1 on a miss. A kind whose array is None is not in the scene and compiles
-    to nothing. ``sphere_eye`` (None, or temp and c per sphere) is given for rays from the
-    eye; ``candidates[:n_candidates]`` (None for all) are the sphere rows that can be hit."""
+    row in that kind's array), scene index -1 on a miss. A kind whose array is None is not in
+    the scene and compiles to nothing. For a ray from the eye (``from_eye``) the spheres
+    tested are the rows ``candidates[:n_candidates]``, with temp and c from ``sphere_eye``;
+    otherwise every sphere, with the lecture's intersect_sphere."""
     best = -1
     kind = -1
     row = -1
@@ -125,15 +127,15 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
                 kind = TRIANGLE
                 row = i
     if spheres is not None:
-        n = spheres.shape[0] if candidates is None else n_candidates
+        n = n_candidates if from_eye else spheres.shape[0]
         for k in range(n):
-            i = k if candidates is None else candidates[k]
-            if sphere_eye is None:
-                t = intersect_sphere(origin, direction, tmin, tmax,
-                                     row3(spheres, i, SPHERE_CENTER),
-                                     spheres[i, SPHERE_RADIUS])
-            else:
+            if from_eye:
+                i = candidates[k]
                 t = sphere_roots(row3(sphere_eye, i, 0), sphere_eye[i, 3], direction, tmin, tmax)
+            else:
+                i = k
+                t = intersect_sphere(origin, direction, tmin, tmax,
+                                     row3(spheres, i, SPHERE_CENTER), spheres[i, SPHERE_RADIUS])
             idx = sphere_index[i]
             if t < tmax or (t == tmax and idx < best):
                 tmax = t

@@ -14,6 +14,7 @@ import numpy as np
 from numba import njit, prange
 
 from ..layout import PLANE, PLANE_NORMAL, SPHERE, SPHERE_CENTER, TRI_N, TRIANGLE
+from ..material import BASE_COLOR
 from ..shading import SPAWN_EPSILON
 from .camera import gen_ray
 from .float3 import add, lit, load3, normalize, row3, scale, sub
@@ -30,7 +31,7 @@ SHADOW = 1
 SECONDARY = 2
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def shape_normal(kind, row, position, planes, triangles, spheres):
     """normal_at(position) of the shape hit: the unit normal of a plane or triangle, and
     normalize(position - center) on a sphere."""
@@ -46,10 +47,10 @@ def shape_normal(kind, row, position, planes, triangles, spheres):
     return position  # not reached: a hit has one of the kinds above
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangle_index,
-          spheres, sphere_index, sphere_eye, candidates, n_candidates, materials, shaders,
-          lights, background, shadows, bounces):
+          spheres, sphere_index, sphere_eye, candidates, n_candidates, from_eye, materials,
+          shaders, lights, background, shadows, bounces):
     """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
     path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
     Returns (radiance, shadow rays, secondary rays)."""
@@ -59,23 +60,24 @@ def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangl
     n_secondary = 0
     depth = 1 if bounces is None else bounces
     for i in range(depth):
-        if i == 0:
-            t, idx, kind, row = intersect_scene(origin, direction, tmin, tmax, planes, plane_index,
-                                          triangles, triangle_index, spheres, sphere_index,
-                                          sphere_eye, candidates, n_candidates)
-        else:
+        if i > 0:
             n_secondary += 1
-            t, idx, kind, row = intersect_scene(origin, direction, tmin, tmax, planes, plane_index,
-                                          triangles, triangle_index, spheres, sphere_index,
-                                          None, None, 0)
+        t, idx, kind, row = intersect_scene(origin, direction, tmin, tmax, planes, plane_index,
+                                            triangles, triangle_index, spheres, sphere_index,
+                                            sphere_eye, candidates, n_candidates,
+                                            from_eye and i == 0)
         if idx < 0:
             result = add(result, load3(background, 0))
             break
         # HitInfo: position = ray(t) = o + d t, the normal of the shape hit, its material.
         position = add(origin, scale(direction, t))
-        normal = shape_normal(kind, row, position, planes, triangles, spheres)
+        shader = shaders[idx]
+        if shader == BASE_COLOR:
+            normal = position  # base_color reads no normal: a flat-colour scene skips normal_at
+        else:
+            normal = shape_normal(kind, row, position, planes, triangles, spheres)
         color, has_hit, new_direction, shadow_rays = shade(
-            shaders[idx], materials[idx], direction, position, normal, lights, shadows, bounces,
+            shader, materials[idx], direction, position, normal, lights, shadows, bounces,
             planes, triangles, spheres)
         result = add(result, color)
         n_shadow += shadow_rays
@@ -98,7 +100,10 @@ def render_kernel(width, height, camera_kind, camera, planes, plane_index, trian
 
     For a pinhole camera with spheres, ``sphere_eye`` holds each sphere's temp and c for rays
     from the eye and ``cones`` (culling.sphere_cones, with the float64 ``camera64``) lets each
-    tile test only the spheres its primary rays can hit; both are None otherwise."""
+    tile test only the spheres its primary rays can hit; otherwise cones is None and
+    sphere_eye unused (None without spheres)."""
+    from_eye = cones is not None
+    n_spheres = 0 if spheres is None else spheres.shape[0]
     tiles_x = (width + TILE - 1) // TILE
     tiles_y = (height + TILE - 1) // TILE
     n_tiles = tiles_x * tiles_y
@@ -113,8 +118,9 @@ def render_kernel(width, height, camera_kind, camera, planes, plane_index, trian
         n_primary = 0
         x1 = min(x0 + TILE, width)
         y1 = min(y0 + TILE, height)
+        candidates = np.empty(n_spheres, dtype=np.int64)
+        n_candidates = 0
         if cones is not None:
-            candidates = np.empty(cones.shape[0], dtype=np.int64)
             n_candidates = tile_candidates(camera64, cones, x0, x1, y0, y1, width, height,
                                            candidates)
         for iy in range(y0, y1):
@@ -127,18 +133,12 @@ def render_kernel(width, height, camera_kind, camera, planes, plane_index, trian
                 if show_ray_direction:
                     half = lit(0.5, one)
                     color = add(scale(direction, half), (half, half, half))
-                elif cones is not None:
-                    color, shadow_rays, secondary_rays = trace(
-                        origin, direction, tmin, tmax, planes, plane_index, triangles,
-                        triangle_index, spheres, sphere_index, sphere_eye, candidates,
-                        n_candidates, materials, shaders, lights, background, shadows, bounces)
-                    n_shadow += shadow_rays
-                    n_secondary += secondary_rays
                 else:
                     color, shadow_rays, secondary_rays = trace(
                         origin, direction, tmin, tmax, planes, plane_index, triangles,
-                        triangle_index, spheres, sphere_index, None, None, 0,
-                        materials, shaders, lights, background, shadows, bounces)
+                        triangle_index, spheres, sphere_index, sphere_eye, candidates,
+                        n_candidates, from_eye, materials, shaders, lights, background, shadows,
+                        bounces)
                     n_shadow += shadow_rays
                     n_secondary += secondary_rays
                 out = image[height - 1 - iy, ix]

@@ -110,26 +110,25 @@ def transparent(r_d, normal, ior):
     return add(scale(d, eta), scale(n, eta * cos_i - cos_t))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def shade(shader, mat, r_d, position, normal, lights, shadows, bounces, planes, triangles,
           spheres):
-    """The slide's ``switch (*hit).shader``; the default case is the base colour."""
+    """The slide's ``switch (*hit).shader``; the default case is the base colour. Glossy is
+    Phong at the surface (which counts the emission) and then refraction, so the Phong case
+    serves both and is compiled once."""
     if shader == LAMBERTIAN:
         result, n_shadow = lambertian(r_d, position, normal, mat, lights, shadows, planes,
                                       triangles, spheres)
         return result, True, r_d, n_shadow
-    if shader == PHONG:
+    if shader == PHONG or (bounces is not None and shader == GLOSSY):
         result, n_shadow = phong(r_d, position, normal, mat, lights, shadows, planes,
                                  triangles, spheres)
-        return result, True, r_d, n_shadow
+        if shader == PHONG:
+            return result, True, r_d, n_shadow
+        return result, False, transparent(r_d, normal, mat[MAT_IOR]), n_shadow
     if bounces is not None:
         if shader == MIRROR:
             return load3(mat, MAT_EMISSION), False, mirror(r_d, normal), 0
         if shader == TRANSPARENT:
             return load3(mat, MAT_EMISSION), False, transparent(r_d, normal, mat[MAT_IOR]), 0
-        if shader == GLOSSY:
-            # Phong at the surface (which counts the emission), then refraction.
-            result, n_shadow = phong(r_d, position, normal, mat, lights, shadows, planes,
-                                     triangles, spheres)
-            return result, False, transparent(r_d, normal, mat[MAT_IOR]), n_shadow
     return load3(mat, MAT_COLOR), True, r_d, 0
