@@ -20,7 +20,7 @@ from .intersect import in_shadow
 from .lights import sample_point_light
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres):
     """L_e + sum over lights of rho_d / pi * L_i * max(n . w_i, 0), unless shadowed, + L_a."""
     color = load3(mat, MAT_COLOR)
@@ -46,7 +46,7 @@ def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, s
     return result, n_shadow
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres):
     """Lambertian plus the normalised Phong lobe (02562 worksheet 3):
     (rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s) L_i (n . w_i)."""
