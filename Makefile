@@ -21,7 +21,6 @@ render: $(STAMP)
 
 # The benchmark (not a test): prints the table and writes docs/bench.md.
 bench: $(STAMP)
-	$(PY) -m pip install --quiet -e '.[test,bench]'
 	$(PY) benchmarks/bench.py
 
 # The contact sheet shown in the README.
