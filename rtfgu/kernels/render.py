@@ -5,6 +5,10 @@ Every pixel is computed on its own from the same inputs, so the image is the sam
 bit for any number of threads. Arguments that a scene does not need are None (planes,
 triangles, spheres, lights, bounces); numba compiles a kernel per such combination and
 removes the code behind ``is None`` tests, so a scene pays only for what it has.
+
+The per-pixel path (trace, intersect_scene, shade, lambertian, phong) is inlined by numba
+(``inline="always"``, each with a single call site to keep the compile time down): an
+out-of-line call that takes arrays cost more than the intersections it made.
 """
 from __future__ import annotations
 
