@@ -19,8 +19,9 @@ from rtfgu.grading.generate import solution_files, student_files, write_files
 from rtfgu.grading.grader import REFERENCE_DIR, grade, neighbourhood_difference
 from rtfgu.grading.results import validate_gradescope
 
+from planted import apply_replacements, describe, make_submission, planted_names
+
 ROOT = Path(__file__).resolve().parent.parent
-SUBMISSIONS = ROOT / "tests" / "submissions"
 PYTHON_IDS = [a.id for a in ASSIGNMENTS.values() if a.language == "python"]
 LIMIT = 5.0
 
@@ -75,7 +76,7 @@ PLANTED = [
 
 @pytest.mark.parametrize("name,aid,caught", PLANTED, ids=[p[0] for p in PLANTED])
 def test_planted_bugs_lose_the_tests_that_should_catch_them_and_keep_the_rest(tmp_path, name, aid, caught):
-    result = grade(aid, SUBMISSIONS / name, tmp_path, time_limit=LIMIT)
+    result = grade(aid, make_submission(name, tmp_path / name), tmp_path / "out", time_limit=LIMIT)
     for number, test in _by_number(result).items():
         if number in caught:
             assert test.score < test.max_score, (number, test.name)
@@ -88,9 +89,33 @@ def test_planted_bugs_lose_the_tests_that_should_catch_them_and_keep_the_rest(tm
             assert Path(test.image).is_file()
 
 
+def test_every_planted_submission_is_the_solution_with_its_one_described_bug():
+    names = planted_names()
+    assert {p[0] for p in PLANTED} | {"a03_infinite_loop", "a03_misbehaving", "a03_writes_references"} == set(names)
+    for name in names:
+        spec = describe(name)
+        assert spec["__doc__"] and "\n" not in spec["__doc__"].strip(), name   # says what the bug is, in a line
+        solution = solution_files(spec["ASSIGNMENT"])
+        planted = apply_replacements(solution, spec["REPLACE"], name)
+        assert set(planted) == set(solution)
+        assert sorted(f for f in solution if planted[f] != solution[f]) == sorted({r[0] for r in spec["REPLACE"]})
+
+
+def test_a_planted_bug_whose_text_is_gone_from_the_solution_or_ambiguous_is_an_error():
+    solution = solution_files("a03")
+    with pytest.raises(ValueError, match="exactly once in the solution's shapes/sphere.py, found 0 times"):
+        apply_replacements(solution, [("shapes/sphere.py", "disc = b * b - 4.0 * a * c", "disc = 0")], "x")
+    with pytest.raises(ValueError, match="found 2 times"):
+        apply_replacements(solution, [("shapes/sphere.py", "if t >= ray.tmin and t < ray.tmax:", "if True:")], "x")
+    with pytest.raises(ValueError, match="shapes/cube.py, which is not a solution file"):
+        apply_replacements(solution, [("shapes/cube.py", "a", "b")], "x")
+    with pytest.raises(ValueError, match="no planted submission 'a03_nothing'"):
+        describe("a03_nothing")
+
+
 def test_an_endless_loop_is_stopped_at_the_time_limit_and_the_other_tests_run(tmp_path):
     # Triangle.normal_at never returns: the normals test and the default-scene image call it.
-    result = grade("a03", SUBMISSIONS / "a03_infinite_loop", tmp_path, time_limit=2.0)
+    result = grade("a03", make_submission("a03_infinite_loop", tmp_path / "sub"), tmp_path / "out", time_limit=2.0)
     tests = _by_number(result)
     for number in ("3.6", "3.8"):
         assert tests[number].score == 0
@@ -100,7 +125,8 @@ def test_an_endless_loop_is_stopped_at_the_time_limit_and_the_other_tests_run(tm
 
 
 def test_memory_printing_and_wrong_types_cost_only_their_tests(tmp_path):
-    result = grade("a03", SUBMISSIONS / "a03_misbehaving", tmp_path, time_limit=LIMIT, memory_mb=256)
+    result = grade("a03", make_submission("a03_misbehaving", tmp_path / "sub"), tmp_path / "out", time_limit=LIMIT,
+                   memory_mb=256)
     tests = _by_number(result)
     assert tests["3.1"].score == 0 and "MemoryError" in tests["3.1"].output          # 64 GB of bytearrays
     assert tests["3.5"].score == 0 and "printed" in tests["3.5"].output              # megabytes of printing
@@ -113,7 +139,8 @@ def test_a_submission_cannot_change_the_reference_files(tmp_path, monkeypatch):
     target = REFERENCE_DIR / "a03_intersections" / "observations.json"
     before = target.read_bytes()
     monkeypatch.setenv("RTFGU_ATTACK_PATH", str(target))
-    result = grade("a03", SUBMISSIONS / "a03_writes_references", tmp_path, time_limit=LIMIT)
+    result = grade("a03", make_submission("a03_writes_references", tmp_path / "sub"), tmp_path / "out",
+                   time_limit=LIMIT)
     assert target.read_bytes() == before
     assert result.score == 0
     assert any("reference files" in note for note in result.notes)
@@ -164,7 +191,7 @@ def test_grade_all_writes_one_gradebook_row_and_one_results_folder_per_submissio
     klass = tmp_path / "class"
     shutil.copytree(solved["a04_diffuse"][0], klass / "alice")
     write_files(student_files("a04"), klass / "bob")
-    shutil.copytree(SUBMISSIONS / "a04_missing_cosine", klass / "carol")
+    make_submission("a04_missing_cosine", klass / "carol")
     from rtfgu.grading.gradebook import grade_all
 
     path = grade_all("a04", klass, tmp_path / "out", processes=2, time_limit=LIMIT)
