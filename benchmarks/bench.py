@@ -1,38 +1,58 @@
-"""``make bench``: rays per second of every backend on a few scenes, against the lecture
-layer; prints a table and writes docs/bench.md. A script, not a test: nothing is asserted.
+"""``make bench``: speed and error of every rendering path on a few scenes, against the
+lecture layer; prints a table, writes docs/bench.md and the plot docs/bench_speed_error.png.
+A script, not a test: nothing is asserted.
 
-Rows are (scene, resolution) x BACKENDS: add a backend of rtfgu.renderer.render to BACKENDS
-and it gets a row in every scene. BASELINES are kernels of benchmarks/spheres_only.py that
-know only spheres, for the spheres-only scene.
+Rows are scene x path, a path being backend x precision x sphere formula: the reference
+(lecture layer, float64, the slide formula), numba float64 and float32, wgpu float32, each
+with formula="slide" and "robust" when rtfgu.render takes a ``formula`` keyword (otherwise
+each path's built-in formula, shown as "built-in"). Every path renders through
+rtfgu.render, so the numbers compare. BASELINES are kernels of benchmarks/spheres_only.py
+that know only spheres, for the spheres-only scene.
+
+Timing: after a warm-up render per path, RUNS rounds; each round times every path of the
+scene once (round-robin, so a change in the machine's load hits every path alike), and the
+median is quoted.
 
 Columns:
-  rays/s      primary + shadow + secondary rays per second, median of RUNS timed runs after
-              a warm-up render (the reference: one run, see REFERENCE_STEP);
+  rays/s      primary + shadow + secondary rays per second. The counts come from the numba
+              kernel's counters: float64 for the reference, the row's own precision and
+              formula for numba, and numba float32 (same formula, same size) for wgpu, whose
+              shader does not count;
   primary/s   primary rays (pixels) per second;
   speed-up    time per pixel of the reference / time per pixel of the row;
-  compile     cold compile time: the first render in a fresh process with an empty
-              NUMBA_CACHE_DIR, minus the same render with the cache warm;
+  compile     cold compile time. numba: the first render in a fresh process with an empty
+              NUMBA_CACHE_DIR, minus the same render with the cache warm. wgpu: the first
+              render with the pipeline cache emptied (rtfgu.wgsl.bench.compile_seconds), with
+              Mesa's on-disk shader cache disabled, minus a warm render;
   max abs, RMSE, 8-bit   error against the float64 reference image before gamma, and the
               share of pixels whose 8-bit colour (rtfgu.image.to_8bit) differs.
-Ray counts come from the numba kernel's counters (float64, which is the reference's image).
 """
 from __future__ import annotations
 
-import argparse
 import os
-import platform
-import statistics
-import subprocess
-import sys
-import tempfile
-import time
-from pathlib import Path
 
-import numpy as np
+# A cold WGSL compile must not come from Mesa's shader cache on disk (read when the adapter
+# is created, so set before anything imports wgpu).
+os.environ.setdefault("MESA_SHADER_CACHE_DISABLE", "true")
+
+import argparse  # noqa: E402
+import inspect  # noqa: E402
+import platform  # noqa: E402
+import statistics  # noqa: E402
+import subprocess  # noqa: E402
+import sys  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
+from dataclasses import dataclass, field  # noqa: E402
+from importlib import metadata  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+import numpy as np  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
+HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(Path(__file__).resolve().parent))
+sys.path.insert(0, str(HERE))
 
 from rtfgu.image import to_8bit  # noqa: E402
 from rtfgu.kernels import render_numba  # noqa: E402
@@ -43,54 +63,112 @@ from rtfgu.scenes import SCENES  # noqa: E402
 import scenes as bench_scenes  # noqa: E402
 import spheres_only  # noqa: E402
 
-# (backend, precision) rows, in order; "reference" is measured once per scene as the base.
-BACKENDS = [
-    ("numba", "float64"),
-    ("numba", "float32"),
+RUNS = 5
+# (scene name, scene function, width, height); --quick renders QUICK_SIZE instead.
+SCENE_TABLE = [
+    ("default_lambertian_shadows", SCENES["default_lambertian_shadows"], 256, 256),
+    ("default_glossy_sphere", SCENES["default_glossy_sphere"], 256, 256),
+    ("random_spheres_64", bench_scenes.random_spheres_64, 1024, 1024),
+    ("lecture01_flat_colors", SCENES["lecture01_flat_colors"], 256, 256),
 ]
-# Kernels that know only spheres: name -> run(flat, width, height).
+QUICK_SIZE = {256: 32, 1024: 64}
+# Kernels that know only spheres: name -> run(flat, width, height); rows on this scene only.
 BASELINES = {
     "spheres-only kernel": spheres_only.run_spheres_only,
     "brute-force loop": spheres_only.run_brute_force,
 }
-# (scene name, scene function, width, height, baselines apply)
-SCENE_TABLE = [
-    ("default_lambertian_shadows", SCENES["default_lambertian_shadows"], 256, 256, False),
-    ("default_glossy_sphere", SCENES["default_glossy_sphere"], 256, 256, False),
-    ("random_spheres_64", bench_scenes.random_spheres_64, 1024, 1024, True),
-]
-RUNS = 5
+BASELINE_SCENE = "random_spheres_64"
+QUICK_COMPILE_SCENE = "lecture01_flat_colors"
 # The reference renders every REFERENCE_STEP-th row and column of an image larger than
 # 256 x 256 (a pure-Python 1024 x 1024 render takes minutes); its time is scaled per pixel
 # and the error columns are measured on those pixels.
 REFERENCE_STEP = 4
-TARGETS = [
-    ("numba float64 speed-up on default_lambertian_shadows 256x256", ">= 300x"),
-    ("numba float64 primary rays/s on random_spheres_64 1024x1024", ">= 11 M/s"),
-]
+# A wgpu render slower than this (the software adapter on a large image) is benchmarked at
+# half the size, and so on; the row says so.
+WGPU_MAX_SECONDS = 20.0
+# Without a formula keyword every path has one built-in sphere formula.
+BUILT_IN = "built-in"
 
 
-def reference_render(scene_fn, width, height):
-    """(image or sampled pixels, seconds, step): the lecture layer's render, or its pixel
-    loop on every step-th row and column for a large image."""
+def formulas_available() -> bool:
+    return "formula" in inspect.signature(render).parameters
+
+
+@dataclass
+class Path_:
+    backend: str
+    precision: str
+    formula: str | None = None  # None: do not pass the keyword
+
+    @property
+    def formula_label(self) -> str:
+        if self.backend == "reference":
+            return "slide"
+        return self.formula or BUILT_IN
+
+    @property
+    def label(self) -> str:
+        return "%s %s %s" % (self.backend, self.precision, self.formula_label)
+
+    def kwargs(self) -> dict:
+        return {} if self.formula is None else {"formula": self.formula}
+
+
+def paths(with_wgpu: bool) -> list:
+    formulas = ("slide", "robust") if formulas_available() else (None,)
+    out = [Path_(backend="reference", precision="float64")]
+    for precision in ("float64", "float32"):
+        out += [Path_("numba", precision, f) for f in formulas]
+    if with_wgpu:
+        out += [Path_("wgpu", "float32", f) for f in formulas]
+    return out
+
+
+# ---- the machine ------------------------------------------------------------------------
+
+def cpu_model() -> str:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or platform.machine()
+
+
+def version(package: str) -> str:
+    try:
+        return metadata.version(package)
+    except metadata.PackageNotFoundError:
+        return "not installed"
+
+
+def gpu_adapter():
+    """(adapter description, None) or (None, the reason there is none)."""
+    try:
+        from rtfgu.wgsl.device import adapter_description
+        return adapter_description(), None
+    except Exception as error:  # NoAdapterError names the package to install
+        return None, str(error)
+
+
+# ---- timing and error -------------------------------------------------------------------
+
+def reference_render(scene, width, height):
+    """(image, step): the lecture layer's render, or its pixel loop on every step-th row and
+    column for an image larger than 256 x 256."""
     step = 1 if width * height <= 256 * 256 else REFERENCE_STEP
-    scene = scene_fn()
-    start = time.perf_counter()
     if step == 1:
-        image = render(scene, width, height, backend="reference")
-    else:
-        # The body of rtfgu.renderer.render_reference on a subset of the pixels.
-        rows = range(0, height, step)
-        cols = range(0, width, step)
-        image = np.zeros((height, width, 3))
-        for iy in rows:
-            for ix in cols:
-                sx = 2 * (ix + 0.5) / width - 1
-                sy = 2 * (iy + 0.5) / height - 1
-                color = trace(scene, scene.camera.gen_ray(sx, sy))
-                image[height - 1 - iy, ix] = (color.x, color.y, color.z)
-    seconds = time.perf_counter() - start
-    return image, seconds * step * step, step
+        return render(scene, width, height, backend="reference"), 1
+    # The body of rtfgu.renderer.render_reference on a subset of the pixels.
+    image = np.zeros((height, width, 3))
+    for iy in range(0, height, step):
+        for ix in range(0, width, step):
+            sx = 2 * (ix + 0.5) / width - 1
+            sy = 2 * (iy + 0.5) / height - 1
+            color = trace(scene, scene.camera.gen_ray(sx, sy))
+            image[height - 1 - iy, ix] = (color.x, color.y, color.z)
+    return image, step
 
 
 def sampled(image, height, step):
@@ -101,14 +179,18 @@ def sampled(image, height, step):
     return image[rows][:, ::step]
 
 
-def median_seconds(fn):
-    fn()  # warm-up (and compile, if the cache is cold)
-    times = []
-    for _ in range(RUNS):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
+def errors(image, ref, height, step):
+    image = sampled(image, height, step)
+    ref = sampled(ref, height, step)
+    diff = image - ref
+    differ = np.any(to_8bit(image) != to_8bit(ref), axis=2)
+    return float(np.abs(diff).max()), float(np.sqrt(np.mean(diff * diff))), float(differ.mean())
+
+
+def timed(fn):
+    start = time.perf_counter()
+    result = fn()
+    return result, time.perf_counter() - start
 
 
 COLD_SCRIPT = r"""
@@ -119,125 +201,336 @@ import scenes as bench_scenes
 from rtfgu.scenes import SCENES
 fn = SCENES.get({name!r}) or getattr(bench_scenes, {name!r})
 scene = fn()
-start = time.perf_counter(); render(scene, 8, 8, backend={backend!r}, precision={precision!r})
+kw = dict(backend={backend!r}, precision={precision!r}, **{kwargs!r})
+start = time.perf_counter(); render(scene, 8, 8, **kw)
 cold = time.perf_counter() - start
-start = time.perf_counter(); render(scene, 8, 8, backend={backend!r}, precision={precision!r})
+start = time.perf_counter(); render(scene, 8, 8, **kw)
 print(cold - (time.perf_counter() - start))
 """
 
 
-def cold_compile_seconds(name, backend, precision):
+def numba_cold_compile_seconds(name, path):
     with tempfile.TemporaryDirectory() as cache:
         env = dict(os.environ, NUMBA_CACHE_DIR=cache)
-        script = COLD_SCRIPT.format(root=str(ROOT), bench=str(Path(__file__).parent),
-                                    name=name, backend=backend, precision=precision)
+        script = COLD_SCRIPT.format(root=str(ROOT), bench=str(HERE), name=name,
+                                    backend=path.backend, precision=path.precision,
+                                    kwargs=path.kwargs())
         done = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True,
                               text=True)
     if done.returncode != 0:
+        print("cold compile failed for %s %s:\n%s" % (name, path.label, done.stderr[-2000:]))
         return None
     return float(done.stdout.split()[-1])
 
 
-def errors(image, ref, height, step):
-    image = sampled(image, height, step)
-    ref = sampled(ref, height, step)
-    diff = image - ref
-    differ = np.any(to_8bit(image) != to_8bit(ref), axis=2)
-    return np.abs(diff).max(), float(np.sqrt(np.mean(diff * diff))), differ.mean()
+def wgpu_cold_compile_seconds(scene, path):
+    from rtfgu.wgsl.bench import compile_seconds
+
+    def tiny():
+        render(scene, 8, 8, backend="wgpu", precision="float32", **path.kwargs())
+
+    cold = compile_seconds(tiny)
+    _, warm = timed(tiny)
+    return cold - warm
+
+
+def ray_counts(scene, width, height, precision, formula):
+    """The numba kernel's RayCounts (primary, shadow, secondary) for this render."""
+    kwargs = {}
+    if formula is not None and "formula" in inspect.signature(render_numba).parameters:
+        kwargs["formula"] = formula
+    return render_numba(scene, width, height, precision, with_counts=True, **kwargs)[1]
+
+
+@dataclass
+class Row:
+    scene: str
+    width: int
+    height: int
+    backend: str
+    precision: str
+    formula: str
+    note: str = ""
+    times: list = field(default_factory=list)
+    scale: float = 1.0  # full-frame seconds per timed second (the sampled reference)
+    rays: int = 0
+    primary: int = 0
+    compile_s: float | None = None
+    max_abs: float = float("nan")
+    rmse: float = float("nan")
+    differ: float = float("nan")
+    speedup: float = float("nan")
+    is_path: bool = True  # False for the spheres-only baselines
+
+    @property
+    def seconds(self) -> float:
+        return statistics.median(self.times) * self.scale
+
+    @property
+    def rays_per_s(self) -> float:
+        return self.rays / self.seconds
+
+    @property
+    def primary_per_s(self) -> float:
+        return self.primary / self.seconds
+
+    @property
+    def label(self) -> str:
+        return "%s %s %s" % (self.backend, self.precision, self.formula)
 
 
 def fmt_rate(x):
     return "%.2f M" % (x / 1e6) if x >= 1e5 else "%.0f k" % (x / 1e3)
 
 
+def bench_scene(name, scene_fn, width, height, path_list, runs, measure_compile, log):
+    """The rows of one scene, every path timed round-robin."""
+    scene = scene_fn()
+    counts_cache = {}
+
+    def counts(w, h, precision, formula):
+        key = (w, h, precision, formula)
+        if key not in counts_cache:
+            counts_cache[key] = ray_counts(scene, w, h, precision, formula)
+        return counts_cache[key]
+
+    ref_image, step = reference_render(scene, width, height)
+    refs = {(width, height): (ref_image, step)}
+    rows, runners = [], []
+    for path in path_list:
+        row = Row(name, width, height, path.backend, path.precision, path.formula_label)
+        if measure_compile and path.backend == "numba":
+            row.compile_s = numba_cold_compile_seconds(name, path)
+        elif measure_compile and path.backend == "wgpu":
+            row.compile_s = wgpu_cold_compile_seconds(scene, path)
+        if path.backend == "reference":
+            row.scale = step * step
+            if step > 1:
+                row.note = "every %dth row and column, time scaled per pixel" % step
+
+            def run(w=width, h=height):
+                return reference_render(scene, w, h)[0]
+            image = ref_image
+            c = counts(width, height, "float64", "slide" if formulas_available() else None)
+        else:
+            def run(path=path, w=width, h=height):
+                return render(scene, w, h, backend=path.backend, precision=path.precision,
+                              **path.kwargs())
+            try:
+                image, seconds = timed(run)  # the warm-up
+                if path.backend == "wgpu":
+                    image, seconds = timed(run)
+                    while seconds > WGPU_MAX_SECONDS and row.width > 64:
+                        row.width //= 2
+                        row.height //= 2
+                        run = (lambda path=path, w=row.width, h=row.height:
+                               render(scene, w, h, backend="wgpu", precision="float32",
+                                      **path.kwargs()))
+                        image, seconds = timed(run)
+                    if row.width != width:
+                        row.note = ("rendered at %dx%d: %dx%d took over %.0f s per run"
+                                    % (row.width, row.height, width, height, WGPU_MAX_SECONDS))
+            except Exception as error:  # a path that cannot run here gets a row saying so
+                row.note = "not run: %s" % error
+                rows.append(row)
+                continue
+            if path.backend == "wgpu":
+                c = counts(row.width, row.height, "float32", path.formula)
+            else:
+                c = counts(width, height, path.precision, path.formula)
+        if (row.width, row.height) not in refs:
+            refs[(row.width, row.height)] = reference_render(scene, row.width, row.height)
+        ref, ref_step = refs[(row.width, row.height)]
+        row.max_abs, row.rmse, row.differ = errors(image, ref, row.height, ref_step)
+        row.rays, row.primary = c.total, c.primary
+        rows.append(row)
+        runners.append((row, run))
+    if name == BASELINE_SCENE:
+        for label, run_baseline in BASELINES.items():
+            for precision in ("float64", "float32"):
+                row = Row(name, width, height, label, precision, "-", is_path=False)
+
+                def run(run_baseline=run_baseline, precision=precision):
+                    return run_baseline(compile_scene(scene_fn(), precision), width, height)
+                image = run()
+                row.max_abs, row.rmse, row.differ = errors(image, ref_image, height, step)
+                c = counts(width, height, precision, None)
+                row.rays, row.primary = c.total, c.primary
+                rows.append(row)
+                runners.append((row, run))
+    for row, run in runners:
+        if row.backend == "wgpu":
+            run()  # measuring the other formula's compile emptied the pipeline cache
+    for number in range(runs):
+        for row, run in runners:
+            row.times.append(timed(run)[1])
+        log("  %s: round %d of %d done" % (name, number + 1, runs))
+    base = next(r for r in rows if r.backend == "reference")
+    for row in rows:
+        if row.times:
+            row.speedup = (base.seconds / (base.width * base.height)) / (
+                row.seconds / (row.width * row.height))
+    return rows, counts(width, height, "float64", None)
+
+
+def row_markdown(r: Row) -> str:
+    if not r.times:
+        return "| %s | %dx%d | %s | %s | %s | %s |||||||| " % (
+            r.scene, r.width, r.height, r.backend, r.precision, r.formula, r.note)
+    compile_s = "-" if r.compile_s is None else "%.1f s" % r.compile_s
+    return "| %s | %dx%d | %s | %s | %s | %s | %s | %.0fx | %s | %.2g | %.2g | %.4f %% | %s |" % (
+        r.scene, r.width, r.height, r.backend, r.precision, r.formula, fmt_rate(r.rays_per_s),
+        fmt_rate(r.primary_per_s), r.speedup, compile_s, r.max_abs, r.rmse, 100 * r.differ,
+        r.note)
+
+
+HEADER = ["| scene | resolution | backend | precision | formula | rays/s | primary/s | speed-up "
+          "| compile | max abs | RMSE | 8-bit differ | note |",
+          "|---|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|"]
+
+
+def robust_cost_markdown(rows) -> list:
+    """Whole renders: rays/s of the robust sphere formula against the slide one, per scene
+    and path (only when rtfgu.render takes the formula keyword)."""
+    by = {(r.scene, r.width, r.backend, r.precision, r.formula): r for r in rows if r.times}
+    out = []
+    for (scene, width, backend, precision, formula), r in by.items():
+        if formula != "robust":
+            continue
+        slide = by.get((scene, width, backend, precision, "slide"))
+        if slide is not None:
+            out.append("| %s | %dx%d | %s | %s | %s | %s | %.2f |" % (
+                scene, r.width, r.height, backend, precision, fmt_rate(slide.rays_per_s),
+                fmt_rate(r.rays_per_s), r.rays_per_s / slide.rays_per_s))
+    if not out:
+        return []
+    return ["### Speed cost of the robust sphere formula in whole renders", "",
+            "Median rays/s of the same render with formula=\"slide\" and formula=\"robust\" "
+            "(from the table above).", "",
+            "| scene | resolution | backend | precision | slide rays/s | robust rays/s "
+            "| robust / slide |", "|---|---|---|---|---:|---:|---:|", *out, ""]
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=str(ROOT / "docs" / "bench.md"))
+    parser.add_argument("--plot", default=None,
+                        help="the PNG (default: bench_speed_error.png next to --out)")
+    parser.add_argument("--quick", action="store_true",
+                        help="a check that everything runs: small sizes, 1 run, cold compile "
+                             "on %s only, 2000 hard-case rays" % QUICK_COMPILE_SCENE)
     parser.add_argument("--no-compile", action="store_true", help="skip the cold compile column")
+    parser.add_argument("--no-wgpu", action="store_true", help="skip the wgpu rows")
     args = parser.parse_args(argv)
+    out = Path(args.out)
+    plot_path = Path(args.plot) if args.plot else out.parent / "bench_speed_error.png"
+    runs = 1 if args.quick else RUNS
+    started = time.perf_counter()
+
+    def log(message):
+        print("[%5.0f s] %s" % (time.perf_counter() - started, message), flush=True)
 
     import numba
-    header = ("| scene | resolution | backend | precision | rays/s | primary/s | speed-up "
-              "| compile | max abs | RMSE | 8-bit differ |")
-    lines = [header, "|" + "---|" * 11]
-    findings = {}
-    for name, scene_fn, width, height, with_baselines in SCENE_TABLE:
-        _, counts = render_numba(scene_fn(), width, height, "float64", with_counts=True)
-        ref, ref_seconds, step = reference_render(scene_fn, width, height)
-        pixels = width * height
-        note = "" if step == 1 else " (every %dth row and column)" % step
-        rows = [("reference" + note, "float64", ref_seconds, ref, None)]
-        for backend, precision in BACKENDS:
-            def run(backend=backend, precision=precision):
-                return render(scene_fn(), width, height, backend=backend, precision=precision)
-            try:
-                image = run()
-                seconds = median_seconds(run)
-            except Exception as error:  # a backend that cannot run here gets a row saying so
-                lines.append("| %s | %dx%d | %s | %s | not run: %s |||||||"
-                             % (name, width, height, backend, precision, error))
-                continue
-            compile_s = None if args.no_compile else cold_compile_seconds(name, backend, precision)
-            rows.append((backend, precision, seconds, image, compile_s))
-        if with_baselines:
-            for label, run_baseline in BASELINES.items():
-                for precision in ("float64", "float32"):
-                    def run(run_baseline=run_baseline, precision=precision):
-                        flat = compile_scene(scene_fn(), precision)
-                        return run_baseline(flat, width, height)
-                    image = run()
-                    rows.append((label, precision, median_seconds(run), image, None))
-        for backend, precision, seconds, image, compile_s in rows:
-            speedup = ref_seconds / seconds
-            max_abs, rmse, differ = errors(image, ref, height, step)
-            lines.append("| %s | %dx%d | %s | %s | %s | %s | %s | %s | %.2g | %.2g | %.4f %% |" % (
-                name, width, height, backend, precision, fmt_rate(counts.total / seconds),
-                fmt_rate(pixels / seconds), "%.0fx" % speedup,
-                "-" if compile_s is None else "%.1f s" % compile_s, max_abs, rmse, 100 * differ))
-            findings[(name, backend, precision)] = (speedup, pixels / seconds)
-        lines.append("| | | rays per frame: %d primary, %d shadow, %d secondary |||||||||"
-                     % (counts.primary, counts.shadow, counts.secondary))
-        print("\n".join(lines[-len(rows) - 1:]), flush=True)
+    adapter, no_adapter = (None, "--no-wgpu") if args.no_wgpu else gpu_adapter()
+    machine = "%s, %d cores" % (cpu_model(), os.cpu_count())
+    load_start = os.getloadavg()
+    log("%s; adapter: %s" % (machine, adapter or no_adapter))
+    path_list = paths(with_wgpu=adapter is not None)
+
+    all_rows, lines, findings = [], list(HEADER), {}
+    for name, scene_fn, width, height in SCENE_TABLE:
+        if args.quick:
+            width, height = QUICK_SIZE[width], QUICK_SIZE[height]
+        # --quick measures the cold compile on the cheapest scene only (about 12 s a path).
+        measure_compile = not args.no_compile and (name == QUICK_COMPILE_SCENE or not args.quick)
+        log("%s %dx%d" % (name, width, height))
+        rows, counts = bench_scene(name, scene_fn, width, height, path_list, runs,
+                                   measure_compile, log)
+        all_rows += rows
+        new = [row_markdown(r) for r in rows]
+        new.append("| | | rays per frame (numba float64): %d primary, %d shadow, %d secondary "
+                   "||||||||||" % (counts.primary, counts.shadow, counts.secondary))
+        lines += new
+        print("\n".join(new), flush=True)
+        for r in rows:
+            if r.times:
+                findings.setdefault((r.scene, r.width, r.backend, r.precision), []).append(r)
 
     checks = []
-    s = findings.get(("default_lambertian_shadows", "numba", "float64"))
-    if s:
-        checks.append("- numba float64 on default_lambertian_shadows 256x256: %.0fx the reference "
-                      "(target >= 300x): %s" % (s[0], "met" if s[0] >= 300 else "NOT met"))
-    s = findings.get(("random_spheres_64", "numba", "float64"))
-    if s:
-        checks.append("- numba float64 on random_spheres_64 1024x1024: %.1f M primary rays/s "
-                      "(target >= 11 M/s): %s" % (s[1] / 1e6, "met" if s[1] >= 11e6 else "NOT met"))
-    load = os.getloadavg() if hasattr(os, "getloadavg") else ("?",)
+    for scene, w, what, target, value in (
+            ("default_lambertian_shadows", 256, "speed-up over the reference", 300,
+             lambda r: r.speedup),
+            ("random_spheres_64", 1024, "primary rays/s (M)", 11, lambda r: r.primary_per_s / 1e6)):
+        for r in findings.get((scene, w, "numba", "float64"), []):
+            v = value(r)
+            checks.append("- numba float64 %s on %s %dx%d: %s %.1f (target >= %d): %s"
+                          % (r.formula, scene, w, w, what, v, target, "met" if v >= target else "NOT met"))
+
+    hard_rays = 2000 if args.quick else 200_000
+    hard_md, hard_points = None, []
+    try:
+        import hardcases_report
+        log("hard cases")
+        hard_md = hardcases_report.hardcases_markdown(rays=hard_rays)
+        hard_points = hardcases_report.speed_error_points(rays=hard_rays)
+    except Exception as error:
+        hard_md = "## Hard cases\n\n(The hard-case section failed: %s)\n" % error
+
+    versions = "Python %s, numpy %s, numba %s (%d threads), wgpu %s" % (
+        platform.python_version(), np.__version__, numba.__version__, numba.get_num_threads(),
+        version("wgpu"))
+    title = "%s; GPU adapter: %s" % (machine, adapter or "none")
+    plot_note = []
+    out.parent.mkdir(parents=True, exist_ok=True)
+    try:
+        import plot as bench_plot
+        bench_plot.speed_error_plot(all_rows, hard_points, title, plot_path)
+        plot_note = ["![speed against error](%s)" % os.path.relpath(plot_path, out.parent), "",
+                     "Left: one point per scene x path (backend, precision, sphere formula); x is "
+                     "the RMSE against the float64 reference image before gamma (an exact match "
+                     "is drawn at the floor marked \"exact\"), y is rays/s. Right: the hard-case "
+                     "batch evaluators, wrong hit/miss decisions over all families against rays/s.",
+                     ""]
+        log("wrote %s" % plot_path)
+    except Exception as error:  # no matplotlib: the table still gets written
+        plot_note = ["(No plot: %s. `make bench` installs matplotlib.)" % error, ""]
+    load_end = os.getloadavg()
     text = "\n".join([
         "# Benchmark",
         "",
-        "`make bench` (benchmarks/bench.py) on %s, %d CPUs, numba %s with %d threads, "
-        "load average %s at the end. Timings are medians of %d runs after a warm-up; the "
-        "reference is one run. Columns are explained in benchmarks/bench.py."
-        % (platform.processor() or platform.machine(), os.cpu_count(), numba.__version__,
-           numba.get_num_threads(), ", ".join("%.2f" % x for x in load), RUNS),
+        "Generated by `make bench` (benchmarks/bench.py%s); never edited by hand." % (
+            " --quick" if args.quick else ""),
         "",
+        "- Machine: %s; load average %s at the start, %s at the end." % (
+            machine, "%.2f" % load_start[0], "%.2f" % load_end[0]),
+        "- %s." % versions,
+        "- GPU adapter: %s." % (adapter or "none (%s)" % no_adapter),
+        "- Timing: a warm-up render per path, then %d round(s) that time every path of a scene "
+        "once each (round-robin); medians quoted. Whole run: %.0f s." % (
+            runs, time.perf_counter() - started),
+        "- rays/s counts primary, shadow and secondary rays with the numba kernel's counters; "
+        "the wgpu rows use the counts of numba float32 with the same formula on the same scene "
+        "and size (the shader does not count). Columns are explained in benchmarks/bench.py.",
+        "- formula: the sphere intersection, the slides' quadratic (\"slide\") or Ray Tracing "
+        "Gems ch. 7 (\"robust\"); the reference has the slide formula only.%s" % (
+            "" if formulas_available() else
+            " rtfgu.render takes no formula keyword in this checkout, so each path runs its "
+            "built-in formula."),
+        "",
+        *plot_note,
         *lines,
         "",
-        "Targets:",
+        *robust_cost_markdown(all_rows),
+        "Targets (issue 3):",
         "",
-        *checks,
+        *(checks or ["- not measured at these sizes (--quick)"]),
         "",
+        hard_md or "",
     ])
-    try:
-        from hardcases_report import hardcases_markdown
-    except ImportError:
-        hardcases_markdown = None
-    if hardcases_markdown is not None:
-        try:
-            text += "\n" + hardcases_markdown() + "\n"
-        except Exception as error:
-            text += "\n(The hard-case section failed: %s)\n" % error
-    Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-    Path(args.out).write_text(text)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(text)
     print("\n".join(checks))
-    print("wrote", args.out)
+    log("wrote %s" % out)
 
 
 if __name__ == "__main__":
