@@ -23,7 +23,9 @@ Columns:
   compile     cold compile time. numba: the first render in a fresh process with an empty
               NUMBA_CACHE_DIR, minus the same render with the cache warm. wgpu: the first
               render with the pipeline cache emptied (rtfgu.wgsl.bench.compile_seconds), with
-              Mesa's on-disk shader cache disabled, minus a warm render;
+              Mesa's on-disk shader cache disabled, minus a warm render.
+              With two formulas, numba's second row shows "+x s": the compile it adds in
+              the same process after the first formula (0 when one kernel serves both);
   max abs, RMSE, 8-bit   error against the float64 reference image before gamma, and the
               share of pixels whose 8-bit colour (rtfgu.image.to_8bit) differs.
 """
@@ -201,26 +203,34 @@ import scenes as bench_scenes
 from rtfgu.scenes import SCENES
 fn = SCENES.get({name!r}) or getattr(bench_scenes, {name!r})
 scene = fn()
-kw = dict(backend={backend!r}, precision={precision!r}, **{kwargs!r})
-start = time.perf_counter(); render(scene, 8, 8, **kw)
-cold = time.perf_counter() - start
-start = time.perf_counter(); render(scene, 8, 8, **kw)
-print(cold - (time.perf_counter() - start))
+for extra in {kwargs_list!r}:
+    kw = dict(backend={backend!r}, precision={precision!r}, **extra)
+    start = time.perf_counter(); render(scene, 8, 8, **kw)
+    cold = time.perf_counter() - start
+    start = time.perf_counter(); render(scene, 8, 8, **kw)
+    print(cold - (time.perf_counter() - start))
 """
 
 
-def numba_cold_compile_seconds(name, path):
+def numba_cold_compile_seconds(name, precision, path_list):
+    """{path label: seconds} for the numba paths of ``precision`` in ``path_list``: one fresh
+    process with an empty NUMBA_CACHE_DIR renders each path in turn, so the first path's
+    figure is its cold compile and a later path's is the compile it adds (0 when the formula
+    is a run-time argument of the same kernel)."""
+    mine = [p for p in path_list if p.backend == "numba" and p.precision == precision]
     with tempfile.TemporaryDirectory() as cache:
         env = dict(os.environ, NUMBA_CACHE_DIR=cache)
         script = COLD_SCRIPT.format(root=str(ROOT), bench=str(HERE), name=name,
-                                    backend=path.backend, precision=path.precision,
-                                    kwargs=path.kwargs())
+                                    backend="numba", precision=precision,
+                                    kwargs_list=[p.kwargs() for p in mine])
         done = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True,
                               text=True)
     if done.returncode != 0:
-        print("cold compile failed for %s %s:\n%s" % (name, path.label, done.stderr[-2000:]))
-        return None
-    return float(done.stdout.split()[-1])
+        print("cold compile failed for %s numba %s:\n%s" % (name, precision, done.stderr[-2000:]))
+        return {}
+    # A later path's difference can come out a hair below zero (timer noise): clamp it.
+    return {p.label: (max(0.0, float(x)) if i else float(x), i > 0)
+            for i, (p, x) in enumerate(zip(mine, done.stdout.split()))}
 
 
 def wgpu_cold_compile_seconds(scene, path):
@@ -256,6 +266,7 @@ class Row:
     rays: int = 0
     primary: int = 0
     compile_s: float | None = None
+    compile_added: bool = False  # compile_s is what this path adds after another one
     max_abs: float = float("nan")
     rmse: float = float("nan")
     differ: float = float("nan")
@@ -296,11 +307,13 @@ def bench_scene(name, scene_fn, width, height, path_list, runs, measure_compile,
 
     ref_image, step = reference_render(scene, width, height)
     refs = {(width, height): (ref_image, step)}
-    rows, runners = [], []
+    rows, runners, cold = [], [], {}
     for path in path_list:
         row = Row(name, width, height, path.backend, path.precision, path.formula_label)
         if measure_compile and path.backend == "numba":
-            row.compile_s = numba_cold_compile_seconds(name, path)
+            if path.precision not in cold:
+                cold[path.precision] = numba_cold_compile_seconds(name, path.precision, path_list)
+            row.compile_s, row.compile_added = cold[path.precision].get(path.label, (None, False))
         elif measure_compile and path.backend == "wgpu":
             row.compile_s = wgpu_cold_compile_seconds(scene, path)
         if path.backend == "reference":
@@ -377,7 +390,8 @@ def row_markdown(r: Row) -> str:
     if not r.times:
         return "| %s | %dx%d | %s | %s | %s | %s |||||||| " % (
             r.scene, r.width, r.height, r.backend, r.precision, r.formula, r.note)
-    compile_s = "-" if r.compile_s is None else "%.1f s" % r.compile_s
+    compile_s = "-" if r.compile_s is None else "%s%.1f s" % ("+" if r.compile_added else "",
+                                                               r.compile_s)
     return "| %s | %dx%d | %s | %s | %s | %s | %s | %.0fx | %s | %.2g | %.2g | %.4f %% | %s |" % (
         r.scene, r.width, r.height, r.backend, r.precision, r.formula, fmt_rate(r.rays_per_s),
         fmt_rate(r.primary_per_s), r.speedup, compile_s, r.max_abs, r.rmse, 100 * r.differ,
