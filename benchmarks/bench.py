@@ -349,6 +349,7 @@ def bench_scene(name, scene_fn, width, height, path_list, runs, measure_compile,
                 continue
             if path.backend == "wgpu":
                 c = counts(row.width, row.height, "float32", path.formula)
+                row.note = "; ".join(filter(None, [row.note, "ray counts of numba float32"]))
             else:
                 c = counts(width, height, path.precision, path.formula)
         if (row.width, row.height) not in refs:
