@@ -66,21 +66,24 @@ def speed_error_plot(rows, hard_points, title, path):
     handles += [plt.Line2D([], [], linestyle="", marker=SCENE_MARKERS[i % len(SCENE_MARKERS)],
                            color="white", markeredgecolor="black", label=name)
                 for i, name in enumerate(scenes)]
-    left.legend(handles=handles, fontsize=7, loc="best", framealpha=0.85)
+    # Below the axes, so that no point hides behind it.
+    left.legend(handles=handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13),
+                ncol=3, frameon=False)
 
     # Right: the hard-case batch evaluators; colour = path and precision, marker = formula.
     if hard_points:
         keys = list(dict.fromkeys("%s %s" % (p["path"], p["precision"]) for p in hard_points))
         colour = _colours(keys)
         hfloor = 0.3  # wrong decisions are counts: 0 is drawn at 0.3
-        for p in hard_points:
+        for i, p in enumerate(hard_points):
             key = "%s %s" % (p["path"], p["precision"])
             x = p["wrong"] if p["wrong"] > 0 else hfloor
             right.scatter(x, p["rays_per_second"], color=colour[key], edgecolor="black",
                           linewidth=0.4, marker=FORMULA_MARKERS.get(p["formula"], "o"), s=60,
                           zorder=3)
             right.annotate("%s %s" % (key, p["formula"]), (x, p["rays_per_second"]),
-                           textcoords="offset points", xytext=(5, 4), fontsize=7)
+                           textcoords="offset points", fontsize=7,
+                           xytext=(6, 4 if i % 2 else -11))  # neighbours' labels alternate
         right.set_xscale("log")
         right.set_yscale("log")
         right.set_xlim(hfloor / 2, max(p["wrong"] for p in hard_points) * 4 + 1)
@@ -88,7 +91,8 @@ def speed_error_plot(rows, hard_points, title, path):
         handles = [plt.Line2D([], [], linestyle="", marker=m, color="white",
                               markeredgecolor="black", label=f)
                    for f, m in FORMULA_MARKERS.items() if f != "built-in"]
-        right.legend(handles=handles, fontsize=7, loc="best")
+        right.legend(handles=handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13),
+                     ncol=2, frameon=False)
     else:
         right.text(0.5, 0.5, "hard cases not measured", ha="center", va="center",
                    transform=right.transAxes)
@@ -99,5 +103,5 @@ def speed_error_plot(rows, hard_points, title, path):
 
     fig.suptitle("rtfgu speed against error on %s" % title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")
     plt.close(fig)
