@@ -16,6 +16,9 @@ from .shading import MAX_DEPTH, HitInfo, shade
 BACKENDS = ("reference", "numba", "wgpu")
 DEFAULT_BACKEND = "reference"
 PRECISIONS = ("float64", "float32")
+# Sphere tests: the lecture's quadratic and Ray Tracing Gems ch. 7 (rtfgu/robust.py). The
+# reference computes the slide formulas only; numba and wgpu default to their own choice.
+FORMULAS = ("slide", "robust")
 
 
 def trace(scene, r: Ray) -> Float3:
@@ -62,11 +65,13 @@ def check_size(width, height) -> None:
 
 
 def render(scene, width: int, height: int, backend: str = "reference",
-           precision: str | None = None, progress=None) -> np.ndarray:
+           precision: str | None = None, progress=None, formula: str | None = None) -> np.ndarray:
     """Render ``scene`` to a (height, width, 3) float64 array, row 0 at the top, before gamma.
 
     backend: "reference" (the lecture layer, pure Python) or "numba" (rtfgu.kernels, all cores).
     precision: "float64" (the reference computes in Python floats) or "float32" (numba only).
+    formula: the sphere test, "slide" or "robust" (numba and wgpu); None is each backend's
+    default (the reference's is "slide", its only one).
     """
     check_size(width, height)
     if backend not in BACKENDS:
@@ -75,19 +80,24 @@ def render(scene, width: int, height: int, backend: str = "reference",
         precision = "float32" if backend == "wgpu" else "float64"
     if precision not in PRECISIONS:
         raise ValueError("precision must be one of %s, got %r" % (", ".join(PRECISIONS), precision))
+    if formula is not None and formula not in FORMULAS:
+        raise ValueError("formula must be one of %s, got %r" % (", ".join(FORMULAS), formula))
     scene.validate()
     if backend == "reference":
         if precision != "float64":
             raise ValueError("precision: the reference backend computes in float64 only")
+        if formula not in (None, "slide"):
+            raise ValueError("formula: the reference backend computes the slide formulas only, got %r"
+                             % formula)
         image = render_reference(scene, width, height, progress)
     elif backend == "numba":
         from .kernels import render_numba  # numba is imported only when asked for
-        image = render_numba(scene, width, height, precision)
+        image = render_numba(scene, width, height, precision, formula=formula)
     elif backend == "wgpu":
         if precision != "float32":
             raise ValueError("precision: the wgpu backend computes in float32 only, got %r" % precision)
         from .wgsl import render_wgpu  # wgpu is imported only when asked for
-        image = render_wgpu(scene, width, height, progress)
+        image = render_wgpu(scene, width, height, progress, formula=formula)
     if not np.all(np.isfinite(image)):
         raise ValueError("the %s backend produced non-finite pixels" % backend)
     return image

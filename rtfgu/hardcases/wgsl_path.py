@@ -24,6 +24,26 @@ struct Ray { origin: vec3f, direction: vec3f, tmin: f32, tmax: f32 };
 struct HitInfo { has_hit: bool, dist: f32, position: vec3f, normal: vec3f };
 """
 
+# The render never passes a non-finite number (compile_scene refuses it); the hard cases do,
+# and a kernel must answer them with a miss. The test is on the bits: WGSL may assume finite
+# floats and fold comparisons with NaN away.
+SPHERE_ROBUST_CHECKED = """
+fn sphere_robust_finite(v: vec4f) -> bool
+{
+    let e = bitcast<vec4u>(v) & vec4u(0x7f800000u);
+    return all(e != vec4u(0x7f800000u));
+}
+
+fn intersect_sphere_robust(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
+{
+    if (!(sphere_robust_finite(vec4f(r.origin, r.tmin)) && sphere_robust_finite(vec4f(r.direction, 0.0))
+          && sphere_robust_finite(vec4f(center, radius)))) {
+        return false;
+    }
+    return intersect_sphere_robust_unchecked(r, hit, center, radius);
+}
+"""
+
 # Ogita, Rump and Oishi 2005 (Dot2), TwoProduct by a split on the bits: see
 # rtfgu/robust.py, intersect_plane_robust.
 PLANE_ROBUST = """
@@ -206,7 +226,11 @@ def program_source() -> str:
         text = _read(name)
         if text is None:
             raise FileNotFoundError("rtfgu/wgsl/%s is missing" % name)
+        if name == "robust_sphere.wgsl":
+            # Both sphere files define the render's intersect_sphere; here they sit side by side.
+            text = text.replace("fn intersect_sphere(", "fn intersect_sphere_robust_unchecked(")
         pieces.append(text)
+    pieces.append(SPHERE_ROBUST_CHECKED)
     pieces.append(PLANE_ROBUST)
     pieces.append(MAIN % {"workgroup": WORKGROUP, "sphere": SPHERE, "plane": PLANE,
                           "triangle": TRIANGLE})

@@ -17,10 +17,24 @@ from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_scene
 from ..material import GLOSSY, MIRROR, TRANSPARENT
 from ..shading import MAX_DEPTH
 from .culling import cone_table
-from .intersect import sphere_eye_terms
+from .intersect import SPHERE_FORMULAS, sphere_eye_terms
 from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
 
-__all__ = ["render_numba", "RayCounts"]
+__all__ = ["render_numba", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
+
+# The sphere formula of a numba render unless one is asked for: Ray Tracing Gems ch. 7
+# (docs/robust_defaults.md has the measured cost and the reason).
+DEFAULT_SPHERE_FORMULA = "robust"
+
+
+def sphere_formula_id(formula) -> int:
+    """intersect.SPHERE_SLIDE / SPHERE_ROBUST for "slide" / "robust" (None: the default)."""
+    if formula is None:
+        formula = DEFAULT_SPHERE_FORMULA
+    if formula not in SPHERE_FORMULAS:
+        raise ValueError("formula must be one of %s, got %r"
+                         % (", ".join(SPHERE_FORMULAS), formula))
+    return SPHERE_FORMULAS[formula]
 
 
 @dataclass
@@ -43,8 +57,10 @@ def _coprime_stride(n: int) -> int:
     return stride
 
 
-def kernel_arguments(flat, width: int, height: int):
-    """The render_kernel arguments for a FlatScene, with None for what the scene lacks."""
+def kernel_arguments(flat, width: int, height: int, formula=None):
+    """The render_kernel arguments for a FlatScene, with None for what the scene lacks;
+    ``formula`` the sphere formula ("slide", "robust" or None for the default)."""
+    sphere_formula = sphere_formula_id(formula)
     def present(array, index):
         return (array, index) if len(array) else (None, None)
 
@@ -66,18 +82,21 @@ def kernel_arguments(flat, width: int, height: int):
     bounces = MAX_DEPTH if continues else None
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     return (width, height, flat.camera_kind, camera, planes, plane_index, triangles,
-            triangle_index, spheres, sphere_index, sphere_eye, cones, camera64, flat.materials,
-            flat.shaders,
+            triangle_index, spheres, sphere_index, sphere_eye, cones, camera64, sphere_formula,
+            flat.materials, flat.shaders,
             lights, flat.background, flat.shadows, flat.show_ray_direction, bounces,
             _coprime_stride(tiles)), tiles
 
 
 def render_numba(scene, width: int, height: int, precision: str = "float64",
-                 with_counts: bool = False):
+                 with_counts: bool = False, formula: str | None = None):
     """Render on the numba path; a (height, width, 3) float64 array, row 0 at the top.
-    With ``with_counts`` also the RayCounts of the render."""
+    With ``with_counts`` also the RayCounts of the render. ``formula``: the sphere test,
+    "slide" (lecture 01) or "robust" (Ray Tracing Gems ch. 7); None is
+    DEFAULT_SPHERE_FORMULA."""
+    sphere_formula_id(formula)  # a bad formula is refused before the scene is compiled
     flat = compile_scene(scene, precision)
-    args, tiles = kernel_arguments(flat, width, height)
+    args, tiles = kernel_arguments(flat, width, height, formula)
     image = np.empty((height, width, 3), dtype=flat.dtype)
     counts = np.zeros((tiles, 3), dtype=np.int64)
     render_kernel(*args, image, counts)

@@ -5,6 +5,13 @@ Each function returns the hit distance t, or inf on a miss. The interval is [tmi
 with tmax included, unlike the slides' [tmin, tmax): the lecture loop visits the shapes in
 Scene order and keeps the first of two equal distances, while ``intersect_scene`` visits
 them kind by kind and breaks such a tie by the Scene index, for which it needs to see it.
+
+Spheres have two formulas, chosen per render by ``sphere_formula``: SPHERE_SLIDE, the
+lecture's quadratic (``intersect_sphere``), and SPHERE_ROBUST, Ray Tracing Gems ch. 7
+(``intersect_sphere_robust``), which keeps its digits for far, small and grazing spheres in
+float32 (rtfgu/robust.py says why; rtfgu.hardcases measures both). The choice is an
+argument, not a separate kernel: one compiled kernel serves both formulas, and the branch on
+it goes the same way for every ray.
 """
 from __future__ import annotations
 
@@ -14,7 +21,12 @@ from numba import njit
 
 from ..layout import (PLANE, PLANE_NORMAL, PLANE_POINT, SPHERE, SPHERE_CENTER, SPHERE_RADIUS,
                       TRI_E0, TRI_E1, TRI_N, TRI_V0, TRIANGLE)
-from .float3 import cross, dot, lit, row3, sub
+from .float3 import add, cross, dot, lit, row3, scale, sub
+
+# sphere_formula values (as rtfgu.kernels.robust.SLIDE / ROBUST, and FORMULAS below).
+SPHERE_SLIDE = 0
+SPHERE_ROBUST = 1
+SPHERE_FORMULAS = {"slide": SPHERE_SLIDE, "robust": SPHERE_ROBUST}
 
 
 @njit(cache=True, error_model="numpy")
@@ -81,6 +93,56 @@ def intersect_sphere(origin, direction, tmin, tmax, center, radius):
 
 
 @njit(cache=True, error_model="numpy")
+def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
+    """Ray Tracing Gems ch. 7 (Haines, Guenther and Akenine-Moeller 2019, eqs. 7.5-7.8)
+    from temp = f = o - center and c = f . f - r^2, as ``sphere_roots``: with b' = -f . d,
+    the discriminant a (r^2 - |f + (b'/a) d|^2) is the squared distance from the centre to
+    the line (no b^2 - 4ac cancellation), and the roots c / q and q / a with
+    q = b' + sign(b') sqrt(disc) subtract no two nearly equal numbers. The inputs are finite
+    (compile_scene refuses anything else), so unlike rtfgu.kernels.robust.sphere_robust it
+    needs no finiteness test: a zero direction gives NaN, and NaN fails every comparison."""
+    a = dot(direction, direction)
+    b = -dot(temp, direction)
+    l = add(temp, scale(direction, b / a))
+    disc = a * ((radius * radius) - dot(l, l))
+    zero = lit(0, a)
+    if disc < zero:
+        return lit(math.inf, a)
+    root = math.sqrt(disc)
+    q = b + root if b >= zero else b - root
+    if q == zero:
+        # b' = 0 and disc = 0: the origin is the tangent point, both roots are 0.
+        t0 = zero
+        t1 = zero
+    else:
+        t0 = c / q
+        t1 = q / a
+    if t0 > t1:
+        t0, t1 = t1, t0
+    if t0 >= tmin and t0 <= tmax:
+        return t0
+    if t1 >= tmin and t1 <= tmax:
+        return t1
+    return lit(math.inf, a)
+
+
+@njit(cache=True, error_model="numpy")
+def intersect_sphere_robust(origin, direction, tmin, tmax, center, radius):
+    # f = o - center and c = f . f - r^2 as in intersect_sphere, then Ray Tracing Gems ch. 7.
+    temp = sub(origin, center)
+    c = dot(temp, temp) - radius * radius
+    return sphere_roots_robust(temp, c, radius, direction, tmin, tmax)
+
+
+@njit(cache=True, error_model="numpy")
+def sphere_test(sphere_formula, origin, direction, tmin, tmax, center, radius):
+    """The render's sphere test: the formula that ``sphere_formula`` names."""
+    if sphere_formula == SPHERE_ROBUST:
+        return intersect_sphere_robust(origin, direction, tmin, tmax, center, radius)
+    return intersect_sphere(origin, direction, tmin, tmax, center, radius)
+
+
+@njit(cache=True, error_model="numpy")
 def sphere_eye_terms(eye, spheres, out):
     """temp = eye - center and c = temp . temp - r^2 for every sphere, once per frame."""
     for i in range(spheres.shape[0]):
@@ -95,12 +157,12 @@ def sphere_eye_terms(eye, spheres, out):
 @njit(cache=True, error_model="numpy", inline="always")
 def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangles,
                     triangle_index, spheres, sphere_index, sphere_eye, candidates, n_candidates,
-                    from_eye):
+                    from_eye, sphere_formula):
     """``intersect_scene``: the nearest hit over all shapes, as (t, scene index, shape kind,
     row in that kind's array), scene index -1 on a miss. A kind whose array is None is not in
     the scene and compiles to nothing. For a ray from the eye (``from_eye``) the spheres
     tested are the rows ``candidates[:n_candidates]``, with temp and c from ``sphere_eye``;
-    otherwise every sphere, with the lecture's intersect_sphere."""
+    otherwise every sphere. ``sphere_formula`` is SPHERE_SLIDE or SPHERE_ROBUST."""
     best = -1
     kind = -1
     row = -1
@@ -131,11 +193,16 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
         for k in range(n):
             if from_eye:
                 i = candidates[k]
-                t = sphere_roots(row3(sphere_eye, i, 0), sphere_eye[i, 3], direction, tmin, tmax)
+                if sphere_formula == SPHERE_ROBUST:
+                    t = sphere_roots_robust(row3(sphere_eye, i, 0), sphere_eye[i, 3],
+                                            spheres[i, SPHERE_RADIUS], direction, tmin, tmax)
+                else:
+                    t = sphere_roots(row3(sphere_eye, i, 0), sphere_eye[i, 3], direction, tmin,
+                                     tmax)
             else:
                 i = k
-                t = intersect_sphere(origin, direction, tmin, tmax,
-                                     row3(spheres, i, SPHERE_CENTER), spheres[i, SPHERE_RADIUS])
+                t = sphere_test(sphere_formula, origin, direction, tmin, tmax,
+                                row3(spheres, i, SPHERE_CENTER), spheres[i, SPHERE_RADIUS])
             idx = sphere_index[i]
             if t < tmax or (t == tmax and idx < best):
                 tmax = t
@@ -146,7 +213,7 @@ def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangle
 
 
 @njit(cache=True, error_model="numpy")
-def in_shadow(position, w_i, tmin, tmax, planes, triangles, spheres):
+def in_shadow(position, w_i, tmin, tmax, planes, triangles, spheres, sphere_formula):
     """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""
     if planes is not None:
         for i in range(planes.shape[0]):
@@ -161,7 +228,7 @@ def in_shadow(position, w_i, tmin, tmax, planes, triangles, spheres):
                 return True
     if spheres is not None:
         for i in range(spheres.shape[0]):
-            if intersect_sphere(position, w_i, tmin, tmax, row3(spheres, i, SPHERE_CENTER),
-                                spheres[i, SPHERE_RADIUS]) < tmax:
+            if sphere_test(sphere_formula, position, w_i, tmin, tmax,
+                           row3(spheres, i, SPHERE_CENTER), spheres[i, SPHERE_RADIUS]) < tmax:
                 return True
     return False

@@ -53,8 +53,8 @@ def shape_normal(kind, row, position, planes, triangles, spheres):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangle_index,
-          spheres, sphere_index, sphere_eye, candidates, n_candidates, from_eye, materials,
-          shaders, lights, background, shadows, bounces):
+          spheres, sphere_index, sphere_eye, candidates, n_candidates, from_eye, sphere_formula,
+          materials, shaders, lights, background, shadows, bounces):
     """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
     path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
     Returns (radiance, shadow rays, secondary rays)."""
@@ -69,7 +69,7 @@ def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangl
         t, idx, kind, row = intersect_scene(origin, direction, tmin, tmax, planes, plane_index,
                                             triangles, triangle_index, spheres, sphere_index,
                                             sphere_eye, candidates, n_candidates,
-                                            from_eye and i == 0)
+                                            from_eye and i == 0, sphere_formula)
         if idx < 0:
             result = add(result, load3(background, 0))
             break
@@ -82,7 +82,7 @@ def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangl
             normal = shape_normal(kind, row, position, planes, triangles, spheres)
         color, has_hit, new_direction, shadow_rays = shade(
             shader, materials[idx], direction, position, normal, lights, shadows, bounces,
-            planes, triangles, spheres)
+            planes, triangles, spheres, sphere_formula)
         result = add(result, color)
         n_shadow += shadow_rays
         if has_hit:
@@ -97,15 +97,16 @@ def trace(origin, direction, tmin, tmax, planes, plane_index, triangles, triangl
 
 @njit(parallel=True, cache=True, error_model="numpy")
 def render_kernel(width, height, camera_kind, camera, planes, plane_index, triangles,
-                  triangle_index, spheres, sphere_index, sphere_eye, cones, camera64, materials,
-                  shaders, lights, background, shadows, show_ray_direction, bounces, tile_stride,
-                  image, counts):
+                  triangle_index, spheres, sphere_index, sphere_eye, cones, camera64,
+                  sphere_formula, materials, shaders, lights, background, shadows,
+                  show_ray_direction, bounces, tile_stride, image, counts):
     """Fill ``image`` (height, width, 3), row 0 at the top, and ``counts`` (tiles, 3).
 
     For a pinhole camera with spheres, ``sphere_eye`` holds each sphere's temp and c for rays
     from the eye and ``cones`` (culling.sphere_cones, with the float64 ``camera64``) lets each
     tile test only the spheres its primary rays can hit; otherwise cones is None and
-    sphere_eye unused (None without spheres)."""
+    sphere_eye unused (None without spheres). ``sphere_formula`` (intersect.SPHERE_SLIDE or
+    SPHERE_ROBUST) picks the sphere test of every ray, primary, secondary and shadow."""
     from_eye = cones is not None
     n_spheres = 0 if spheres is None else spheres.shape[0]
     tiles_x = (width + TILE - 1) // TILE
@@ -141,8 +142,8 @@ def render_kernel(width, height, camera_kind, camera, planes, plane_index, trian
                     color, shadow_rays, secondary_rays = trace(
                         origin, direction, tmin, tmax, planes, plane_index, triangles,
                         triangle_index, spheres, sphere_index, sphere_eye, candidates,
-                        n_candidates, from_eye, materials, shaders, lights, background, shadows,
-                        bounces)
+                        n_candidates, from_eye, sphere_formula, materials, shaders, lights,
+                        background, shadows, bounces)
                     n_shadow += shadow_rays
                     n_secondary += secondary_rays
                 out = image[height - 1 - iy, ix]

@@ -21,7 +21,8 @@ from .lights import sample_point_light
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres):
+def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres,
+               sphere_formula):
     """L_e + sum over lights of rho_d / pi * L_i * max(n . w_i, 0), unless shadowed, + L_a."""
     color = load3(mat, MAT_COLOR)
     rho_d = scale(color, lit(DIFFUSE_FRACTION, r_d[0]))
@@ -40,14 +41,16 @@ def lambertian(r_d, position, normal, mat, lights, shadows, planes, triangles, s
                 continue
             if shadows:
                 n_shadow += 1
-                if in_shadow(position, w_i, eps, dist - eps, planes, triangles, spheres):
+                if in_shadow(position, w_i, eps, dist - eps, planes, triangles, spheres,
+                             sphere_formula):
                     continue
             result = add(result, scale(mul(div(rho_d, lit(math.pi, zero)), L_i), cos_theta))
     return result, n_shadow
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres):
+def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, spheres,
+          sphere_formula):
     """Lambertian plus the normalised Phong lobe (02562 worksheet 3):
     (rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s) L_i (n . w_i)."""
     color = load3(mat, MAT_COLOR)
@@ -72,7 +75,8 @@ def phong(r_d, position, normal, mat, lights, shadows, planes, triangles, sphere
                 continue
             if shadows:
                 n_shadow += 1
-                if in_shadow(position, w_i, eps, dist - eps, planes, triangles, spheres):
+                if in_shadow(position, w_i, eps, dist - eps, planes, triangles, spheres,
+                             sphere_formula):
                     continue
             w_r = sub(scale(normal, two * cos_theta), w_i)
             cos_r = dot(w_o, w_r)
@@ -112,17 +116,17 @@ def transparent(r_d, normal, ior):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def shade(shader, mat, r_d, position, normal, lights, shadows, bounces, planes, triangles,
-          spheres):
+          spheres, sphere_formula):
     """The slide's ``switch (*hit).shader``; the default case is the base colour. Glossy is
     Phong at the surface (which counts the emission) and then refraction, so the Phong case
     serves both and is compiled once."""
     if shader == LAMBERTIAN:
         result, n_shadow = lambertian(r_d, position, normal, mat, lights, shadows, planes,
-                                      triangles, spheres)
+                                      triangles, spheres, sphere_formula)
         return result, True, r_d, n_shadow
     if shader == PHONG or (bounces is not None and shader == GLOSSY):
         result, n_shadow = phong(r_d, position, normal, mat, lights, shadows, planes,
-                                 triangles, spheres)
+                                 triangles, spheres, sphere_formula)
         if shader == PHONG:
             return result, True, r_d, n_shadow
         return result, False, transparent(r_d, normal, mat[MAT_IOR]), n_shadow

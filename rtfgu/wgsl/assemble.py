@@ -8,6 +8,11 @@ sample, the shaders, shade, intersect_scene and main. Inside a file, lines betwe
 are kept only when the scene has that feature, so that e.g. shade's switch holds only the
 cases the scene uses.
 
+The sphere test has two files with the same ``fn intersect_sphere``: the slide's quadratic
+(intersect_sphere.wgsl) and Ray Tracing Gems ch. 7 (robust_sphere.wgsl); ``formula`` picks
+one for the piece ``intersect_sphere.wgsl``. An override of that piece (a student's own
+file) is used whatever the formula.
+
 Only counts and kinds go into the program text; the scene's numbers go into buffers
 (``Binding.pack``), so moving the camera or a light reuses the compiled pipeline.
 """
@@ -57,6 +62,20 @@ PIECES = (
 )
 
 GENERATED = "<generated from rtfgu.layout>"
+
+# The file that holds intersect_sphere, per sphere formula.
+SPHERE_FILES = {"slide": "intersect_sphere.wgsl", "robust": "robust_sphere.wgsl"}
+# The sphere formula of a WGSL render unless one is asked for (docs/robust_defaults.md).
+DEFAULT_SPHERE_FORMULA = "robust"
+
+
+def sphere_file(formula) -> str:
+    """The .wgsl file of intersect_sphere for ``formula`` ("slide", "robust", None: default)."""
+    if formula is None:
+        formula = DEFAULT_SPHERE_FORMULA
+    if formula not in SPHERE_FILES:
+        raise ValueError("formula must be one of %s, got %r" % (", ".join(SPHERE_FILES), formula))
+    return SPHERE_FILES[formula]
 
 # The largest uniform buffer binding WebGPU guarantees (maxUniformBufferBindingSize).
 MAX_UNIFORM_BYTES = 65536
@@ -215,13 +234,16 @@ def _header(flat, features, bindings) -> str:
     return "\n\n".join(parts)
 
 
-def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None) -> Program:
+def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
+             formula: str | None = None) -> Program:
     """The WGSL program for the FlatScene ``flat`` (float32 layout).
 
     scene_buffer: "uniform" or "storage", the address space of the scene arrays (an array
     larger than MAX_UNIFORM_BYTES goes to storage either way).
     overrides: {file name: WGSL text} used instead of the package's file, e.g. a student's
-    own lambertian.wgsl."""
+    own lambertian.wgsl.
+    formula: the sphere test, "slide" or "robust" (None: DEFAULT_SPHERE_FORMULA)."""
+    sphere_source = sphere_file(formula)
     overrides = dict(overrides or {})
     unknown = set(overrides) - set(piece_names())
     if unknown:
@@ -236,13 +258,16 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None)
     for name, needed in PIECES:
         if not needed(features):
             continue
-        used.append(name)
-        text = overrides[name] if name in overrides else read_piece(name)
+        source = name
+        if name == "intersect_sphere.wgsl" and name not in overrides:
+            source = sphere_source
+        used.append(source)
+        text = overrides[name] if name in overrides else read_piece(source)
         lines.append("")
         origin.append((GENERATED, 0))
-        lines.append("// ---- rtfgu/wgsl/%s" % name)
-        origin.append((name, 0))
-        for number, line in select_lines(text, features, name):
+        lines.append("// ---- rtfgu/wgsl/%s" % source)
+        origin.append((source, 0))
+        for number, line in select_lines(text, features, source):
             lines.append(line)
-            origin.append((name, number))
+            origin.append((source, number))
     return Program("\n".join(lines) + "\n", origin, bindings, features, used)

@@ -7,20 +7,14 @@
 //                                       small sphere in f32;
 //   t0 = c / q, t1 = q / a with q = b' + sign(b') sqrt(disc), never a difference of two
 //   nearly equal numbers.
-// Non-finite input is a miss (tested on the bits: WGSL may assume finite floats).
+// The render's assembler (rtfgu/wgsl/assemble.py) takes intersect_sphere from this file
+// instead of intersect_sphere.wgsl when the render's formula is "robust"; both have the
+// 02562 signature. Its inputs are finite (compile_scene refuses anything else). The
+// hard-case program (rtfgu/hardcases/wgsl_path.py) renames it intersect_sphere_robust and
+// adds a test that makes non-finite input a miss.
 
-fn sphere_robust_finite(v: vec4f) -> bool
+fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
 {
-    let e = bitcast<vec4u>(v) & vec4u(0x7f800000u);
-    return all(e != vec4u(0x7f800000u));
-}
-
-fn intersect_sphere_robust(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
-{
-    if (!(sphere_robust_finite(vec4f(r.origin, r.tmin)) && sphere_robust_finite(vec4f(r.direction, 0.0))
-          && sphere_robust_finite(vec4f(center, radius)))) {
-        return false;
-    }
     let f = r.origin - center;
     let a = dot(r.direction, r.direction);
     let b = -dot(f, r.direction);
@@ -35,17 +29,17 @@ fn intersect_sphere_robust(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, r
     if (b >= 0.0) {
         q = b + root;
     }
+    // q = 0 only for b' = 0 and disc = 0: the origin is the tangent point, both roots are 0.
     var t0 = 0.0;
     var t1 = 0.0;
     if (q != 0.0) {
         t0 = c / q;
         t1 = q / a;
     }
-    let near = min(t0, t1);
-    let far = max(t0, t1);
-    var t = near;
+    // The least t in [tmin, tmax): the near root first, then the far one.
+    var t = min(t0, t1);
     if (!(t >= r.tmin && t < r.tmax)) {
-        t = far;
+        t = max(t0, t1);
         if (!(t >= r.tmin && t < r.tmax)) {
             return false;
         }

@@ -27,7 +27,7 @@ import numpy as np
 
 from ..layout import compile_scene
 from . import structs
-from .assemble import GENERATED, assemble
+from .assemble import GENERATED, assemble, sphere_file
 from .device import get_device
 
 DEFAULT_SCENE_BUFFER = "uniform"
@@ -189,16 +189,20 @@ def compile_program(program) -> CompiledProgram:
     return compiled
 
 
-def prepare(scene, scene_buffer: str = DEFAULT_SCENE_BUFFER, overrides=None) -> CompiledProgram:
-    """Lay out ``scene`` in float32, assemble and compile (or reuse) its program, upload it."""
+def prepare(scene, scene_buffer: str = DEFAULT_SCENE_BUFFER, overrides=None,
+            formula: str | None = None) -> CompiledProgram:
+    """Lay out ``scene`` in float32, assemble and compile (or reuse) its program, upload it.
+    ``formula``: the sphere test, "slide" or "robust" (None: the assembler's default)."""
+    sphere_file(formula)  # a bad formula is refused before the scene is compiled
     flat = compile_scene(scene, "float32")
-    compiled = compile_program(assemble(flat, scene_buffer, overrides))
+    compiled = compile_program(assemble(flat, scene_buffer, overrides, formula))
     compiled.upload(flat)
     return compiled
 
 
 def render_wgpu(scene, width: int, height: int, progress=None,
-                scene_buffer: str = DEFAULT_SCENE_BUFFER, tile: int = TILE) -> np.ndarray:
+                scene_buffer: str = DEFAULT_SCENE_BUFFER, tile: int = TILE,
+                formula: str | None = None) -> np.ndarray:
     """rtfgu.render(..., backend="wgpu"): (height, width, 3) float64, before gamma."""
-    compiled = prepare(scene, scene_buffer)
+    compiled = prepare(scene, scene_buffer, formula=formula)
     return compiled.render(width, height, gamma=1.0, tile=tile, progress=progress).astype(np.float64)

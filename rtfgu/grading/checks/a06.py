@@ -171,7 +171,8 @@ def observe_triangle(rt):
 
 def _render_wgsl(rt, scene, width, height):
     runner = importlib.import_module("rtfgu.wgsl.runner")
-    return runner.render_wgpu(scene, width, height)
+    # The slide formula: the image shows the student's intersect_sphere.wgsl, not robust_sphere.wgsl.
+    return runner.render_wgpu(scene, width, height, formula="slide")
 
 
 OPTIONS = dict(fresh=True, memory_mb=0, rtol=1e-4, atol=1e-5)
