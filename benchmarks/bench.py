@@ -315,7 +315,10 @@ def bench_scene(name, scene_fn, width, height, path_list, runs, measure_compile,
                 cold[path.precision] = numba_cold_compile_seconds(name, path.precision, path_list)
             row.compile_s, row.compile_added = cold[path.precision].get(path.label, (None, False))
         elif measure_compile and path.backend == "wgpu":
-            row.compile_s = wgpu_cold_compile_seconds(scene, path)
+            try:
+                row.compile_s = wgpu_cold_compile_seconds(scene, path)
+            except Exception as error:  # the render below says what fails, in the row
+                log("  wgpu compile failed: %s" % error)
         if path.backend == "reference":
             row.scale = step * step
             if step > 1:
