@@ -22,9 +22,9 @@ from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
 
 __all__ = ["render_numba", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
-# The sphere formula of a numba render unless one is asked for: Ray Tracing Gems ch. 7
-# (docs/robust_defaults.md has the measured cost and the reason).
-DEFAULT_SPHERE_FORMULA = "robust"
+# The sphere formula of a numba render unless one is asked for: the slide's, because Ray
+# Tracing Gems ch. 7 cost 16-18 % on the 64-sphere render (docs/robust_defaults.md).
+DEFAULT_SPHERE_FORMULA = "slide"
 
 
 def sphere_formula_id(formula) -> int:
