@@ -100,7 +100,7 @@ def render_numba(scene, width: int, height: int, precision: str = "float64",
     image = np.empty((height, width, 3), dtype=flat.dtype)
     counts = np.zeros((tiles, 3), dtype=np.int64)
     render_kernel(*args, image, counts)
-    image = image.astype(np.float64)
+    image = image.astype(np.float64, copy=False)  # float64 already: no second 1.5 MB pass
     if with_counts:
         total = counts.sum(axis=0)
         return image, RayCounts(int(total[PRIMARY]), int(total[SHADOW]), int(total[SECONDARY]))
