@@ -193,24 +193,30 @@ def test_numba_float32_kernels_stay_float32():
     import io
     import re
 
+    from rtfgu.kernels import intersect as r
     from rtfgu.kernels import robust as k
 
     f = np.float32
     o, d, lo, hi = (f(0), f(0), f(-5)), (f(0), f(0), f(1)), f(0), f(np.inf)
-    k.sphere_slide(*o, *d, lo, hi, f(0), f(0), f(0), f(1))
-    k.sphere_robust(*o, *d, lo, hi, f(0), f(0), f(0), f(1))
-    k.plane_slide(*o, *d, lo, hi, f(0), f(0), f(0), f(0), f(0), f(1))
+    zero3 = (f(0), f(0), f(0))
+    r.intersect_sphere(o, d, lo, hi, zero3, f(1))
+    r.intersect_sphere_robust(o, d, lo, hi, zero3, f(1))
+    r.sphere_roots(o, f(24), d, lo, hi)
+    r.sphere_roots_robust(o, f(24), f(1), d, lo, hi)
+    r.intersect_plane(o, d, lo, hi, zero3, (f(0), f(0), f(1)))
     k.plane_robust(*o, *d, lo, hi, f(0), f(0), f(0), f(0), f(0), f(1))
     tri = (f(-1), f(-1), f(0), f(2), f(-1), f(0), f(-1), f(2), f(0))
-    k.triangle_slide(*o, *d, lo, hi, *tri)
+    e0, e1 = (f(3), f(0), f(0)), (f(0), f(3), f(0))
+    r.intersect_triangle(o, d, lo, hi, tri[:3], e0, e1, (f(0), f(0), f(9)))
     k.triangle_robust(*o, *d, lo, hi, *tri)
     k.offset_ray_origin(*o, f(1e-6), f(1e-6), f(1e-6), *d, *d)
     k.sphere_point_error(*o, f(0), f(0), f(0))
     k.gamma(5, f(1))
     named64 = re.compile(r"^#?\s*([A-Za-z_]\w*)(\.\d+)? = .* :: float64\s*$")
     checked = 0
-    for fn in (k.sphere_slide, k.sphere_robust, k.plane_slide, k.plane_robust, k.triangle_slide,
-               k.triangle_robust, k.offset_ray_origin, k.sphere_point_error, k.gamma):
+    for fn in (r.intersect_sphere, r.sphere_roots, r.intersect_sphere_robust, r.sphere_roots_robust,
+               r.intersect_plane, k.plane_robust, r.intersect_triangle, k.triangle_robust,
+               k.offset_ray_origin, k.sphere_point_error, k.gamma):
         for sig in fn.signatures:
             if "float32" not in str(sig[-1]):
                 continue

@@ -99,8 +99,9 @@ def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
     the discriminant a (r^2 - |f + (b'/a) d|^2) is the squared distance from the centre to
     the line (no b^2 - 4ac cancellation), and the roots c / q and q / a with
     q = b' + sign(b') sqrt(disc) subtract no two nearly equal numbers. The inputs are finite
-    (compile_scene refuses anything else), so unlike rtfgu.kernels.robust.sphere_robust it
-    needs no finiteness test: a zero direction gives NaN, and NaN fails every comparison."""
+    (compile_scene refuses anything else), so it needs no finiteness test (the hard cases'
+    rtfgu.kernels.robust.batch_sphere adds one): a zero direction gives NaN, and NaN fails
+    every comparison."""
     a = dot(direction, direction)
     # Through 1 / a, which depends on the ray only: inlined in intersect_scene's loop over
     # the spheres it is computed once per ray, and a miss costs no division (two roundings

@@ -1,18 +1,21 @@
-"""numba versions of the slide and the robust single-ray intersections, and batch evaluators.
+"""numba robust single-ray intersections and the batch evaluators of rtfgu.hardcases.
 
-The slide functions repeat rtfgu/shapes/ operation for operation; the robust ones repeat
-rtfgu/robust.py (Ray Tracing Gems ch. 7 for spheres, Woop, Benthin and Wald 2013 for
-triangles, compensated dot products for planes, PBRT-v4 6.8.6 for spawned rays); see the
-docstrings there for the reasons and sources.
+The batch evaluators run the render's own kernels (rtfgu/kernels/intersect.py) for the
+formulas the render has: the slide sphere, plane and triangle tests and the robust sphere
+(Ray Tracing Gems ch. 7), so the hard cases measure the code that renders. The robust plane
+and triangle tests and the spawned-ray offset exist only here; they repeat rtfgu/robust.py
+(Woop, Benthin and Wald 2013 for triangles, compensated dot products for planes, PBRT-v4
+6.8.6 for spawned rays); see the docstrings there for the reasons and sources.
 
-Every function takes scalars and returns the hit distance t in [tmin, tmax), or inf on a
-miss. They are generic over float32 and float64: every literal goes through ``F = type(x)``,
-because a bare numba literal is float64 (or int64) and would silently promote float32
-arithmetic to float64, which would hide exactly the float32 failures these kernels measure.
-The one deliberate float64 computation is the fallback of the watertight test for edge
-functions that round to zero (Woop et al. 2013, section 3). ``error_model="numpy"`` keeps
-IEEE division (x / 0 is inf or NaN) instead of numba's default ZeroDivisionError, so that
-bad input gives a defined miss and never an exception.
+Every function returns the hit distance t, or inf on a miss: in [tmin, tmax) for the
+functions here, in [tmin, tmax] for the render kernels (intersect.py says why; the tie
+at tmax changes no hard-case result). They are generic over float32 and float64: every literal
+goes through ``F = type(x)``, because a bare numba literal is float64 (or int64) and would
+silently promote float32 arithmetic to float64, which would hide exactly the float32
+failures these kernels measure. The one deliberate float64 computation is the fallback of
+the watertight test for edge functions that round to zero (Woop et al. 2013, section 3).
+``error_model="numpy"`` keeps IEEE division (x / 0 is inf or NaN) instead of numba's
+default ZeroDivisionError, so that bad input gives a defined miss and never an exception.
 
 Shape parameters, one row per ray (the hard-case families of rtfgu.hardcases):
     sphere    (N, 4)  center, radius
@@ -29,6 +32,9 @@ from numba import njit
 
 from ..layout import PLANE, SPHERE, TRIANGLE
 from ..shading import SPAWN_EPSILON
+from .float3 import cross, lit, row3, sub
+from .intersect import (intersect_plane, intersect_sphere, intersect_sphere_robust,
+                        intersect_triangle)
 
 SLIDE = 0
 ROBUST = 1
@@ -42,86 +48,7 @@ def _finite6(a, b, c, d, e, f):
     return s - s == type(a)(0.0)
 
 
-# --- sphere ---------------------------------------------------------------------------
-
-@njit(cache=True, error_model="numpy")
-def sphere_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
-    """Lecture 01 "Ray-Sphere Intersection": a t^2 + b t + c = 0, near root first."""
-    F = type(ox)
-    tx = ox - cx
-    ty = oy - cy
-    tz = oz - cz
-    a = dx * dx + dy * dy + dz * dz
-    b = F(2.0) * (tx * dx + ty * dy + tz * dz)
-    c = (tx * tx + ty * ty + tz * tz) - radius * radius
-    disc = (b * b) - (F(4.0) * a * c)
-    if disc < F(0.0):
-        return F(math.inf)
-    e = math.sqrt(disc)
-    denom = F(2.0) * a
-    t = (-b - e) / denom
-    if t >= tmin and t < tmax:
-        return t
-    t = (-b + e) / denom
-    if t >= tmin and t < tmax:
-        return t
-    return F(math.inf)
-
-
-@njit(cache=True, error_model="numpy")
-def sphere_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, cx, cy, cz, radius):
-    """Ray Tracing Gems ch. 7 (Haines et al. 2019): disc = a (r^2 - |f + (b'/a) d|^2),
-    t0 = c / q, t1 = q / a with q = b' + sign(b') sqrt(disc). Non-finite input misses."""
-    F = type(ox)
-    inf = F(math.inf)
-    if not (_finite6(ox, oy, oz, dx, dy, dz) and _finite6(cx, cy, cz, radius, tmin, F(0.0))):
-        return inf
-    fx = ox - cx
-    fy = oy - cy
-    fz = oz - cz
-    a = dx * dx + dy * dy + dz * dz
-    b = -(fx * dx + fy * dy + fz * dz)
-    c = (fx * fx + fy * fy + fz * fz) - radius * radius
-    s = b / a
-    lx = fx + s * dx
-    ly = fy + s * dy
-    lz = fz + s * dz
-    disc = a * ((radius * radius) - (lx * lx + ly * ly + lz * lz))
-    if not (disc >= F(0.0)):
-        return inf
-    root = math.sqrt(disc)
-    q = b + root if b >= F(0.0) else b - root
-    if q == F(0.0):
-        t0 = F(0.0)
-        t1 = F(0.0)
-    else:
-        t0 = c / q
-        t1 = q / a
-    if t0 > t1:
-        t0, t1 = t1, t0
-    if t0 >= tmin and t0 < tmax:
-        return t0
-    if t1 >= tmin and t1 < tmax:
-        return t1
-    return inf
-
-
 # --- plane ----------------------------------------------------------------------------
-
-@njit(cache=True, error_model="numpy")
-def plane_slide(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
-    """Lecture 01 "Ray-Plane Intersection": t = (C - A) / B with A = o.n, B = d.n, C = a.n."""
-    F = type(ox)
-    A = ox * nx + oy * ny + oz * nz
-    B = dx * nx + dy * ny + dz * nz
-    C = px * nx + py * ny + pz * nz
-    if B == F(0.0):
-        return F(math.inf)
-    t = (C - A) / B
-    if t >= tmin and t < tmax:
-        return t
-    return F(math.inf)
-
 
 @njit(cache=True, error_model="numpy")
 def _two_sum(a, b):
@@ -203,41 +130,6 @@ def plane_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
 
 
 # --- triangle -------------------------------------------------------------------------
-
-@njit(cache=True, error_model="numpy")
-def triangle_slide(ox, oy, oz, dx, dy, dz, tmin, tmax,
-                   v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
-    """02562 "Ray-triangle intersection": e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1,
-    t = ((v0 - o) . n) / (w . n), beta and gamma from ((v0 - o) x w) . e1 and . e0."""
-    F = type(ox)
-    inf = F(math.inf)
-    e0x = v1x - v0x
-    e0y = v1y - v0y
-    e0z = v1z - v0z
-    e1x = v2x - v0x
-    e1y = v2y - v0y
-    e1z = v2z - v0z
-    nx = e0y * e1z - e0z * e1y
-    ny = e0z * e1x - e0x * e1z
-    nz = e0x * e1y - e0y * e1x
-    denom = dx * nx + dy * ny + dz * nz
-    if denom == F(0.0):
-        return inf
-    ax = v0x - ox
-    ay = v0y - oy
-    az = v0z - oz
-    t = (ax * nx + ay * ny + az * nz) / denom
-    if not (t >= tmin and t < tmax):
-        return inf
-    cx = ay * dz - az * dy
-    cy = az * dx - ax * dz
-    cz = ax * dy - ay * dx
-    beta = (cx * e1x + cy * e1y + cz * e1z) / denom
-    gamma = -(cx * e0x + cy * e0y + cz * e0z) / denom
-    if beta >= F(0.0) and gamma >= F(0.0) and beta + gamma <= F(1.0):
-        return t
-    return inf
-
 
 @njit(cache=True, error_model="numpy")
 def _pick(x, y, z, k):
@@ -392,18 +284,24 @@ def offset_ray_origin(px, py, pz, ex, ey, ez, nx, ny, nz, wx, wy, wz):
 
 @njit(cache=True, error_model="numpy")
 def batch_sphere(formula, origins, directions, tmin, tmax, shapes):
+    """The render's sphere tests, one ray per row. The robust one runs behind a finiteness
+    test: the render kernel relies on compile_scene for finite input, and the hard cases
+    include non-finite rays and spheres, which must be a defined miss."""
     n = origins.shape[0]
     out = np.empty(n, dtype=origins.dtype)
     for i in range(n):
-        o = origins[i]
-        d = directions[i]
-        s = shapes[i]
+        o = row3(origins, i, 0)
+        d = row3(directions, i, 0)
+        center = row3(shapes, i, 0)
+        radius = shapes[i, 3]
         if formula == ROBUST:
-            out[i] = sphere_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
-                                   s[0], s[1], s[2], s[3])
+            if (_finite6(o[0], o[1], o[2], d[0], d[1], d[2])
+                    and _finite6(center[0], center[1], center[2], radius, tmin[i], lit(0, radius))):
+                out[i] = intersect_sphere_robust(o, d, tmin[i], tmax[i], center, radius)
+            else:
+                out[i] = lit(math.inf, radius)
         else:
-            out[i] = sphere_slide(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
-                                  s[0], s[1], s[2], s[3])
+            out[i] = intersect_sphere(o, d, tmin[i], tmax[i], center, radius)
     return out
 
 
@@ -419,13 +317,15 @@ def batch_plane(formula, origins, directions, tmin, tmax, shapes):
             out[i] = plane_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
                                   s[0], s[1], s[2], s[3], s[4], s[5])
         else:
-            out[i] = plane_slide(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
-                                 s[0], s[1], s[2], s[3], s[4], s[5])
+            out[i] = intersect_plane(row3(origins, i, 0), row3(directions, i, 0), tmin[i],
+                                     tmax[i], row3(shapes, i, 0), row3(shapes, i, 3))
     return out
 
 
 @njit(cache=True, error_model="numpy")
 def batch_triangle(formula, origins, directions, tmin, tmax, shapes):
+    """The slide test is the render's, on e0 = v1 - v0, e1 = v2 - v0 and n = e0 x e1 as in
+    rtfgu.layout, computed here in the rows' own precision."""
     n = origins.shape[0]
     out = np.empty(n, dtype=origins.dtype)
     for i in range(n):
@@ -436,8 +336,11 @@ def batch_triangle(formula, origins, directions, tmin, tmax, shapes):
             out[i] = triangle_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
                                      s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
         else:
-            out[i] = triangle_slide(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
-                                    s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
+            v0 = row3(shapes, i, 0)
+            e0 = sub(row3(shapes, i, 3), v0)
+            e1 = sub(row3(shapes, i, 6), v0)
+            out[i] = intersect_triangle(row3(origins, i, 0), row3(directions, i, 0), tmin[i],
+                                        tmax[i], v0, e0, e1, cross(e0, e1))
     return out
 
 
