@@ -11,7 +11,8 @@ the test suite ``tests/test_hardcases*.py`` measures both versions on ``rtfgu.ha
 
 All functions follow ``Shape.intersect_p``: True on a hit in [ray.tmin, ray.tmax), and then
 ``ray.tmax`` is the hit distance. They run in Python floats (float64); the numba versions for
-float32 and float64 are in ``rtfgu.kernels.robust`` and the WGSL ones in
+float32 and float64 are in ``rtfgu.kernels.intersect`` (the sphere, which the render kernel
+uses) and ``rtfgu.kernels.robust`` (triangle, plane, spawn offset), and the WGSL ones in
 ``rtfgu/wgsl/robust_*.wgsl``.
 """
 from __future__ import annotations
