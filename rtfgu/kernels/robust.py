@@ -74,36 +74,31 @@ def _two_product(a, b):
 
 
 @njit(cache=True, error_model="numpy")
+def _dot2_add(p, s, x, y):
+    # One step of Ogita, Rump and Oishi 2005, "Dot2": add x * y to the sum p with its
+    # running error s, both roundings caught exactly by TwoProduct and TwoSum.
+    h, r = _two_product(x, y)
+    p, q = _two_sum(p, h)
+    return p, s + (q + r)
+
+
+@njit(cache=True, error_model="numpy")
 def _dot2_3(x0, x1, x2, y0, y1, y2):
-    # Ogita, Rump and Oishi 2005, "Dot2", for three terms.
+    # "Dot2" for three terms.
     p, s = _two_product(x0, y0)
-    h, r = _two_product(x1, y1)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
-    h, r = _two_product(x2, y2)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
+    p, s = _dot2_add(p, s, x1, y1)
+    p, s = _dot2_add(p, s, x2, y2)
     return p + s
 
 
 @njit(cache=True, error_model="numpy")
 def _dot2_6(x0, x1, x2, x3, x4, x5, y0, y1, y2, y3, y4, y5):
     p, s = _two_product(x0, y0)
-    h, r = _two_product(x1, y1)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
-    h, r = _two_product(x2, y2)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
-    h, r = _two_product(x3, y3)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
-    h, r = _two_product(x4, y4)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
-    h, r = _two_product(x5, y5)
-    p, q = _two_sum(p, h)
-    s = s + (q + r)
+    p, s = _dot2_add(p, s, x1, y1)
+    p, s = _dot2_add(p, s, x2, y2)
+    p, s = _dot2_add(p, s, x3, y3)
+    p, s = _dot2_add(p, s, x4, y4)
+    p, s = _dot2_add(p, s, x5, y5)
     return p + s
 
 
