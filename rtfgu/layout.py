@@ -1,110 +1,128 @@
 """The flat scene layout shared by the numba kernels and the WGSL program.
 
-One module owns the memory layout: dtypes, shape-kind ids, camera-kind ids, shader ids,
-and the order of the fields in every row. ``compile_scene`` turns a lecture-layer ``Scene``
-into these arrays after validating it, so bad input never reaches a kernel.
+One module owns the memory layout: dtypes, ids, and the place of every field in every
+row. The records of shapes and lights come from their kinds in rtfgu.registry, so a new
+kind brings its row with it; ``compile_scene`` turns a lecture-layer ``Scene`` into these
+arrays after validating it, so bad input never reaches a kernel.
 
 Every row is a whole number of 4-component vectors, so the same arrays upload to WGSL
-``array<vec4f, N>`` buffers unchanged (16-byte stride in float32).
+``array<Record, N>`` buffers unchanged (16-byte stride in float32). A vector field starts
+a new vec4; a scalar takes the unused fourth component of the vector declared just before
+it, or the next free column. For example
 
     camera      (4, 4)   ORTHOGRAPHIC: [left, right, bottom, top], [hither, yon, tmin, 0], 0, 0
                          PINHOLE:      [eye, d], [b1, aspect], [b2, 0], [v, 0]
-    planes      (P, 8)   [point, 0], [normal, 0]             (the normal as given, not normalised)
-    triangles   (T, 16)  [v0, 0], [e0, 0], [e1, 0], [n, 0]   (e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1)
-    spheres     (S, 4)   [center, radius]
-    *_index     (P|T|S,) int32: the shape's place in Scene.shapes, which is also its material row
-    materials   (N, 16)  [color, 0], [specular, shininess], [emission, ior], [0, 0, 0, 0]
-    shaders     (N,)     int32 shader id (rtfgu.material: BASE_COLOR, LAMBERTIAN, ...)
-    lights      (L, 8)   [position, 0], [intensity, 0]
-    background  (4,)     [rgb, 0]
+    Plane       (P, 8)   [point, 0], [normal, 0]             (the normal as given, not normalised)
+    Triangle    (T, 16)  [v0, 0], [e0, 0], [e1, 0], [n, 0]   (e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1)
+    Sphere      (S, 4)   [center, radius]
+    Material    (N, 12)  [color, 0], [specular, shininess], [emission, ior]
+    PointLight  (L, 8)   [position, 0], [intensity, 0]
+
+A shape table comes with an int32 index: each row's place in Scene.shapes, which is also
+its material row (and decides ties: the earlier shape wins). ``shaders`` holds each
+shape's shader id; ``background`` is [rgb, 0].
 """
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from .cameras import OrthographicCamera, PinholeCamera
-from .material import SHADER_NAMES
 from .ray import RAY_EPSILON
-from .shapes import Plane, Sphere, Triangle
+from .registry import LIGHTS, SHADER_BY_ID, SHAPE_IDS, SHAPES, light_kind_of, shape_kind_of
 
-# Shape kinds and camera kinds, closed lists dispatched by id (as PBRT's tagged shapes).
-PLANE = 0
-TRIANGLE = 1
-SPHERE = 2
-SHAPE_KINDS = {PLANE: "plane", TRIANGLE: "triangle", SPHERE: "sphere"}
+DTYPES = {"float64": np.float64, "float32": np.float32}
+
+
+def pack_fields(fields) -> tuple:
+    """(row width, ((field, components, column), ...)) for ((field, components), ...)."""
+    placed, free_w, column = [], None, 0
+    for name, components in fields:
+        if components == 3:
+            column = -(-column // 4) * 4
+            placed.append((name, 3, column))
+            free_w = column + 3
+            column += 4
+        elif components == 1:
+            if free_w is not None:
+                placed.append((name, 1, free_w))
+                free_w = None
+            else:
+                placed.append((name, 1, column))
+                column += 1
+        else:
+            raise ValueError("a layout field has 1 or 3 components, %s has %d" % (name, components))
+    return -(-column // 4) * 4, tuple(placed)
+
+
+MATERIAL_FIELDS = (("color", 3), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1))
+CAMERA_FIELDS = {
+    "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
+                           ("yon", 1), ("tmin", 1)),
+    "PinholeCamera": (("eye", 3), ("d", 1), ("b1", 3), ("aspect", 1), ("b2", 3), ("v", 3)),
+}
+CAMERA_ROWS = 4
+CAMERA_WIDTH = CAMERA_ROWS * 4
+
+# Every row as a record: name -> (row width, ((field, components, column), ...)). The WGSL
+# structs are generated from these records (rtfgu/wgsl/structs.py).
+RECORDS = {kind.record: pack_fields(kind.fields) for kind in SHAPES + LIGHTS}
+RECORDS["Material"] = pack_fields(MATERIAL_FIELDS)
+for _name, _fields in CAMERA_FIELDS.items():
+    RECORDS[_name] = (CAMERA_WIDTH, pack_fields(_fields)[1])
+
+
+def offset(record: str, name: str) -> int:
+    """The column of field ``name`` in ``record``."""
+    for field_name, _, column in RECORDS[record][1]:
+        if field_name == name:
+            return column
+    raise KeyError("%s has no field %r" % (record, name))
+
+
+def width(record: str) -> int:
+    return RECORDS[record][0]
+
+
+# Shape kind ids: places in rtfgu.registry.SHAPES (a closed list dispatched by id, as PBRT's
+# tagged shapes).
+SHAPE_KINDS = {i: kind.name for i, kind in enumerate(SHAPES)}
+PLANE = SHAPE_IDS["plane"]
+TRIANGLE = SHAPE_IDS["triangle"]
+SPHERE = SHAPE_IDS["sphere"]
+DISK = SHAPE_IDS["disk"]
 
 ORTHOGRAPHIC = 0
 PINHOLE = 1
 CAMERA_KINDS = {ORTHOGRAPHIC: "orthographic", PINHOLE: "pinhole"}
 
-SHADER_IDS = {name: shader_id for shader_id, name in SHADER_NAMES.items()}
-
-DTYPES = {"float64": np.float64, "float32": np.float32}
-
-# Row widths in floats (each a multiple of 4: whole vec4s).
-CAMERA_ROWS = 4
-PLANE_WIDTH = 8
-TRIANGLE_WIDTH = 16
-SPHERE_WIDTH = 4
-MATERIAL_WIDTH = 16
-LIGHT_WIDTH = 8
-
-# Column offsets inside a row, named so that kernels and WGSL never use bare numbers.
-MAT_COLOR = 0
-MAT_SPECULAR = 4
-MAT_SHININESS = 7
-MAT_EMISSION = 8
-MAT_IOR = 11
-LIGHT_POSITION = 0
-LIGHT_INTENSITY = 4
-TRI_V0 = 0
-TRI_E0 = 4
-TRI_E1 = 8
-TRI_N = 12
-PLANE_POINT = 0
-PLANE_NORMAL = 4
-SPHERE_CENTER = 0
-SPHERE_RADIUS = 3
-# The camera block (CAMERA_ROWS x 4 floats, read as one flat row of 16).
-ORTHO_LEFT = 0
-ORTHO_RIGHT = 1
-ORTHO_BOTTOM = 2
-ORTHO_TOP = 3
-ORTHO_HITHER = 4
-ORTHO_YON = 5
-ORTHO_TMIN = 6
-PINHOLE_EYE = 0
-PINHOLE_D = 3
-PINHOLE_B1 = 4
-PINHOLE_ASPECT = 7
-PINHOLE_B2 = 8
-PINHOLE_V = 12
-CAMERA_WIDTH = CAMERA_ROWS * 4
-
-# Every row as a record: name -> (row width, ((field, components, column offset), ...)).
-# Components 3 is a vector, 1 a scalar. The WGSL structs are generated from these records
-# (rtfgu/wgsl/structs.py), so a field moved here moves in the shader too.
-RECORDS = {
-    "Plane": (PLANE_WIDTH, (("point", 3, PLANE_POINT), ("normal", 3, PLANE_NORMAL))),
-    "Triangle": (TRIANGLE_WIDTH, (("v0", 3, TRI_V0), ("e0", 3, TRI_E0), ("e1", 3, TRI_E1),
-                                  ("n", 3, TRI_N))),
-    "Sphere": (SPHERE_WIDTH, (("center", 3, SPHERE_CENTER), ("radius", 1, SPHERE_RADIUS))),
-    "Material": (MATERIAL_WIDTH, (("color", 3, MAT_COLOR), ("specular", 3, MAT_SPECULAR),
-                                  ("shininess", 1, MAT_SHININESS), ("emission", 3, MAT_EMISSION),
-                                  ("ior", 1, MAT_IOR))),
-    "PointLight": (LIGHT_WIDTH, (("position", 3, LIGHT_POSITION),
-                                 ("intensity", 3, LIGHT_INTENSITY))),
-    "OrthographicCamera": (CAMERA_WIDTH, (("left", 1, ORTHO_LEFT), ("right", 1, ORTHO_RIGHT),
-                                          ("bottom", 1, ORTHO_BOTTOM), ("top", 1, ORTHO_TOP),
-                                          ("hither", 1, ORTHO_HITHER), ("yon", 1, ORTHO_YON),
-                                          ("tmin", 1, ORTHO_TMIN))),
-    "PinholeCamera": (CAMERA_WIDTH, (("eye", 3, PINHOLE_EYE), ("d", 1, PINHOLE_D),
-                                     ("b1", 3, PINHOLE_B1), ("aspect", 1, PINHOLE_ASPECT),
-                                     ("b2", 3, PINHOLE_B2), ("v", 3, PINHOLE_V))),
-}
+# Columns the hand-written kernels read (the generated ones read RECORDS).
+MAT_COLOR = offset("Material", "color")
+MAT_SPECULAR = offset("Material", "specular")
+MAT_SHININESS = offset("Material", "shininess")
+MAT_EMISSION = offset("Material", "emission")
+MAT_IOR = offset("Material", "ior")
+MATERIAL_WIDTH = width("Material")
+LIGHT_POSITION = offset("PointLight", "position")
+LIGHT_INTENSITY = offset("PointLight", "intensity")
+SPHERE_CENTER = offset("Sphere", "center")
+SPHERE_RADIUS = offset("Sphere", "radius")
+ORTHO_LEFT = offset("OrthographicCamera", "left")
+ORTHO_RIGHT = offset("OrthographicCamera", "right")
+ORTHO_BOTTOM = offset("OrthographicCamera", "bottom")
+ORTHO_TOP = offset("OrthographicCamera", "top")
+ORTHO_HITHER = offset("OrthographicCamera", "hither")
+ORTHO_YON = offset("OrthographicCamera", "yon")
+ORTHO_TMIN = offset("OrthographicCamera", "tmin")
+PINHOLE_EYE = offset("PinholeCamera", "eye")
+PINHOLE_D = offset("PinholeCamera", "d")
+PINHOLE_B1 = offset("PinholeCamera", "b1")
+PINHOLE_ASPECT = offset("PinholeCamera", "aspect")
+PINHOLE_B2 = offset("PinholeCamera", "b2")
+PINHOLE_V = offset("PinholeCamera", "v")
 
 # A far-away tmax for APIs that cannot hold infinity (WGSL has no inf literal).
 FAR = 1.0e30
@@ -112,48 +130,63 @@ FAR = 1.0e30
 
 @dataclass
 class FlatScene:
-    """A scene as flat arrays, in one float dtype. ``features`` names what the scene uses
-    (shape kinds, shader names, "lights", "shadows", "ray_direction") so that a path can
-    leave out what a scene does not need."""
+    """A scene as flat arrays, in one float dtype. ``shapes`` maps every registered shape
+    kind's name to (table, index), empty for a kind the scene lacks; ``lights`` every light
+    kind's name to its table. ``features`` names what the scene uses (shape kinds, shader
+    names, "lights", "shadows", "ray_direction") so that a path leaves out the rest."""
 
     dtype: type
     camera_kind: int
     camera: np.ndarray
-    planes: np.ndarray
-    plane_index: np.ndarray
-    triangles: np.ndarray
-    triangle_index: np.ndarray
-    spheres: np.ndarray
-    sphere_index: np.ndarray
+    shapes: dict
     materials: np.ndarray
     shaders: np.ndarray
-    lights: np.ndarray
+    lights: dict
     background: np.ndarray
     shadows: bool
     show_ray_direction: bool
     features: frozenset = field(default_factory=frozenset)
+
+    def table(self, kind: str) -> np.ndarray:
+        return self.shapes[kind][0]
+
+    def index(self, kind: str) -> np.ndarray:
+        return self.shapes[kind][1]
+
+    def count(self, kind: str) -> int:
+        return len(self.shapes[kind][0])
+
+    @property
+    def light_count(self) -> int:
+        return sum(len(t) for t in self.lights.values())
 
 
 def _vec(v) -> list:
     return [v.x, v.y, v.z]
 
 
+def pack_row(record: str, obj) -> list:
+    """The row of ``record`` holding the attributes of ``obj`` named by its fields."""
+    row = [0.0] * width(record)
+    for name, components, column in RECORDS[record][1]:
+        value = getattr(obj, name)
+        row[column:column + components] = _vec(value) if components == 3 else [float(value)]
+    return row
+
+
 def compile_camera(camera) -> tuple[int, np.ndarray]:
-    rows = np.zeros((CAMERA_ROWS, 4), dtype=np.float64)
     if isinstance(camera, OrthographicCamera):
-        rows[0] = [camera.left, camera.right, camera.bottom, camera.top]
-        yon = camera.yon if math.isfinite(camera.yon) else FAR
-        # gen_ray's ray: origin z = hither, tmin = 0.00001, tmax = yon - hither
-        rows[1] = [camera.hither, yon, RAY_EPSILON, 0.0]
-        return ORTHOGRAPHIC, rows
-    if isinstance(camera, PinholeCamera):
-        rows[0] = _vec(camera.eye) + [camera.d]
-        rows[1] = _vec(camera.b1) + [camera.aspect]
-        rows[2] = _vec(camera.b2) + [0.0]
-        rows[3] = _vec(camera.v) + [0.0]
-        return PINHOLE, rows
-    raise ValueError("Scene.camera: the flat layout knows OrthographicCamera and PinholeCamera, "
-                     "got %s" % type(camera).__name__)
+        # gen_ray's ray: origin z = hither, tmin = RAY_EPSILON, tmax = yon - hither.
+        source = SimpleNamespace(left=camera.left, right=camera.right, bottom=camera.bottom,
+                                 top=camera.top, hither=camera.hither, tmin=RAY_EPSILON,
+                                 yon=camera.yon if math.isfinite(camera.yon) else FAR)
+        kind, record = ORTHOGRAPHIC, "OrthographicCamera"
+    elif isinstance(camera, PinholeCamera):
+        kind, record, source = PINHOLE, "PinholeCamera", camera
+    else:
+        raise ValueError("Scene.camera: the flat layout knows OrthographicCamera and PinholeCamera, "
+                         "got %s" % type(camera).__name__)
+    return kind, np.array(pack_row(record, source), dtype=np.float64).reshape(CAMERA_ROWS, 4)
 
 
 def compile_scene(scene, precision: str = "float64") -> FlatScene:
@@ -164,64 +197,60 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     scene.validate()
     camera_kind, camera = compile_camera(scene.camera)
 
-    planes, plane_index = [], []
-    triangles, triangle_index = [], []
-    spheres, sphere_index = [], []
+    rows = {kind.name: ([], []) for kind in SHAPES}
     materials, shaders = [], []
     features = {CAMERA_KINDS[camera_kind]}
     for i, shape in enumerate(scene.shapes):
-        if isinstance(shape, Plane):
-            planes.append(_vec(shape.point) + [0.0] + _vec(shape.normal) + [0.0])
-            plane_index.append(i)
-            features.add("plane")
-        elif isinstance(shape, Triangle):
-            triangles.append(_vec(shape.v0) + [0.0] + _vec(shape.e0) + [0.0]
-                             + _vec(shape.e1) + [0.0] + _vec(shape.n) + [0.0])
-            triangle_index.append(i)
-            features.add("triangle")
-        elif isinstance(shape, Sphere):
-            spheres.append(_vec(shape.center) + [shape.radius])
-            sphere_index.append(i)
-            features.add("sphere")
-        else:
-            raise ValueError("Scene.shapes[%d]: the flat layout knows Plane, Triangle and Sphere, "
-                             "got %s" % (i, type(shape).__name__))
+        _, kind = shape_kind_of(shape)
+        if kind is None:
+            raise ValueError("Scene.shapes[%d]: the flat layout knows %s, got %s"
+                             % (i, ", ".join(k.record for k in SHAPES), type(shape).__name__))
+        rows[kind.name][0].append(pack_row(kind.record, shape))
+        rows[kind.name][1].append(i)
+        features.add(kind.name)
         m = shape.material
-        materials.append(_vec(shape.color) + [0.0] + _vec(m.specular) + [m.shininess]
-                         + _vec(m.emission) + [m.ior] + [0.0, 0.0, 0.0, 0.0])
+        materials.append(pack_row("Material", SimpleNamespace(
+            color=shape.color, specular=m.specular, shininess=m.shininess, emission=m.emission,
+            ior=m.ior)))
         shaders.append(m.shader)
-        features.add(SHADER_NAMES[m.shader])
+        features.add(SHADER_BY_ID[m.shader].name)
 
-    lights = [_vec(light.position) + [0.0] + _vec(light.intensity) + [0.0] for light in scene.lights]
-    if lights:
+    lights = {kind.name: [] for kind in LIGHTS}
+    for j, light in enumerate(scene.lights):
+        _, kind = light_kind_of(light)
+        if kind is None:
+            raise ValueError("Scene.lights[%d]: the flat layout knows %s, got %s"
+                             % (j, ", ".join(k.record for k in LIGHTS), type(light).__name__))
+        lights[kind.name].append(pack_row(kind.record, light))
+    if scene.lights:
         features.add("lights")
-    if scene.shadows and lights:
+    if scene.shadows and scene.lights:
         features.add("shadows")
     if scene.show_ray_direction:
         features.add("ray_direction")
 
-    def table(rows, width):
-        return np.array(rows, dtype=dtype).reshape(len(rows), width)
-
-    def index(rows):
-        return np.array(rows, dtype=np.int32)
+    def table(rows, record):
+        return np.array(rows, dtype=dtype).reshape(len(rows), width(record))
 
     flat = FlatScene(
         dtype=dtype,
         camera_kind=camera_kind,
         camera=camera.astype(dtype),
-        planes=table(planes, PLANE_WIDTH), plane_index=index(plane_index),
-        triangles=table(triangles, TRIANGLE_WIDTH), triangle_index=index(triangle_index),
-        spheres=table(spheres, SPHERE_WIDTH), sphere_index=index(sphere_index),
-        materials=table(materials, MATERIAL_WIDTH), shaders=index(shaders),
-        lights=table(lights, LIGHT_WIDTH),
+        shapes={kind.name: (table(rows[kind.name][0], kind.record),
+                            np.array(rows[kind.name][1], dtype=np.int32)) for kind in SHAPES},
+        materials=table(materials, "Material"),
+        shaders=np.array(shaders, dtype=np.int32),
+        lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
         background=np.array(_vec(scene.background) + [0.0], dtype=dtype),
         shadows=bool(scene.shadows),
         show_ray_direction=bool(scene.show_ray_direction),
         features=frozenset(features),
     )
-    for name in ("camera", "planes", "triangles", "spheres", "materials", "lights", "background"):
-        if not np.all(np.isfinite(getattr(flat, name))):
+    arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]
+    arrays += [(kind.table, flat.table(kind.name)) for kind in SHAPES]
+    arrays += [(kind.table, flat.lights[kind.name]) for kind in LIGHTS]
+    for name, array in arrays:
+        if not np.all(np.isfinite(array)):
             raise ValueError("Scene: %s is not finite in %s (a value overflows the precision)"
                              % (name, precision))
     return flat

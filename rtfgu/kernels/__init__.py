@@ -1,10 +1,11 @@
 """The numba path: the lecture layer's renderer as jitted kernels over the flat layout.
 
 ``render_numba(scene, width, height, precision)`` compiles the scene (rtfgu.layout, which
-validates it), picks the kernel for what the scene has, and runs it on all cores. The
-kernel modules follow the slides: camera.gen_ray, intersect.intersect_plane /
-intersect_triangle / intersect_sphere / intersect_scene, lights.sample_point_light,
-shaders.lambertian / phong / mirror / transparent / shade, render.trace / render_kernel.
+validates it), groups its arrays per kind (``kernel_arguments``) and runs the kernel on all
+cores; numba compiles one kernel per combination of kinds present. The kernel modules
+follow the slides: camera.gen_ray, intersect.intersect_<kind>, lights.sample_point_light,
+shaders (the BRDF terms and continuations), dispatch (intersect_scene, in_shadow, the light
+loop and shade, generated from rtfgu.registry), render.trace / render_kernel.
 """
 from __future__ import annotations
 
@@ -14,10 +15,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_scene
-from ..material import GLOSSY, MIRROR, TRANSPARENT
+from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
 from ..shading import MAX_DEPTH
 from .culling import cone_table
-from .intersect import SPHERE_FORMULAS, sphere_eye_terms
+from .dispatch import FORMULAS
+from .intersect import sphere_eye_terms
 from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
 
 __all__ = ["render_numba", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
@@ -28,13 +30,13 @@ DEFAULT_SPHERE_FORMULA = "slide"
 
 
 def sphere_formula_id(formula) -> int:
-    """intersect.SPHERE_SLIDE / SPHERE_ROBUST for "slide" / "robust" (None: the default)."""
+    """The formula id (rtfgu.kernels.dispatch.FORMULAS) of "slide" / "robust" (None: the
+    default)."""
     if formula is None:
         formula = DEFAULT_SPHERE_FORMULA
-    if formula not in SPHERE_FORMULAS:
-        raise ValueError("formula must be one of %s, got %r"
-                         % (", ".join(SPHERE_FORMULAS), formula))
-    return SPHERE_FORMULAS[formula]
+    if formula not in FORMULAS:
+        raise ValueError("formula must be one of %s, got %r" % (", ".join(FORMULAS), formula))
+    return FORMULAS.index(formula)
 
 
 @dataclass
@@ -58,34 +60,32 @@ def _coprime_stride(n: int) -> int:
 
 
 def kernel_arguments(flat, width: int, height: int, formula=None):
-    """The render_kernel arguments for a FlatScene, with None for what the scene lacks;
-    ``formula`` the sphere formula ("slide", "robust" or None for the default)."""
-    sphere_formula = sphere_formula_id(formula)
-    def present(array, index):
-        return (array, index) if len(array) else (None, None)
-
-    planes, plane_index = present(flat.planes, flat.plane_index)
-    triangles, triangle_index = present(flat.triangles, flat.triangle_index)
-    spheres, sphere_index = present(flat.spheres, flat.sphere_index)
+    """The render_kernel arguments for a FlatScene (rtfgu.kernels.render says how they are
+    grouped), with None for every kind the scene lacks, and the number of tiles."""
+    formula_id = sphere_formula_id(formula)
+    shapes = ()
+    for kind in SHAPES:
+        shapes += ((flat.table(kind.name), flat.index(kind.name)) if flat.count(kind.name)
+                   else (None, None))
+    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS)
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
-    sphere_eye = cones = None
     camera64 = camera.astype(np.float64)
-    if spheres is not None:
-        sphere_eye = np.zeros((len(spheres), 4), dtype=flat.dtype)  # one type for both cameras
-    if spheres is not None and flat.camera_kind == PINHOLE:
-        # Every primary ray starts at the eye: temp and c per sphere once per frame, and a
-        # cone per sphere for the per-tile culling.
-        sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), spheres, sphere_eye)
-        cones = cone_table(camera64, spheres)
-    lights = flat.lights if len(flat.lights) else None
-    continues = any(int(s) in (MIRROR, TRANSPARENT, GLOSSY) for s in flat.shaders)
+    eye = None
+    for kind in SHAPES:
+        table = flat.table(kind.name)
+        if kind.from_eye and len(table) and flat.camera_kind == PINHOLE:
+            # Every primary ray starts at the eye: o - center and c per row once per frame,
+            # and a cone per row for the per-tile culling.
+            terms = np.zeros((len(table), 4), dtype=flat.dtype)
+            sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), table, terms)
+            eye = (terms, cone_table(camera64, table))
+    continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
     bounces = MAX_DEPTH if continues else None
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
-    return (width, height, flat.camera_kind, camera, planes, plane_index, triangles,
-            triangle_index, spheres, sphere_index, sphere_eye, cones, camera64, sphere_formula,
-            flat.materials, flat.shaders,
-            lights, flat.background, flat.shadows, flat.show_ray_direction, bounces,
-            _coprime_stride(tiles)), tiles
+    scene = (flat.materials, flat.shaders, flat.background)
+    settings = (flat.shadows, flat.show_ray_direction, formula_id)
+    return ((width, height), (flat.camera_kind, camera, camera64), shapes, lights, scene, eye,
+            settings, bounces, _coprime_stride(tiles)), tiles
 
 
 def render_numba(scene, width: int, height: int, precision: str = "float64",

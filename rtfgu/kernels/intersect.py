@@ -1,17 +1,19 @@
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
-"Ray-triangle intersection"), operation for operation as in rtfgu/shapes/.
+"Ray-triangle intersection", Suffern ch. 19 "Disks"), operation for operation as in
+rtfgu/shapes/.
 
-Each function returns the hit distance t, or inf on a miss. The interval is [tmin, tmax]
-with tmax included, unlike the slides' [tmin, tmax): the lecture loop visits the shapes in
-Scene order and keeps the first of two equal distances, while ``intersect_scene`` visits
-them kind by kind and breaks such a tie by the Scene index, for which it needs to see it.
+For every shape kind of rtfgu.registry: ``intersect_<kind>(origin, direction, tmin, tmax,
+*fields)`` returns the hit distance t, or inf on a miss, and ``normal_<kind>(position,
+*fields)`` the unit normal; the fields are the kind's layout record in its registry order.
+The interval is [tmin, tmax] with tmax included, unlike the slides' [tmin, tmax):
+``intersect_scene`` (rtfgu.kernels.dispatch) visits the shapes kind by kind and lets the
+earlier shape in Scene.shapes win a tie, for which it needs to see the tie.
 
-Spheres have two formulas, chosen per render by ``sphere_formula``: SPHERE_SLIDE, the
-lecture's quadratic (``intersect_sphere``), and SPHERE_ROBUST, Ray Tracing Gems ch. 7
-(``intersect_sphere_robust``), which keeps its digits for far, small and grazing spheres in
-float32 (rtfgu/robust.py says why; rtfgu.hardcases measures both). The choice is an
-argument, not a separate kernel: one compiled kernel serves both formulas, and the branch on
-it goes the same way for every ray.
+Spheres have two formulas, chosen per render: the lecture's quadratic (``intersect_sphere``)
+and Ray Tracing Gems ch. 7 (``intersect_sphere_robust``), which keeps its digits for far,
+small and grazing spheres in float32 (rtfgu/robust.py says why; rtfgu.hardcases measures
+both). Rays from a pinhole eye share o - center and c per sphere (``sphere_eye_terms``),
+so the kernels test them with ``sphere_roots``/``sphere_roots_robust`` directly.
 """
 from __future__ import annotations
 
@@ -19,11 +21,10 @@ import math
 
 from numba import njit
 
-from ..layout import (PLANE, PLANE_NORMAL, PLANE_POINT, SPHERE, SPHERE_CENTER, SPHERE_RADIUS,
-                      TRI_E0, TRI_E1, TRI_N, TRI_V0, TRIANGLE)
-from .float3 import add, cross, dot, lit, row3, scale, sub
+from ..layout import SPHERE_CENTER, SPHERE_RADIUS
+from .float3 import add, cross, dot, lit, normalize, row3, scale, sub
 
-# sphere_formula values (as rtfgu.kernels.robust.SLIDE / ROBUST, and FORMULAS below).
+# Formula ids of a render (rtfgu.kernels.dispatch.FORMULAS): the slide's and the robust one.
 SPHERE_SLIDE = 0
 SPHERE_ROBUST = 1
 SPHERE_FORMULAS = {"slide": SPHERE_SLIDE, "robust": SPHERE_ROBUST}
@@ -140,14 +141,6 @@ def intersect_sphere_robust(origin, direction, tmin, tmax, center, radius):
 
 
 @njit(cache=True, error_model="numpy")
-def sphere_test(sphere_formula, origin, direction, tmin, tmax, center, radius):
-    """The render's sphere test: the formula that ``sphere_formula`` names."""
-    if sphere_formula == SPHERE_ROBUST:
-        return intersect_sphere_robust(origin, direction, tmin, tmax, center, radius)
-    return intersect_sphere(origin, direction, tmin, tmax, center, radius)
-
-
-@njit(cache=True, error_model="numpy")
 def sphere_eye_terms(eye, spheres, out):
     """temp = eye - center and c = temp . temp - r^2 for every sphere, once per frame."""
     for i in range(spheres.shape[0]):
@@ -159,105 +152,33 @@ def sphere_eye_terms(eye, spheres, out):
         out[i, 3] = dot(temp, temp) - radius * radius
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def intersect_scene(origin, direction, tmin, tmax, planes, plane_index, triangles,
-                    triangle_index, spheres, sphere_index, sphere_eye, candidates, n_candidates,
-                    from_eye, sphere_formula):
-    """``intersect_scene``: the nearest hit over all shapes, as (t, scene index, shape kind,
-    row in that kind's array), scene index -1 on a miss. A kind whose array is None is not in
-    the scene and compiles to nothing. For a ray from the eye (``from_eye``) the spheres
-    tested are the rows ``candidates[:n_candidates]``, with temp and c from ``sphere_eye``;
-    otherwise every sphere. ``sphere_formula`` is SPHERE_SLIDE or SPHERE_ROBUST."""
-    best = -1
-    kind = -1
-    row = -1
-    # A hit replaces the nearest so far if nearer, or as near and earlier in Scene.shapes.
-    if planes is not None:
-        for i in range(planes.shape[0]):
-            t = intersect_plane(origin, direction, tmin, tmax, row3(planes, i, PLANE_POINT),
-                                row3(planes, i, PLANE_NORMAL))
-            idx = plane_index[i]
-            if t < tmax or (t == tmax and idx < best):
-                tmax = t
-                best = idx
-                kind = PLANE
-                row = i
-    if triangles is not None:
-        for i in range(triangles.shape[0]):
-            t = intersect_triangle(origin, direction, tmin, tmax, row3(triangles, i, TRI_V0),
-                                   row3(triangles, i, TRI_E0), row3(triangles, i, TRI_E1),
-                                   row3(triangles, i, TRI_N))
-            idx = triangle_index[i]
-            if t < tmax or (t == tmax and idx < best):
-                tmax = t
-                best = idx
-                kind = TRIANGLE
-                row = i
-    if spheres is not None:
-        # One loop per formula and kind of ray: the formula is the same for every sphere,
-        # and a test of it inside a loop cost the slide formula 5-15 % on 64 spheres.
-        if from_eye and sphere_formula == SPHERE_ROBUST:
-            for k in range(n_candidates):
-                i = candidates[k]
-                t = sphere_roots_robust(row3(sphere_eye, i, 0), sphere_eye[i, 3],
-                                        spheres[i, SPHERE_RADIUS], direction, tmin, tmax)
-                idx = sphere_index[i]
-                if t < tmax or (t == tmax and idx < best):
-                    tmax = t
-                    best = idx
-                    kind = SPHERE
-                    row = i
-        elif from_eye:
-            for k in range(n_candidates):
-                i = candidates[k]
-                t = sphere_roots(row3(sphere_eye, i, 0), sphere_eye[i, 3], direction, tmin, tmax)
-                idx = sphere_index[i]
-                if t < tmax or (t == tmax and idx < best):
-                    tmax = t
-                    best = idx
-                    kind = SPHERE
-                    row = i
-        elif sphere_formula == SPHERE_ROBUST:
-            for i in range(spheres.shape[0]):
-                t = intersect_sphere_robust(origin, direction, tmin, tmax,
-                                            row3(spheres, i, SPHERE_CENTER),
-                                            spheres[i, SPHERE_RADIUS])
-                idx = sphere_index[i]
-                if t < tmax or (t == tmax and idx < best):
-                    tmax = t
-                    best = idx
-                    kind = SPHERE
-                    row = i
-        else:
-            for i in range(spheres.shape[0]):
-                t = intersect_sphere(origin, direction, tmin, tmax,
-                                     row3(spheres, i, SPHERE_CENTER), spheres[i, SPHERE_RADIUS])
-                idx = sphere_index[i]
-                if t < tmax or (t == tmax and idx < best):
-                    tmax = t
-                    best = idx
-                    kind = SPHERE
-                    row = i
-    return tmax, best, kind, row
+@njit(cache=True, error_model="numpy")
+def intersect_disk(origin, direction, tmin, tmax, center, normal, radius):
+    # The plane of the disk (intersect_plane), then (p - c) . (p - c) <= r^2 at p = o + d t.
+    t = intersect_plane(origin, direction, tmin, tmax, center, normal)
+    if t == lit(math.inf, t):
+        return t
+    to_hit = sub(add(origin, scale(direction, t)), center)
+    if dot(to_hit, to_hit) <= radius * radius:
+        return t
+    return lit(math.inf, t)
 
 
 @njit(cache=True, error_model="numpy")
-def in_shadow(position, w_i, tmin, tmax, planes, triangles, spheres, sphere_formula):
-    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""
-    if planes is not None:
-        for i in range(planes.shape[0]):
-            if intersect_plane(position, w_i, tmin, tmax, row3(planes, i, PLANE_POINT),
-                               row3(planes, i, PLANE_NORMAL)) < tmax:
-                return True
-    if triangles is not None:
-        for i in range(triangles.shape[0]):
-            if intersect_triangle(position, w_i, tmin, tmax, row3(triangles, i, TRI_V0),
-                                  row3(triangles, i, TRI_E0), row3(triangles, i, TRI_E1),
-                                  row3(triangles, i, TRI_N)) < tmax:
-                return True
-    if spheres is not None:
-        for i in range(spheres.shape[0]):
-            if sphere_test(sphere_formula, position, w_i, tmin, tmax,
-                           row3(spheres, i, SPHERE_CENTER), spheres[i, SPHERE_RADIUS]) < tmax:
-                return True
-    return False
+def normal_plane(position, point, normal):
+    return normalize(normal)
+
+
+@njit(cache=True, error_model="numpy")
+def normal_triangle(position, v0, e0, e1, n):
+    return normalize(n)
+
+
+@njit(cache=True, error_model="numpy")
+def normal_sphere(position, center, radius):
+    return normalize(sub(position, center))
+
+
+@njit(cache=True, error_model="numpy")
+def normal_disk(position, center, normal, radius):
+    return normalize(normal)

@@ -1,17 +1,22 @@
 """Join the .wgsl files of this package into one program for one scene.
 
-Only the pieces a scene uses are joined, in the order of ``PIECES`` (a function is defined
-before the functions that call it, as a student reads it): the structs and constants
-generated from rtfgu.layout, the ray, the camera, the intersection functions, the light
-sample, the shaders, shade, intersect_scene and main. Inside a file, lines between
-``// #if FEATURE`` (``a|b`` for either) and ``// #endif`` (with an optional ``// #else``)
-are kept only when the scene has that feature, so that e.g. shade's switch holds only the
-cases the scene uses.
+Only the pieces a scene uses are joined, in a stated order (a function is defined before
+the functions that call it, as a student reads it): the structs and constants generated
+from rtfgu.layout, the ray, the camera, the intersection function of every shape kind the
+scene has (rtfgu.registry), the light samples, the shaders, shade, intersect_scene and
+main. Two directives shape a file for the scene:
 
-The sphere test has two files with the same ``fn intersect_sphere``: the slide's quadratic
-(intersect_sphere.wgsl) and Ray Tracing Gems ch. 7 (robust_sphere.wgsl); ``formula`` picks
-one for the piece ``intersect_sphere.wgsl``. An override of that piece (a student's own
-file) is used whatever the formula.
+* ``// #if FEATURE`` (``a|b`` for either), ``// #else``, ``// #endif``: the lines are kept
+  only when the scene has that feature, e.g. shadows.
+* ``// #each shape`` (or ``light``, ``shader``, ``brdf``) ... ``// #end``: the lines are
+  repeated for every kind of that list that the scene has, with ``$kind``, ``$table``,
+  ``$TABLE``, ``$index``, ``$args`` (the row's fields as arguments, from ``rec``), ``$ID``,
+  ``$body`` and ``$of`` filled in. This is how intersect_scene, in_shadow, the light loop
+  and shade name every kind without a list of kinds of their own.
+
+A shape kind's formula other than "slide" is its own file defining the same function
+(robust_sphere.wgsl for the sphere); ``formula`` picks it. An override of a piece (a
+student's own file) is used whatever the formula.
 
 Only counts and kinds go into the program text; the scene's numbers go into buffers
 (``Binding.pack``), so moving the camera or a light reuses the compiled pipeline.
@@ -25,57 +30,107 @@ from importlib import resources
 import numpy as np
 
 from .. import layout
+from ..registry import LIGHTS, SHADERS, SHAPES
 from . import structs
 
-# Shaders that sample the lights.
-LIGHT_SHADERS = frozenset({"lambertian", "phong", "glossy"})
-
-
-def _needs(*any_of):
-    return lambda f: any(name in f for name in any_of)
-
-
-def _has_all(*all_of):
-    return lambda f: all(name in f for name in all_of)
-
-
-# (file, when it is needed): the stated order of the assembled program.
-PIECES = (
-    ("ray.wgsl", lambda f: True),
-    ("hitinfo.wgsl", lambda f: "trace" in f),
-    ("camera_orthographic.wgsl", _needs("orthographic")),
-    ("camera_pinhole.wgsl", _needs("pinhole")),
-    ("intersect_plane.wgsl", _has_all("trace", "plane")),
-    ("intersect_triangle.wgsl", _has_all("trace", "triangle")),
-    ("intersect_sphere.wgsl", _has_all("trace", "sphere")),
-    ("lights.wgsl", _needs("sample_lights")),
-    ("in_shadow.wgsl", _has_all("sample_lights", "shadows")),
-    ("lambertian.wgsl", _has_all("trace", "lambertian")),
-    ("phong.wgsl", lambda f: "trace" in f and ("phong" in f or "glossy" in f)),
-    ("continue_path.wgsl", lambda f: "trace" in f and bool({"mirror", "transparent", "glossy"} & f)),
-    ("mirror.wgsl", _has_all("trace", "mirror")),
-    ("transparent.wgsl", lambda f: "trace" in f and ("transparent" in f or "glossy" in f)),
-    ("glossy.wgsl", _has_all("trace", "glossy")),
-    ("shade.wgsl", _needs("trace")),
-    ("intersect_scene.wgsl", _needs("trace")),
-    ("main.wgsl", lambda f: True),
-)
-
 GENERATED = "<generated from rtfgu.layout>"
-
-# The file that holds intersect_sphere, per sphere formula.
-SPHERE_FILES = {"slide": "intersect_sphere.wgsl", "robust": "robust_sphere.wgsl"}
 # The sphere formula of a WGSL render unless one is asked for (docs/robust_defaults.md).
 DEFAULT_SPHERE_FORMULA = "robust"
 
 
-def sphere_file(formula) -> str:
-    """The .wgsl file of intersect_sphere for ``formula`` ("slide", "robust", None: default)."""
+def check_formula(formula) -> str:
+    """``formula`` ("slide", "robust"; None: DEFAULT_SPHERE_FORMULA), checked."""
     if formula is None:
         formula = DEFAULT_SPHERE_FORMULA
-    if formula not in SPHERE_FILES:
-        raise ValueError("formula must be one of %s, got %r" % (", ".join(SPHERE_FILES), formula))
-    return SPHERE_FILES[formula]
+    known = sorted({f for kind in SHAPES for f in kind.formulas})
+    if formula not in known:
+        raise ValueError("formula must be one of %s, got %r" % (", ".join(known), formula))
+    return formula
+
+
+def _brdf_shaders(features):
+    return [k for k in SHADERS if k.brdf and k.name in features]
+
+
+def _shape_kinds(features):
+    """The shape kinds the program needs: the scene's, and the kinds they call."""
+    names = {k.name for k in SHAPES if k.name in features}
+    for kind in SHAPES:
+        if kind.name in names:
+            names.update(kind.uses)
+    return [k for k in SHAPES if k.name in names]
+
+
+def pieces(features, formula: str = "slide") -> list:
+    """(piece name, file read for it) in the stated order, for a scene with ``features``."""
+    f = features
+    trace = "trace" in f
+    out = [("ray.wgsl", "ray.wgsl")]
+    if trace:
+        out.append(("hitinfo.wgsl", "hitinfo.wgsl"))
+    for camera in ("orthographic", "pinhole"):
+        if camera in f:
+            out.append(("camera_%s.wgsl" % camera, "camera_%s.wgsl" % camera))
+    if trace:
+        for kind in _shape_kinds(f):
+            chosen = formula if formula in kind.formulas else "slide"
+            out.append((kind.wgsl_file, kind.formula_file(chosen)))
+    if trace and "lights" in f and _brdf_shaders(f):
+        out.append(("lights.wgsl", "lights.wgsl"))
+        if "shadows" in f:
+            out.append(("in_shadow.wgsl", "in_shadow.wgsl"))
+    if trace and _brdf_shaders(f):
+        for name in sorted({k.brdf_of or k.name for k in _brdf_shaders(f)},
+                           key=[k.name for k in SHADERS].index):
+            out.append((name + ".wgsl", name + ".wgsl"))
+        out.append(("direct_light.wgsl", "direct_light.wgsl"))
+    continuing = [k for k in SHADERS if k.continues and k.name in f] if trace else []
+    if continuing:
+        out.append(("continue_path.wgsl", "continue_path.wgsl"))
+        names = {k.name for k in continuing}
+        if "glossy" in names:
+            names.add("transparent")
+        for kind in SHADERS:
+            if kind.name in names:
+                out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
+    if trace:
+        out += [("shade.wgsl", "shade.wgsl"), ("intersect_scene.wgsl", "intersect_scene.wgsl")]
+    out.append(("main.wgsl", "main.wgsl"))
+    return out
+
+
+def piece_names() -> list:
+    """Every piece a program may hold, for ``overrides``."""
+    names = ["ray.wgsl", "hitinfo.wgsl", "camera_orthographic.wgsl", "camera_pinhole.wgsl"]
+    names += [kind.wgsl_file for kind in SHAPES]
+    names += ["lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
+    names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
+    return names + ["shade.wgsl", "intersect_scene.wgsl", "main.wgsl"]
+
+
+def each_kinds(flat, features, formula):
+    """For ``// #each``: per list, the substitutions of each kind the scene has."""
+    shapes = []
+    for kind in SHAPES:
+        if kind.name not in features:
+            continue
+        args = ", ".join("rec." + name for name, _ in kind.fields)
+        shapes.append({"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper(),
+                       "$index": kind.name + "_index", "$args": args})
+    lights = [{"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper()}
+              for kind in LIGHTS if len(flat.lights[kind.name])]
+    shaders, brdfs = [], []
+    for kind in SHADERS:
+        if kind.name not in features or not (kind.brdf or kind.continues):
+            continue
+        if kind.continues and "trace" not in features:
+            continue
+        body = "direct_light(r, hit)" if kind.brdf and not kind.continues else "%s(r, hit)" % kind.name
+        shaders.append({"$ID": kind.name.upper(), "$body": body})
+        if kind.brdf:
+            brdfs.append({"$ID": kind.name.upper(), "$of": kind.brdf_of or kind.name})
+    return {"shape": shapes, "light": lights, "shader": shaders, "brdf": brdfs}
+
 
 # The largest uniform buffer binding WebGPU guarantees (maxUniformBufferBindingSize).
 MAX_UNIFORM_BYTES = 65536
@@ -86,14 +141,25 @@ def read_piece(name: str) -> str:
     return resources.files(__package__).joinpath(name).read_text(encoding="utf-8")
 
 
-def piece_names() -> list:
-    return [name for name, _ in PIECES]
-
-
 def _packed_index(values: np.ndarray) -> np.ndarray:
     packed = np.zeros(4 * max(1, -(-len(values) // 4)), dtype=np.int32)
     packed[:len(values)] = values
     return packed
+
+
+def binding_data(flat, name: str) -> np.ndarray:
+    """The FlatScene array behind the binding ``name``."""
+    if name in ("camera", "materials", "shaders"):
+        return getattr(flat, name)
+    for kind in SHAPES:
+        if name == kind.table:
+            return flat.table(kind.name)
+        if name == kind.name + "_index":
+            return flat.index(kind.name)
+    for kind in LIGHTS:
+        if name == kind.table:
+            return flat.lights[kind.name]
+    raise KeyError("no scene array is bound as %r" % name)
 
 
 @dataclass(frozen=True)
@@ -105,13 +171,15 @@ class Binding:
     wgsl_type: str
     kind: str  # "uniform" or "storage"
     size: int  # bytes
-    source: str  # FlatScene field the bytes come from
+    is_index: bool  # int32 entries packed four to a vec4i
 
     def pack(self, flat) -> bytes:
-        data = getattr(flat, self.source)
-        if self.source in ("plane_index", "triangle_index", "sphere_index", "shaders"):
+        data = binding_data(flat, self.name)
+        if self.is_index:
             return _packed_index(data).tobytes()
-        return np.ascontiguousarray(data, dtype=np.float32).tobytes()
+        packed = np.zeros(self.size // 4, dtype=np.float32)  # an empty array still binds 16 bytes
+        packed[:data.size] = np.ascontiguousarray(data, dtype=np.float32).reshape(-1)
+        return packed.tobytes()
 
 
 @dataclass
@@ -141,25 +209,42 @@ class Program:
 
 def scene_features(flat) -> frozenset:
     """FlatScene.features plus what the assembly derives from it: "trace" when the path
-    loop runs (not the ray-direction image), "sample_lights" when a shader samples lights,
-    "shapes" when there is any shape."""
+    loop runs (not the ray-direction image), "shapes" when there is any shape."""
     f = set(flat.features)
     if len(flat.shaders):
         f.add("shapes")
     if not flat.show_ray_direction:
         f.add("trace")
-        if "lights" in f and LIGHT_SHADERS & f:
-            f.add("sample_lights")
     return frozenset(f)
 
 
-def select_lines(text: str, features, name: str = "") -> list:
-    """The (line number, text) pairs of ``text`` kept for ``features``."""
+def select_lines(text: str, features, name: str = "", each=None) -> list:
+    """The (line number, text) pairs of ``text`` kept for ``features``, with every
+    ``// #each LIST`` block repeated for the kinds in ``each[LIST]``."""
+    each = each or {}
     keep = [True]
     out = []
+    block = None  # (list name, line number of #each, [(number, line)])
     for number, line in enumerate(text.splitlines(), start=1):
         s = line.strip()
-        if s.startswith("// #if "):
+        if s.startswith("// #each "):
+            if block is not None:
+                raise ValueError("%s:%d: #each inside #each" % (name, number))
+            block = (s[len("// #each "):].strip(), number, [])
+        elif s == "// #end":
+            if block is None:
+                raise ValueError("%s:%d: #end without #each" % (name, number))
+            what, start, lines = block
+            if what not in each:
+                raise ValueError("%s:%d: #each %s: no such list (known: %s)"
+                                 % (name, start, what, ", ".join(sorted(each))))
+            for substitutions in each[what]:
+                for n, body in lines:
+                    for key in sorted(substitutions, key=len, reverse=True):
+                        body = body.replace(key, substitutions[key])
+                    out.append((n, body))
+            block = None
+        elif s.startswith("// #if "):
             wanted = s[len("// #if "):].split("|")
             keep.append(keep[-1] and any(w.strip() in features for w in wanted))
         elif s == "// #else":
@@ -171,54 +256,55 @@ def select_lines(text: str, features, name: str = "") -> list:
                 raise ValueError("%s:%d: #endif without #if" % (name, number))
             keep.pop()
         elif keep[-1]:
-            out.append((number, line))
+            (block[2] if block is not None else out).append((number, line))
     if len(keep) != 1:
         raise ValueError("%s: #if without #endif" % name)
+    if block is not None:
+        raise ValueError("%s:%d: #each without #end" % (name, block[1]))
     return out
 
 
 def _bindings(flat, features, scene_buffer: str) -> list:
+    """The scene buffers, numbered in a stated order: the camera, then table and index of
+    every shape kind the scene has, materials and shaders, then every light kind's table."""
     if scene_buffer not in SCENE_BUFFER_KINDS:
         raise ValueError("scene_buffer must be one of %s, got %r"
                          % (", ".join(SCENE_BUFFER_KINDS), scene_buffer))
-    trace = "trace" in features
     camera_struct = ("OrthographicCamera" if flat.camera_kind == layout.ORTHOGRAPHIC
                      else "PinholeCamera")
-    wanted = [(1, "camera", camera_struct, "camera", None)]
-    if trace:
-        for kind, table, record, count in (("plane", "planes", "Plane", "NUM_PLANES"),
-                                           ("triangle", "triangles", "Triangle", "NUM_TRIANGLES"),
-                                           ("sphere", "spheres", "Sphere", "NUM_SPHERES")):
-            if kind in features:
-                number = {"plane": 2, "triangle": 4, "sphere": 6}[kind]
-                wanted.append((number, table, "array<%s, %s>" % (record, count), table,
-                               len(getattr(flat, table))))
-                wanted.append((number + 1, kind + "_index",
-                               "array<vec4i, %d>" % (len(_packed_index(getattr(flat, kind + "_index"))) // 4),
-                               kind + "_index", None))
+    wanted = [("camera", camera_struct, flat.camera, False)]
+    if "trace" in features:
+        for kind in _shape_kinds(features):
+            count = "NUM_" + kind.table.upper()
+            wanted.append((kind.table, "array<%s, %s>" % (kind.record, count),
+                           flat.table(kind.name), False))
+            if kind.name in features:
+                index = flat.index(kind.name)
+                wanted.append((kind.name + "_index", "array<vec4i, %d>" % (len(_packed_index(index)) // 4),
+                               index, True))
         if len(flat.shaders):
-            wanted.append((8, "materials", "array<Material, NUM_SHAPES>", "materials", None))
-            wanted.append((9, "shaders", "array<vec4i, %d>" % (len(_packed_index(flat.shaders)) // 4),
-                           "shaders", None))
-        if "sample_lights" in features:
-            wanted.append((10, "lights", "array<PointLight, NUM_LIGHTS>", "lights", None))
+            wanted.append(("materials", "array<Material, NUM_SHAPES>", flat.materials, False))
+            wanted.append(("shaders", "array<vec4i, %d>" % (len(_packed_index(flat.shaders)) // 4),
+                           flat.shaders, True))
+        if "lights" in features and _brdf_shaders(features):
+            for kind in LIGHTS:
+                table = flat.lights[kind.name]
+                if len(table):
+                    wanted.append((kind.table, "array<%s, NUM_%s>" % (kind.record, kind.table.upper()),
+                                   table, False))
     result = []
-    for number, name, wgsl_type, source, _ in wanted:
-        data = getattr(flat, source)
-        size = (len(_packed_index(data)) * 4 if source.endswith("index") or source == "shaders"
-                else data.size * 4)
-        kind = scene_buffer if size <= MAX_UNIFORM_BYTES else "storage"
-        if source == "camera":
-            kind = "uniform"
-        result.append(Binding(number, name, wgsl_type, kind, size, source))
+    for number, (name, wgsl_type, data, is_index) in enumerate(wanted, start=1):
+        size = len(_packed_index(data)) * 4 if is_index else max(data.size, 4) * 4
+        kind = "uniform" if name == "camera" else (scene_buffer if size <= MAX_UNIFORM_BYTES else "storage")
+        result.append(Binding(number, name, wgsl_type, kind, size, is_index))
     return result
 
 
 def _header(flat, features, bindings) -> str:
     parts = ["// The scene layout and ids, generated from rtfgu/layout.py.", structs.constants_wgsl()]
-    counts = [("NUM_SHAPES", len(flat.shaders)), ("NUM_PLANES", len(flat.planes)),
-              ("NUM_TRIANGLES", len(flat.triangles)), ("NUM_SPHERES", len(flat.spheres)),
-              ("NUM_LIGHTS", len(flat.lights))]
+    counts = [("NUM_SHAPES", len(flat.shaders))]
+    counts += [("NUM_" + kind.table.upper(), flat.count(kind.name)) for kind in SHAPES]
+    counts += [("NUM_" + kind.table.upper(), len(flat.lights[kind.name])) for kind in LIGHTS]
     parts.append("\n".join("const %s = %du;" % c for c in counts))
     used = {b.wgsl_type.split("<")[-1].split(",")[0].rstrip(">") for b in bindings}
     for record in layout.RECORDS:
@@ -242,8 +328,9 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
     larger than MAX_UNIFORM_BYTES goes to storage either way).
     overrides: {file name: WGSL text} used instead of the package's file, e.g. a student's
     own lambertian.wgsl.
-    formula: the sphere test, "slide" or "robust" (None: DEFAULT_SPHERE_FORMULA)."""
-    sphere_source = sphere_file(formula)
+    formula: the intersection formula, "slide" or "robust" (None: DEFAULT_SPHERE_FORMULA),
+    for every shape kind that has it."""
+    formula = check_formula(formula)
     overrides = dict(overrides or {})
     unknown = set(overrides) - set(piece_names())
     if unknown:
@@ -251,23 +338,21 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
                          % (", ".join(sorted(unknown)), ", ".join(piece_names())))
     features = scene_features(flat)
     bindings = _bindings(flat, features, scene_buffer)
+    each = each_kinds(flat, features, formula)
     lines, origin, used = [], [], []
     for number, line in enumerate(_header(flat, features, bindings).splitlines(), start=1):
         lines.append(line)
         origin.append((GENERATED, number))
-    for name, needed in PIECES:
-        if not needed(features):
-            continue
-        source = name
-        if name == "intersect_sphere.wgsl" and name not in overrides:
-            source = sphere_source
+    for name, source in pieces(features, formula):
+        if name in overrides:
+            source = name
         used.append(source)
         text = overrides[name] if name in overrides else read_piece(source)
         lines.append("")
         origin.append((GENERATED, 0))
         lines.append("// ---- rtfgu/wgsl/%s" % source)
         origin.append((source, 0))
-        for number, line in select_lines(text, features, source):
+        for number, line in select_lines(text, features, source, each):
             lines.append(line)
             origin.append((source, number))
     return Program("\n".join(lines) + "\n", origin, bindings, features, used)

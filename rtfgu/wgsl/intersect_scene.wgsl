@@ -1,8 +1,11 @@
 // The slide's intersect_scene: every shape of every kind in turn; each hit shrinks
 // (*r).tmax, so the last shape that reports a hit is the nearest one. The material of that
-// shape is then copied into the hit (rtfgu.scene.Scene.intersect). Shapes are visited kind
-// by kind (planes, triangles, spheres), so of two shapes of different kinds at exactly the
-// same distance the first kind wins; the reference visits Scene.shapes in their order.
+// shape is then copied into the hit (rtfgu.scene.Scene.intersect).
+//
+// One rule for ties on every path: of two shapes at the same distance, the one earlier in
+// Scene.shapes wins, as in the reference's loop over Scene.shapes. Shapes are visited kind
+// by kind, so each is tested up to the next float above the nearest t so far (t <= tmax),
+// and a hit at exactly that t counts only for a shape earlier than the one it would replace.
 
 // Index arrays (int32) arrive packed four to a vec4i (a uniform array needs a 16-byte
 // stride): entry k is [k / 4][k % 4].
@@ -19,34 +22,32 @@ fn set_material(hit: ptr<function, HitInfo>, k: u32)
 }
 // #endif
 
+// The next f32 above x, for 0 <= x < infinity.
+fn next_up(x: f32) -> f32
+{
+    return bitcast<f32>(bitcast<u32>(x) + 1u);
+}
+
 fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
 {
     var shape = -1;  // place in Scene.shapes of the nearest shape hit so far
-    // #if plane
-    for (var i = 0u; i < NUM_PLANES; i++) {
-        if (intersect_plane(*r, hit, planes[i].point, planes[i].normal)) {
-            (*r).tmax = (*hit).dist;
-            shape = plane_index[i / 4u][i % 4u];
+    var q = *r;
+    q.tmax = next_up((*r).tmax);
+    var candidate = *hit;
+    // #each shape
+    for (var i = 0u; i < NUM_$TABLE; i++) {
+        let rec = $table[i];
+        if (intersect_$kind(q, &candidate, $args)) {
+            let index = $index[i / 4u][i % 4u];
+            if (candidate.dist < (*r).tmax || index < shape) {
+                *hit = candidate;
+                (*r).tmax = candidate.dist;
+                q.tmax = next_up(candidate.dist);
+                shape = index;
+            }
         }
     }
-    // #endif
-    // #if triangle
-    for (var i = 0u; i < NUM_TRIANGLES; i++) {
-        let tri = triangles[i];
-        if (intersect_triangle(*r, hit, tri.v0, tri.e0, tri.e1, tri.n)) {
-            (*r).tmax = (*hit).dist;
-            shape = triangle_index[i / 4u][i % 4u];
-        }
-    }
-    // #endif
-    // #if sphere
-    for (var i = 0u; i < NUM_SPHERES; i++) {
-        if (intersect_sphere(*r, hit, spheres[i].center, spheres[i].radius)) {
-            (*r).tmax = (*hit).dist;
-            shape = sphere_index[i / 4u][i % 4u];
-        }
-    }
-    // #endif
+    // #end
     // #if shapes
     if (shape >= 0) {
         set_material(hit, u32(shape));

@@ -9,9 +9,9 @@ struct Light {
 // Kepler's inverse square law: L_i = I / ||p - x||^2 for the point light number i.
 fn sample_point_light(pos: vec3f, i: u32) -> Light
 {
-    let to_light = lights[i].position - pos;
+    let to_light = point_lights[i].position - pos;
     let dist_squared = dot(to_light, to_light);
     let dist = sqrt(dist_squared);
-    let L_i = lights[i].intensity / dist_squared;
+    let L_i = point_lights[i].intensity / dist_squared;
     return Light(L_i, to_light / dist, dist);
 }

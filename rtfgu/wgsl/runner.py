@@ -27,7 +27,7 @@ import numpy as np
 
 from ..layout import compile_scene
 from . import structs
-from .assemble import GENERATED, assemble, sphere_file
+from .assemble import GENERATED, assemble, check_formula
 from .device import get_device
 
 DEFAULT_SCENE_BUFFER = "uniform"
@@ -193,7 +193,7 @@ def prepare(scene, scene_buffer: str = DEFAULT_SCENE_BUFFER, overrides=None,
             formula: str | None = None) -> CompiledProgram:
     """Lay out ``scene`` in float32, assemble and compile (or reuse) its program, upload it.
     ``formula``: the sphere test, "slide" or "robust" (None: the assembler's default)."""
-    sphere_file(formula)  # a bad formula is refused before the scene is compiled
+    check_formula(formula)  # a bad formula is refused before the scene is compiled
     flat = compile_scene(scene, "float32")
     compiled = compile_program(assemble(flat, scene_buffer, overrides, formula))
     compiled.upload(flat)

@@ -1,0 +1,289 @@
+"""The per-kind loops of the numba path, generated from rtfgu.registry.
+
+``intersect_scene``, ``in_shadow``, ``shape_normal``, the light loop over every light kind
+(``direct_light``) and the ``shade`` switch name every kind of the registry; they are
+written here as Python source from the registry (as rtfgu/wgsl/assemble.py writes the
+WGSL ones), saved under a name that is the hash of their text, and imported from there, so
+that numba's cache (keyed on a source file) keeps them between runs.
+
+The scene reaches the kernels as flat tuples in registry order (numba's parallel loop
+takes a tuple of arrays, not a tuple of tuples): ``shapes`` holds table, index per shape
+kind, ``lights`` a table per light kind, each None for a kind the scene lacks. A kind's
+entries go to a function of its own as arguments, and numba compiles that function with
+the ``is None`` branch taken or removed, so a scene pays only for the kinds it has. ``hit`` is (t, scene index, kind, row); of two hits at the same t the one earlier
+in Scene.shapes wins, whichever kind is visited first.
+
+Only one shape kind may be ``from_eye`` (the sphere): its primary rays from a pinhole eye
+use the per-frame terms and the tile's candidate rows in ``eye`` and ``tile``.
+"""
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import os
+import sys
+import tempfile
+from pathlib import Path
+
+from .. import layout
+from ..registry import LIGHTS, SHADERS, SHAPES
+
+# Formula ids, the same for every kind; a kind without a formula uses its slide formula.
+FORMULAS = ("slide", "robust")
+
+
+def _row_args(kind, table: str, row: str) -> str:
+    """The kind's fields read from ``table[row]`` in its registry order."""
+    columns = {name: (components, column) for name, components, column in
+               layout.RECORDS[kind.record][1]}
+    out = []
+    for name, _ in kind.fields:
+        components, column = columns[name]
+        out.append("row3(%s, %s, %d)" % (table, row, column) if components == 3
+                   else "%s[%s, %d]" % (table, row, column))
+    return ", ".join(out)
+
+
+_KEEP = """            idx = index[i]
+            if t < tmax or (t == tmax and idx < best):
+                tmax = t
+                best = idx
+                kind = {kind}
+                row = i"""
+
+
+def _scan(k: int, kind) -> str:
+    """scan_<kind>: the nearest hit of this kind's rows, given the nearest so far."""
+    name = kind.name
+    eye_args = "eye, tile, " if kind.from_eye else ""
+    lines = ["@njit(cache=True, error_model=\"numpy\")",
+             "def scan_%s(table, index, %sorigin, direction, tmin, hit, formula):" % (name, eye_args),
+             "    if table is None:",
+             "        return hit",
+             "    tmax, best, kind, row = hit"]
+    keep = _KEEP.format(kind=k)
+    if kind.from_eye:
+        # Primary rays from the eye: the tile's candidate rows, o - center and c per frame.
+        radius = layout.offset(kind.record, "radius")
+        lines += ["    if eye is not None:",
+                  "        candidates, n_candidates, from_eye = tile",
+                  "        terms = eye[0]"]
+        for condition, call in (
+                ("from_eye and formula == %d" % FORMULAS.index("robust"),
+                 "%s_roots_robust(row3(terms, i, 0), terms[i, 3], table[i, %d], direction, tmin, tmax)"
+                 % (name, radius)),
+                ("from_eye", "%s_roots(row3(terms, i, 0), terms[i, 3], direction, tmin, tmax)" % name)):
+            lines += ["        if %s:" % condition,
+                      "            for c in range(n_candidates):",
+                      "                i = candidates[c]",
+                      "                t = " + call,
+                      "\n".join("    " + line for line in keep.split("\n")),
+                      "            return tmax, best, kind, row"]
+    # One loop per formula: the formula is the same for every row, and a test of it
+    # inside the loop would be paid per row.
+    for formula in kind.formulas[::-1]:
+        if formula != "slide":
+            lines.append("    if formula == %d:" % FORMULAS.index(formula))
+        else:
+            lines.append("    if True:")
+        lines += ["        for i in range(table.shape[0]):",
+                  "            t = %s(origin, direction, tmin, tmax, %s)"
+                  % (kind.formula_function(formula), _row_args(kind, "table", "i")),
+                  keep,
+                  "        return tmax, best, kind, row"]
+    lines.append("    return hit")
+    return "\n".join(lines)
+
+
+def _any_hit(kind) -> str:
+    """any_hit_<kind>: is any row of this kind hit in [tmin, tmax)? (a shadow ray)"""
+    lines = ["@njit(cache=True, error_model=\"numpy\")",
+             "def any_hit_%s(table, origin, direction, tmin, tmax, formula):" % kind.name,
+             "    if table is None:",
+             "        return False"]
+    for formula in kind.formulas[::-1]:
+        condition = "formula == %d" % FORMULAS.index(formula) if formula != "slide" else "True"
+        lines += ["    if %s:" % condition,
+                  "        for i in range(table.shape[0]):",
+                  "            if %s(origin, direction, tmin, tmax, %s) < tmax:"
+                  % (kind.formula_function(formula), _row_args(kind, "table", "i")),
+                  "                return True",
+                  "        return False"]
+    lines.append("    return False")
+    return "\n".join(lines)
+
+
+def _normal(kind) -> str:
+    return "\n".join([
+        "@njit(cache=True, error_model=\"numpy\")",
+        "def normal_row_%s(table, row, position):" % kind.name,
+        "    if table is None:",
+        "        return position",
+        "    return normal_%s(position, %s)" % (kind.name, _row_args(kind, "table", "row")),
+    ])
+
+
+def _direct(light) -> str:
+    """The light loop (02562 "Sampling light in the shader"), written once per light kind."""
+    return "\n".join([
+        "@njit(cache=True, error_model=\"numpy\")",
+        "def direct_%s(table, shader, mat, surface_point, w_o, shapes, shadows, formula, result):" % light.name,
+        "    if table is None:",
+        "        return result, 0",
+        "    position, normal = surface_point",
+        "    zero = lit(0, mat[0])",
+        "    eps = lit(SPAWN_EPSILON, zero)",
+        "    n_shadow = 0",
+        "    for j in range(table.shape[0]):",
+        "        L_i, w_i, dist = sample_%s(table, j, position)" % light.name,
+        "        cos_theta = dot(normal, w_i)",
+        "        if zero > cos_theta:  # Python's max(cos_theta, 0.0)",
+        "            cos_theta = zero",
+        "        if cos_theta == zero:",
+        "            continue",
+        "        if shadows:",
+        "            n_shadow += 1",
+        "            if in_shadow(shapes, position, w_i, eps, dist - eps, formula):",
+        "                continue",
+        "        f = brdf(shader, mat, normal, w_o, w_i, cos_theta)",
+        "        result = add(result, scale(mul(f, L_i), cos_theta))",
+        "    return result, n_shadow",
+    ])
+
+
+def source() -> str:
+    """The generated module's text."""
+    eye_kinds = [kind for kind in SHAPES if kind.from_eye]
+    if len(eye_kinds) > 1:
+        raise ValueError("rtfgu.registry: at most one shape kind may be from_eye, got %s"
+                         % ", ".join(k.name for k in eye_kinds))
+    imports = {}
+    for kind in SHAPES:
+        names = imports.setdefault(kind.numba_module, set())
+        names.update(kind.formula_function(f) for f in kind.formulas)
+        names.add("normal_" + kind.name)
+        if kind.from_eye:
+            names.update((kind.name + "_roots", kind.name + "_roots_robust"))
+    shader_names = set()
+    for shader in SHADERS:
+        if shader.brdf and not shader.brdf_of:
+            shader_names.add("brdf_" + shader.name)
+        if shader.continues:
+            shader_names.add("continue_" + shader.name)
+    parts = ['"""Generated from rtfgu.registry by rtfgu.kernels.dispatch: do not edit."""',
+             "from numba import njit",
+             "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
+             "from rtfgu.kernels.lights import %s" % ", ".join("sample_" + l.name for l in LIGHTS),
+             "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
+             "from rtfgu.layout import MAT_COLOR, MAT_EMISSION",
+             "from rtfgu.shading import SPAWN_EPSILON"]
+    for module, names in sorted(imports.items()):
+        parts.append("from %s import %s" % (module, ", ".join(sorted(names))))
+    for k, kind in enumerate(SHAPES):
+        parts += [_scan(k, kind), _any_hit(kind), _normal(kind)]
+
+    calls = []
+    for k, kind in enumerate(SHAPES):
+        eye_args = "eye, tile, " if kind.from_eye else ""
+        calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
+                     % (kind.name, 2 * k, 2 * k + 1, eye_args))
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\")",
+        "def intersect_scene(shapes, eye, tile, origin, direction, tmin, tmax, formula):",
+        '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss."""',
+        "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\")",
+        "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
+        '    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""']
+        + ["    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
+           % (kind.name, 2 * k) for k, kind in enumerate(SHAPES)] + ["    return False"]))
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\")",
+        "def shape_normal(shapes, kind, row, position):",
+        '    """normal_at(position) of row ``row`` of shape kind ``kind``."""']
+        + ["    if kind == %d:\n        return normal_row_%s(shapes[%d], row, position)" % (k, kind.name, 2 * k)
+           for k, kind in enumerate(SHAPES)] + ["    return position"]))
+    for light in LIGHTS:
+        parts.append(_direct(light))
+
+    brdf_lines = ["@njit(cache=True, error_model=\"numpy\")",
+                  "def brdf(shader, mat, normal, w_o, w_i, cos_theta):",
+                  '    """The BRDF term of the shader with id ``shader``."""']
+    for shader in SHADERS:
+        if shader.brdf:
+            brdf_lines.append("    if shader == %d:\n        return brdf_%s(mat, normal, w_o, w_i, cos_theta)"
+                              % (shader.id, shader.brdf_of or shader.name))
+    brdf_lines.append("    return load3(mat, MAT_COLOR)")
+    parts.append("\n".join(brdf_lines))
+
+    light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
+                   "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
+    shade_lines = ["@njit(cache=True, error_model=\"numpy\")",
+                   "def shade(shader, mat, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
+                   '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',
+                   '    shadow rays). A shader that continues the path exists only when ``bounces`` does."""',
+                   "    n_shadow = 0"]
+    for shader in SHADERS:
+        if not (shader.brdf or shader.continues):
+            continue
+        body = []
+        if shader.brdf:
+            body.append("        result = surface(mat)")
+            body += light_calls
+        else:
+            body.append("        result = load3(mat, MAT_EMISSION)")
+        if shader.continues:
+            body.append("        return result, False, continue_%s(mat, r_d, surface_point[1]), n_shadow"
+                        % shader.name)
+        else:
+            body.append("        return result, True, r_d, n_shadow")
+        guard = "bounces is not None and " if shader.continues else ""
+        shade_lines.append("    if %sshader == %d:  # %s" % (guard, shader.id, shader.name))
+        shade_lines += body
+    shade_lines.append("    return load3(mat, MAT_COLOR), True, r_d, n_shadow")
+    parts.append("\n".join(shade_lines))
+    return "\n\n\n".join(parts) + "\n"
+
+
+def _cache_dir() -> Path:
+    for candidate in (os.environ.get("RTFGU_CACHE_DIR"), Path(__file__).resolve().parent / "__generated__",
+                      Path.home() / ".cache" / "rtfgu", Path(tempfile.gettempdir()) / "rtfgu"):
+        if not candidate:
+            continue
+        path = Path(candidate)
+        try:
+            path.mkdir(parents=True, exist_ok=True)
+            probe = path / ".writable"
+            probe.touch()
+            return path
+        except OSError:
+            continue
+    raise OSError("rtfgu.kernels.dispatch: no writable folder for the generated kernels "
+                  "(set RTFGU_CACHE_DIR)")
+
+
+def load():
+    """The generated module, written once per distinct text and imported from its file."""
+    text = source()
+    digest = hashlib.sha256(text.encode()).hexdigest()[:16]
+    name = "rtfgu_dispatch_" + digest
+    if name in sys.modules:
+        return sys.modules[name]
+    path = _cache_dir() / (name + ".py")
+    if not path.is_file() or path.read_text() != text:
+        tmp = path.with_suffix(".tmp%d" % os.getpid())
+        tmp.write_text(text)
+        os.replace(tmp, path)
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+_generated = load()
+intersect_scene = _generated.intersect_scene
+in_shadow = _generated.in_shadow
+shape_normal = _generated.shape_normal
+shade = _generated.shade

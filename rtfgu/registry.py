@@ -1,0 +1,144 @@
+"""The kinds rtfgu knows, each described once: shapes, shaders and lights.
+
+PBRT-v4 lists its shapes once in a tagged pointer and Nori registers a class with one line;
+here one entry per kind says everything the three paths need, and every list of kinds
+(the flat layout's tables and ids, the numba ``intersect_scene``/``in_shadow``/
+``shape_normal`` and ``shade``, the WGSL bindings, structs and dispatch) is derived from
+these tuples. A kind's id is its place in its tuple.
+
+A shape kind named ``disk`` (``ShapeKind("disk", Disk, fields)``) promises:
+
+* the lecture class ``Disk`` with an attribute per field (``center``, ``normal``, ...);
+* ``fields``: the layout record, in the order in which both intersection functions take
+  them after the ray; 3 components is a vector, 1 a scalar;
+* numba: ``intersect_disk(origin, direction, tmin, tmax, *fields)`` returning t in
+  [tmin, tmax] or inf, and ``normal_disk(position, *fields)``, in ``numba_module``;
+  a formula other than "slide" is ``intersect_disk_<formula>`` with the same arguments;
+* WGSL: the file ``intersect_disk.wgsl`` with
+  ``fn intersect_disk(r: Ray, hit: ptr<function, HitInfo>, <fields>) -> bool`` filling
+  the hit as the 02562 slides do; a formula other than "slide" is the file
+  ``<formula>_disk.wgsl`` defining the same function.
+
+docs/adding_a_shape.md walks through it. Nothing here imports numba or wgpu: the kernels
+and the WGSL files are named, and loaded only by the paths that use them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .lights import PointLight
+from .material import BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
+from .shapes.disk import Disk
+from .shapes.plane import Plane
+from .shapes.sphere import Sphere
+from .shapes.triangle import Triangle
+
+
+@dataclass(frozen=True)
+class ShapeKind:
+    name: str
+    cls: type
+    fields: tuple                       # ((field, components), ...), the intersection's arguments
+    formulas: tuple = ("slide",)        # the intersection formulas the kernels and WGSL provide
+    numba_module: str = "rtfgu.kernels.intersect"
+    from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
+    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
+
+    @property
+    def table(self) -> str:
+        """The FlatScene table and WGSL binding: "spheres"."""
+        return self.name + "s"
+
+    @property
+    def record(self) -> str:
+        """The layout record and WGSL struct: "Sphere"."""
+        return self.cls.__name__
+
+    @property
+    def wgsl_file(self) -> str:
+        return "intersect_%s.wgsl" % self.name
+
+    def formula_file(self, formula: str) -> str:
+        return self.wgsl_file if formula == "slide" else "%s_%s.wgsl" % (formula, self.name)
+
+    def formula_function(self, formula: str) -> str:
+        base = "intersect_" + self.name
+        return base if formula == "slide" else "%s_%s" % (base, formula)
+
+
+@dataclass(frozen=True)
+class ShaderKind:
+    """A case of the slide's ``shade`` switch. ``brdf``: the shader adds light from the
+    lights through the one light loop with this BRDF term (numba ``brdf_<name>``, WGSL
+    ``fn brdf_<name>`` in ``<name>.wgsl``); ``continues``: the shader may continue the path
+    (numba ``continue_<name>``, WGSL ``fn continue_<name>``), so the path loop is needed."""
+
+    id: int
+    name: str
+    brdf: bool = False
+    continues: bool = False
+    brdf_of: str = ""                   # the shader whose BRDF term this one uses ("" : its own)
+
+
+@dataclass(frozen=True)
+class LightKind:
+    """A light: the lecture class with an attribute per field, numba
+    ``sample_<name>(lights, j, position)`` and WGSL ``fn sample_<name>(pos, i) -> Light``
+    in ``lights.wgsl``, both returning the slide's (L_i, w_i, dist)."""
+
+    name: str
+    cls: type
+    fields: tuple
+
+    @property
+    def table(self) -> str:
+        return self.name + "s"
+
+    @property
+    def record(self) -> str:
+        return self.cls.__name__
+
+
+SHAPES = (
+    ShapeKind("plane", Plane, (("point", 3), ("normal", 3))),
+    ShapeKind("triangle", Triangle, (("v0", 3), ("e0", 3), ("e1", 3), ("n", 3))),
+    ShapeKind("sphere", Sphere, (("center", 3), ("radius", 1)), formulas=("slide", "robust"),
+              from_eye=True),
+    ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
+)
+
+SHADERS = (
+    ShaderKind(BASE_COLOR, "base_color"),
+    ShaderKind(LAMBERTIAN, "lambertian", brdf=True),
+    ShaderKind(PHONG, "phong", brdf=True),
+    ShaderKind(MIRROR, "mirror", continues=True),
+    ShaderKind(TRANSPARENT, "transparent", continues=True),
+    ShaderKind(GLOSSY, "glossy", brdf=True, continues=True, brdf_of="phong"),
+)
+
+LIGHTS = (
+    LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
+)
+
+SHAPE_BY_NAME = {kind.name: kind for kind in SHAPES}
+SHAPE_IDS = {kind.name: i for i, kind in enumerate(SHAPES)}
+SHADER_BY_ID = {kind.id: kind for kind in SHADERS}
+assert [kind.id for kind in SHADERS] == list(range(len(SHADERS))), "shader ids are their places"
+
+
+def shape_kind_of(shape):
+    """(id, ShapeKind) of a lecture-layer shape, or (None, None)."""
+    for i, kind in enumerate(SHAPES):
+        if type(shape) is kind.cls:
+            return i, kind
+    for i, kind in enumerate(SHAPES):   # a subclass of a registered class packs as its base
+        if isinstance(shape, kind.cls):
+            return i, kind
+    return None, None
+
+
+def light_kind_of(light):
+    for i, kind in enumerate(LIGHTS):
+        if isinstance(light, kind.cls):
+            return i, kind
+    return None, None

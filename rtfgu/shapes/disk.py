@@ -1,0 +1,47 @@
+"""Disk: the points of the plane through ``center`` with normal ``normal`` that lie within
+``radius`` of the centre (Suffern ch. 19, "Disks").
+
+A disk is a plane clipped to a radius, and it is intersected that way: the plane's test
+(``Plane.intersect_p``, lecture 01) gives t, and the hit counts when the point
+p = o + t d has (p - c) . (p - c) <= r^2 (the rim belongs to the disk, as the triangle's
+edges belong to the triangle).
+"""
+from __future__ import annotations
+
+import math
+
+from ..float3 import Float3, as_float3, normalize
+from ..ray import Ray
+from .plane import Plane
+from .shape import Shape
+
+
+class Disk(Shape):
+    def __init__(self, center, normal, radius: float, color, material=None):
+        super().__init__(color, material)
+        self.center = as_float3(center, "Disk.center")
+        normal = as_float3(normal, "Disk.normal")
+        if normal.length_squared() == 0.0:
+            raise ValueError("Disk.normal must be non-zero")
+        self.normal = normal
+        try:
+            ok = math.isfinite(radius) and radius > 0
+        except TypeError:
+            ok = False
+        if not ok:
+            raise ValueError("Disk.radius must be finite and > 0, got %r" % (radius,))
+        self.radius = float(radius)
+        self._plane = Plane(self.center, self.normal, color)
+
+    def intersect_p(self, ray: Ray) -> bool:
+        probe = Ray(ray.origin, ray.direction, ray.tmin, ray.tmax)
+        if not self._plane.intersect_p(probe):
+            return False
+        to_hit = ray(probe.tmax) - self.center
+        if to_hit.length_squared() <= self.radius * self.radius:
+            ray.tmax = probe.tmax
+            return True
+        return False
+
+    def normal_at(self, position: Float3) -> Float3:
+        return normalize(self.normal)
