@@ -115,7 +115,8 @@ def test_numba_default_formula_is_the_declared_one():
 
 def test_assembler_takes_intersect_sphere_from_the_formula_file():
     from rtfgu.wgsl import assemble
-    from rtfgu.wgsl.assemble import DEFAULT_SPHERE_FORMULA, SPHERE_FILES
+    from rtfgu.registry import SHAPE_BY_NAME
+    from rtfgu.wgsl.assemble import DEFAULT_SPHERE_FORMULA
 
     flat = compile_scene(SCENES["default_glossy_sphere"](), "float32")
     sources = {f: assemble(flat, formula=f) for f in ("slide", "robust")}
@@ -124,7 +125,7 @@ def test_assembler_takes_intersect_sphere_from_the_formula_file():
     assert "(b / a) * r.direction" in sources["robust"].source
     for f, program in sources.items():
         assert program.source.count("fn intersect_sphere(") == 1
-        assert SPHERE_FILES[f] in program.pieces
+        assert SHAPE_BY_NAME["sphere"].formula_file(f) in program.pieces
     assert assemble(flat).source == sources[DEFAULT_SPHERE_FORMULA].source
     # A student's own intersect_sphere.wgsl is used whatever the formula.
     own = "fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool { return false; }"

@@ -55,22 +55,22 @@ def test_named_offsets_pick_the_compiled_values():
     for name in ("b1", "b2", "v"):
         expected = getattr(camera, name)
         assert _field(cam, name, "PinholeCamera") == [expected.x, expected.y, expected.z]
-    assert _field(flat.planes[0], "point", "Plane") == [1, 2, 3]
-    assert _field(flat.planes[0], "normal", "Plane") == [0, 2, 0]
+    assert _field(flat.table("plane")[0], "point", "Plane") == [1, 2, 3]
+    assert _field(flat.table("plane")[0], "normal", "Plane") == [0, 2, 0]
     tri = scene.shapes[1]
     for name in ("v0", "e0", "e1", "n"):
         v = getattr(tri, name)
-        assert _field(flat.triangles[0], name, "Triangle") == [v.x, v.y, v.z]
-    assert _field(flat.spheres[0], "center", "Sphere") == [4, 5, 6]
-    assert _field(flat.spheres[0], "radius", "Sphere") == [0.7]
+        assert _field(flat.table("triangle")[0], name, "Triangle") == [v.x, v.y, v.z]
+    assert _field(flat.table("sphere")[0], "center", "Sphere") == [4, 5, 6]
+    assert _field(flat.table("sphere")[0], "radius", "Sphere") == [0.7]
     m = flat.materials[0]
     assert _field(m, "color", "Material") == [0.1, 0.2, 0.3]
     assert _field(m, "specular", "Material") == [0.25, 0.5, 0.75]
     assert _field(m, "shininess", "Material") == [17.0]
     assert _field(m, "emission", "Material") == [0.01, 0.02, 0.03]
     assert _field(m, "ior", "Material") == [1.33]
-    assert _field(flat.lights[0], "position", "PointLight") == [-1, 3, 2]
-    assert _field(flat.lights[0], "intensity", "PointLight") == [5, 6, 7]
+    assert _field(flat.lights["point_light"][0], "position", "PointLight") == [-1, 3, 2]
+    assert _field(flat.lights["point_light"][0], "intensity", "PointLight") == [5, 6, 7]
 
     ortho = layout.compile_scene(_scene(OrthographicCamera(-1, 2, -3, 4, hither=0.5, yon=9)),
                                  "float64").camera.ravel()

@@ -78,18 +78,18 @@ def test_wgsl_is_not_blank_where_the_scene_is_lit(wgpu_device):
 def test_broken_wgsl_function_is_reported_by_its_line(wgpu_device):
     text = read_piece("lambertian.wgsl")
     lines = text.splitlines()
-    target = next(i for i, line in enumerate(lines) if "let L_a" in line)
-    lines[target] = "    let L_a = (*hit).color * undefined_ambient;"
+    target = next(i for i, line in enumerate(lines) if "DIFFUSE_FRACTION" in line)
+    lines[target] = "    return (*hit).color * undefined_diffuse;"
     broken = "\n".join(lines) + "\n"
     with pytest.raises(WGSLCompileError) as caught:
         prepare(SCENES["default_lambertian"](), overrides={"lambertian.wgsl": broken})
     error = caught.value
     assert error.file == "rtfgu/wgsl/lambertian.wgsl"
     assert error.line == target + 1
-    assert error.function == "lambertian"
+    assert error.function == "brdf_lambertian"
     message = str(error)
     assert "lambertian.wgsl:%d" % (target + 1) in message
-    assert "undefined_ambient" in message
+    assert "undefined_diffuse" in message
 
 
 def test_type_error_in_a_shader_names_its_function(wgpu_device):
@@ -163,10 +163,10 @@ def _program(name):
 def test_shade_switch_holds_only_the_cases_the_scene_uses():
     mirror = _program("default_mirror_sphere").source
     assert "case MIRROR" in mirror and "case LAMBERTIAN" in mirror
-    assert "case PHONG" not in mirror and "fn phong" not in mirror
+    assert "case PHONG" not in mirror and "fn brdf_phong" not in mirror
     assert "fn transparent" not in mirror
     flat = _program("default_flat_colors").source
-    assert "fn lambertian" not in flat and "fn sample_point_light" not in flat
+    assert "fn brdf_lambertian" not in flat and "fn sample_point_light" not in flat
     assert "case default" in flat
     no_shadows = _program("default_lambertian").source
     assert "fn in_shadow" not in no_shadows and "in_shadow(" not in no_shadows
@@ -182,7 +182,7 @@ def test_assembled_order_defines_before_use():
     source = _program("default_glossy_sphere").source
     order = ["struct Ray", "struct HitInfo", "fn get_camera_ray", "fn intersect_plane",
              "fn intersect_triangle", "fn intersect_sphere", "fn sample_point_light",
-             "fn in_shadow", "fn lambertian", "fn phong", "fn mirror" if "fn mirror" in source else "",
+             "fn in_shadow", "fn brdf_phong", "fn direct_light", "fn mirror" if "fn mirror" in source else "",
              "fn transparent", "fn glossy", "fn shade", "fn intersect_scene", "fn main"]
     positions = [source.index(item) for item in order if item]
     assert positions == sorted(positions)
@@ -221,7 +221,7 @@ def test_arrays_too_large_for_a_uniform_binding_go_to_storage():
     from rtfgu.shapes import Sphere
 
     scene = SCENES["default_lambertian"]()
-    for k in range(1200):  # 1203 materials x 64 bytes > 64 KiB
+    for k in range(1400):  # 1403 materials x 48 bytes > 64 KiB
         scene.shapes.append(Sphere(Float3(0.01 * k, 0.0, -5.0), 0.01, Float3(0.5, 0.5, 0.5)))
     kinds = {b.name: b.kind for b in assemble(compile_scene(scene, "float32")).bindings}
     assert kinds["materials"] == "storage"
