@@ -16,9 +16,13 @@ from .shading import MAX_DEPTH, HitInfo, shade
 BACKENDS = ("reference", "numba", "wgpu")
 DEFAULT_BACKEND = "reference"
 PRECISIONS = ("float64", "float32")
-# Sphere tests: the lecture's quadratic and Ray Tracing Gems ch. 7 (rtfgu/robust.py). The
-# reference computes the slide formulas only; numba and wgpu default to their own choice.
+# Intersection formulas: the lecture's and the robust ones (Ray Tracing Gems ch. 7 for the
+# sphere, rtfgu/robust.py). The reference computes the slide formulas only. Each path's
+# default, decided once here from the measured cost and hard-case counts in
+# docs/robust_defaults.md: numba keeps the slide formula (the robust sphere costs it
+# speed on many spheres), WGSL takes the robust one (no measurable cost there).
 FORMULAS = ("slide", "robust")
+DEFAULT_FORMULAS = {"reference": "slide", "numba": "slide", "wgpu": "robust"}
 
 
 def trace(scene, r: Ray) -> Float3:

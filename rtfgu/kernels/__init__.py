@@ -16,6 +16,7 @@ import numpy as np
 
 from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_scene
 from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
+from ..renderer import DEFAULT_FORMULAS
 from ..shading import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
@@ -24,9 +25,8 @@ from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
 
 __all__ = ["render_numba", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
-# The sphere formula of a numba render unless one is asked for: the slide's, because Ray
-# Tracing Gems ch. 7 cost 16-18 % on the 64-sphere render (docs/robust_defaults.md).
-DEFAULT_SPHERE_FORMULA = "slide"
+# The formula of a numba render unless one is asked for (decided in rtfgu.renderer).
+DEFAULT_SPHERE_FORMULA = DEFAULT_FORMULAS["numba"]
 
 
 def sphere_formula_id(formula) -> int:

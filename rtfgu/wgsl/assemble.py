@@ -31,11 +31,12 @@ import numpy as np
 
 from .. import layout
 from ..registry import LIGHTS, SHADERS, SHAPES
+from ..renderer import DEFAULT_FORMULAS
 from . import structs
 
 GENERATED = "<generated from rtfgu.layout>"
-# The sphere formula of a WGSL render unless one is asked for (docs/robust_defaults.md).
-DEFAULT_SPHERE_FORMULA = "robust"
+# The formula of a WGSL render unless one is asked for (decided in rtfgu.renderer).
+DEFAULT_SPHERE_FORMULA = DEFAULT_FORMULAS["wgpu"]
 
 
 def check_formula(formula) -> str:
@@ -274,14 +275,15 @@ def _bindings(flat, features, scene_buffer: str) -> list:
                      else "PinholeCamera")
     wanted = [("camera", camera_struct, flat.camera, False)]
     if "trace" in features:
-        for kind in _shape_kinds(features):
+        for kind in SHAPES:
+            if kind.name not in features:
+                continue
             count = "NUM_" + kind.table.upper()
             wanted.append((kind.table, "array<%s, %s>" % (kind.record, count),
                            flat.table(kind.name), False))
-            if kind.name in features:
-                index = flat.index(kind.name)
-                wanted.append((kind.name + "_index", "array<vec4i, %d>" % (len(_packed_index(index)) // 4),
-                               index, True))
+            index = flat.index(kind.name)
+            wanted.append((kind.name + "_index", "array<vec4i, %d>" % (len(_packed_index(index)) // 4),
+                           index, True))
         if len(flat.shaders):
             wanted.append(("materials", "array<Material, NUM_SHAPES>", flat.materials, False))
             wanted.append(("shaders", "array<vec4i, %d>" % (len(_packed_index(flat.shaders)) // 4),
