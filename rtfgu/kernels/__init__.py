@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from . import dispatch  # noqa: F401  (first: it points numba's cache at this kernel version)
 from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_scene
 from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
 from ..renderer import DEFAULT_FORMULAS

@@ -52,84 +52,102 @@ _KEEP = """            idx = index[i]
                 row = i"""
 
 
+def _overloaded(name: str, params: str, absent: str, present: str, doc: str,
+                eye_free: str = "", inline: str = "always") -> str:
+    """A function typed per call by an overload: the body ``absent`` when its first argument
+    is None (a kind the scene lacks), ``present`` otherwise; with ``eye_free``, that body
+    instead when ``eye`` is None. The choice is made when numba types the call, so it
+    costs nothing at run time; ``inline="always"`` puts the body into the caller."""
+    lines = ["def %s(%s):" % (name, params),
+             '    """%s (typed by the overload below)."""' % doc,
+             "",
+             "",
+             "@overload(%s, inline=\"%s\")" % (name, inline),
+             "def _typed_%s(%s):" % (name, params),
+             "    if isinstance(%s, types.NoneType):" % params.split(",")[0],
+             "        def absent(%s):" % params,
+             "            return %s" % absent,
+             "        return absent"]
+    if eye_free:
+        lines += ["    if isinstance(eye, types.NoneType):",
+                  "        def no_eye(%s):" % params]
+        lines += ["        " + line if line else line for line in eye_free.split("\n")]
+        lines += ["        return no_eye"]
+    lines += ["    def present(%s):" % params]
+    lines += ["    " + line if line else line for line in present.split("\n")]
+    lines += ["    return present"]
+    return "\n".join(lines)
+
+
 def _scan(k: int, kind) -> str:
     """scan_<kind>: the nearest hit of this kind's rows, given the nearest so far."""
     name = kind.name
-    eye_args = "eye, tile, " if kind.from_eye else ""
-    lines = ["@njit(cache=True, error_model=\"numpy\")",
-             "def scan_%s(table, index, %sorigin, direction, tmin, hit, formula):" % (name, eye_args),
-             "    if table is None:",
-             "        return hit",
-             "    tmax, best, kind, row = hit"]
     keep = _KEEP.format(kind=k)
-    if kind.from_eye:
-        # Primary rays from the eye: the tile's candidate rows, o - center and c per frame.
-        radius = layout.offset(kind.record, "radius")
-        lines += ["    if eye is not None:",
-                  "        candidates, n_candidates, from_eye = tile",
-                  "        terms = eye[0]"]
-        for condition, call in (
-                ("from_eye and formula == %d" % FORMULAS.index("robust"),
-                 "%s_roots_robust(row3(terms, i, 0), terms[i, 3], table[i, %d], direction, tmin, tmax)"
-                 % (name, radius)),
-                ("from_eye", "%s_roots(row3(terms, i, 0), terms[i, 3], direction, tmin, tmax)" % name)):
-            lines += ["        if %s:" % condition,
-                      "            for c in range(n_candidates):",
-                      "                i = candidates[c]",
-                      "                t = " + call,
-                      "\n".join("    " + line for line in keep.split("\n")),
-                      "            return tmax, best, kind, row"]
+    loops = []
     # One loop per formula: the formula is the same for every row, and a test of it
     # inside the loop would be paid per row.
     for formula in kind.formulas[::-1]:
+        loop = ["    for i in range(table.shape[0]):",
+                "        t = %s(origin, direction, tmin, tmax, %s)"
+                % (kind.formula_function(formula), _row_args(kind, "table", "i")),
+                ] + [line[4:] for line in keep.split("\n")]
         if formula != "slide":
-            lines.append("    if formula == %d:" % FORMULAS.index(formula))
-        else:
-            lines.append("    if True:")
-        lines += ["        for i in range(table.shape[0]):",
-                  "            t = %s(origin, direction, tmin, tmax, %s)"
-                  % (kind.formula_function(formula), _row_args(kind, "table", "i")),
-                  keep,
-                  "        return tmax, best, kind, row"]
-    lines.append("    return hit")
-    return "\n".join(lines)
+            loop = ["    if formula == %d:" % FORMULAS.index(formula)] + ["    " + l for l in loop]
+            loop.append("        return tmax, best, kind, row")
+        loops += loop
+    start = ["    tmax, best, kind, row = hit"]
+    end = ["    return tmax, best, kind, row"]
+    if not kind.from_eye:
+        return _overloaded("scan_" + name, "table, index, origin, direction, tmin, hit, formula",
+                           "hit", "\n".join(start + loops + end),
+                           "The nearest hit among the %ss, given the nearest so far" % name)
+    # Primary rays from the eye: the tile's candidate rows, o - center and c per frame.
+    radius = layout.offset(kind.record, "radius")
+    eye_loops = ["    candidates, n_candidates, from_eye = tile", "    terms = eye[0]"]
+    for condition, call in (
+            ("from_eye and formula == %d" % FORMULAS.index("robust"),
+             "%s_roots_robust(row3(terms, i, 0), terms[i, 3], table[i, %d], direction, tmin, tmax)"
+             % (name, radius)),
+            ("from_eye", "%s_roots(row3(terms, i, 0), terms[i, 3], direction, tmin, tmax)" % name)):
+        eye_loops += ["    if %s:" % condition,
+                      "        for c in range(n_candidates):",
+                      "            i = candidates[c]",
+                      "            t = " + call,
+                      keep,
+                      "        return tmax, best, kind, row"]
+    return _overloaded("scan_" + name, "table, index, eye, tile, origin, direction, tmin, hit, formula",
+                       "hit", "\n".join(start + eye_loops + loops + end),
+                       "The nearest hit among the %ss, given the nearest so far" % name,
+                       eye_free="\n".join(start + loops + end))
 
 
 def _any_hit(kind) -> str:
     """any_hit_<kind>: is any row of this kind hit in [tmin, tmax)? (a shadow ray)"""
-    lines = ["@njit(cache=True, error_model=\"numpy\")",
-             "def any_hit_%s(table, origin, direction, tmin, tmax, formula):" % kind.name,
-             "    if table is None:",
-             "        return False"]
+    lines = []
     for formula in kind.formulas[::-1]:
-        condition = "formula == %d" % FORMULAS.index(formula) if formula != "slide" else "True"
-        lines += ["    if %s:" % condition,
-                  "        for i in range(table.shape[0]):",
-                  "            if %s(origin, direction, tmin, tmax, %s) < tmax:"
-                  % (kind.formula_function(formula), _row_args(kind, "table", "i")),
-                  "                return True",
-                  "        return False"]
+        loop = ["    for i in range(table.shape[0]):",
+                "        if %s(origin, direction, tmin, tmax, %s) < tmax:"
+                % (kind.formula_function(formula), _row_args(kind, "table", "i")),
+                "            return True"]
+        if formula != "slide":
+            loop = ["    if formula == %d:" % FORMULAS.index(formula)] + ["    " + l for l in loop]
+            loop.append("        return False")
+        lines += loop
     lines.append("    return False")
-    return "\n".join(lines)
+    return _overloaded("any_hit_" + kind.name, "table, origin, direction, tmin, tmax, formula",
+                       "False", "\n".join(lines),
+                       "Is any %s hit in [tmin, tmax)?" % kind.name)
 
 
 def _normal(kind) -> str:
-    return "\n".join([
-        "@njit(cache=True, error_model=\"numpy\")",
-        "def normal_row_%s(table, row, position):" % kind.name,
-        "    if table is None:",
-        "        return position",
-        "    return normal_%s(position, %s)" % (kind.name, _row_args(kind, "table", "row")),
-    ])
+    return _overloaded("normal_row_" + kind.name, "table, row, position", "position",
+                       "    return normal_%s(position, %s)" % (kind.name, _row_args(kind, "table", "row")),
+                       "The unit normal of row ``row`` of the %ss at ``position``" % kind.name)
 
 
 def _direct(light) -> str:
     """The light loop (02562 "Sampling light in the shader"), written once per light kind."""
-    return "\n".join([
-        "@njit(cache=True, error_model=\"numpy\")",
-        "def direct_%s(table, shader, mat, surface_point, w_o, shapes, shadows, formula, result):" % light.name,
-        "    if table is None:",
-        "        return result, 0",
+    body = "\n".join([
         "    position, normal = surface_point",
         "    zero = lit(0, mat[0])",
         "    eps = lit(SPAWN_EPSILON, zero)",
@@ -139,16 +157,20 @@ def _direct(light) -> str:
         "        cos_theta = dot(normal, w_i)",
         "        if zero > cos_theta:  # Python's max(cos_theta, 0.0)",
         "            cos_theta = zero",
-        "        if cos_theta == zero:",
-        "            continue",
-        "        if shadows:",
-        "            n_shadow += 1",
-        "            if in_shadow(shapes, position, w_i, eps, dist - eps, formula):",
-        "                continue",
-        "        f = brdf(shader, mat, normal, w_o, w_i, cos_theta)",
-        "        result = add(result, scale(mul(f, L_i), cos_theta))",
-        "    return result, n_shadow",
-    ])
+        "        if cos_theta != zero:  # a light below the surface adds nothing",
+        "            visible = True",
+        "            if shadows:",
+        "                n_shadow += 1",
+        "                visible = not in_shadow(shapes, position, w_i, eps, dist - eps, formula)",
+        "            if visible:",
+        "                f = brdf(shader, mat, normal, w_o, w_i, cos_theta)",
+        "                result = add(result, scale(mul(f, L_i), cos_theta))",
+        "    return result, n_shadow"])
+    return _overloaded("direct_" + light.name,
+                       "table, shader, mat, surface_point, w_o, shapes, shadows, formula, result",
+                       "result, 0", body,
+                       "The light of every %s reflected by the surface, added to ``result``" % light.name,
+                       inline="never")
 
 
 def source() -> str:
@@ -170,15 +192,17 @@ def source() -> str:
             shader_names.add("brdf_" + shader.name)
         if shader.continues:
             shader_names.add("continue_" + shader.name)
-    parts = ['"""Generated from rtfgu.registry by rtfgu.kernels.dispatch: do not edit."""',
-             "from numba import njit",
+    header = ['"""Generated from rtfgu.registry by rtfgu.kernels.dispatch: do not edit."""',
+             "from numba import njit, types",
+             "from numba.extending import overload",
              "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
              "from rtfgu.kernels.lights import %s" % ", ".join("sample_" + l.name for l in LIGHTS),
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION",
              "from rtfgu.shading import SPAWN_EPSILON"]
     for module, names in sorted(imports.items()):
-        parts.append("from %s import %s" % (module, ", ".join(sorted(names))))
+        header.append("from %s import %s" % (module, ", ".join(sorted(names))))
+    parts = [header[0] + "\n" + "\n".join(header[1:])]
     for k, kind in enumerate(SHAPES):
         parts += [_scan(k, kind), _any_hit(kind), _normal(kind)]
 
@@ -188,7 +212,7 @@ def source() -> str:
         calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
                      % (kind.name, 2 * k, 2 * k + 1, eye_args))
     parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\")",
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def intersect_scene(shapes, eye, tile, origin, direction, tmin, tmax, formula):",
         '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss."""',
         "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
@@ -199,7 +223,7 @@ def source() -> str:
         + ["    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
            % (kind.name, 2 * k) for k, kind in enumerate(SHAPES)] + ["    return False"]))
     parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\")",
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def shape_normal(shapes, kind, row, position):",
         '    """normal_at(position) of row ``row`` of shape kind ``kind``."""']
         + ["    if kind == %d:\n        return normal_row_%s(shapes[%d], row, position)" % (k, kind.name, 2 * k)
@@ -207,7 +231,7 @@ def source() -> str:
     for light in LIGHTS:
         parts.append(_direct(light))
 
-    brdf_lines = ["@njit(cache=True, error_model=\"numpy\")",
+    brdf_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                   "def brdf(shader, mat, normal, w_o, w_i, cos_theta):",
                   '    """The BRDF term of the shader with id ``shader``."""']
     for shader in SHADERS:
@@ -219,7 +243,7 @@ def source() -> str:
 
     light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
                    "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
-    shade_lines = ["@njit(cache=True, error_model=\"numpy\")",
+    shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                    "def shade(shader, mat, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
                    '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',
                    '    shadow rays). A shader that continues the path exists only when ``bounces`` does."""',
@@ -246,7 +270,9 @@ def source() -> str:
     return "\n\n\n".join(parts) + "\n"
 
 
-def _cache_dir() -> Path:
+def cache_dir() -> Path:
+    """A writable folder for the generated module and numba's cache: RTFGU_CACHE_DIR, else
+    beside this file, else the user's cache folder."""
     for candidate in (os.environ.get("RTFGU_CACHE_DIR"), Path(__file__).resolve().parent / "__generated__",
                       Path.home() / ".cache" / "rtfgu", Path(tempfile.gettempdir()) / "rtfgu"):
         if not candidate:
@@ -254,13 +280,37 @@ def _cache_dir() -> Path:
         path = Path(candidate)
         try:
             path.mkdir(parents=True, exist_ok=True)
-            probe = path / ".writable"
-            probe.touch()
+            (path / ".writable").touch()
             return path
         except OSError:
             continue
     raise OSError("rtfgu.kernels.dispatch: no writable folder for the generated kernels "
                   "(set RTFGU_CACHE_DIR)")
+
+
+def kernel_version() -> str:
+    """A hash of every source the compiled kernels depend on: the kernel modules, the
+    layout and the registry they read, and the generated text. numba checks only the file
+    of the function it caches, so a kernel compiled against an older registry or an older
+    intersect.py would be loaded from its cache; a cache folder per version cannot be."""
+    digest = hashlib.sha256(source().encode())
+    package = Path(__file__).resolve().parent.parent
+    files = sorted(Path(__file__).resolve().parent.glob("*.py"))
+    files += [package / name for name in ("layout.py", "registry.py", "shading.py", "material.py", "ray.py")]
+    for path in files:
+        digest.update(path.name.encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:16]
+
+
+def use_versioned_cache() -> None:
+    """Point numba's cache at a folder of this kernel version (unless the user chose one
+    with NUMBA_CACHE_DIR). Called before any kernel is defined."""
+    import numba
+
+    if os.environ.get("NUMBA_CACHE_DIR"):
+        return
+    numba.config.CACHE_DIR = str(cache_dir() / ("numba-" + kernel_version()))
 
 
 def load():
@@ -270,7 +320,7 @@ def load():
     name = "rtfgu_dispatch_" + digest
     if name in sys.modules:
         return sys.modules[name]
-    path = _cache_dir() / (name + ".py")
+    path = cache_dir() / (name + ".py")
     if not path.is_file() or path.read_text() != text:
         tmp = path.with_suffix(".tmp%d" % os.getpid())
         tmp.write_text(text)
@@ -282,6 +332,7 @@ def load():
     return module
 
 
+use_versioned_cache()
 _generated = load()
 intersect_scene = _generated.intersect_scene
 in_shadow = _generated.in_shadow

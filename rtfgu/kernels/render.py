@@ -50,7 +50,7 @@ def from_eye_rows(eye):
     return 0 if eye is None else eye[0].shape[0]
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def trace(ray, shapes, lights, scene, eye, tile, settings, bounces):
     """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
     path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
