@@ -11,14 +11,19 @@ from .ray import RAY_EPSILON, Ray
 from .renderer import render, trace
 from .scene import Scene
 from .shading import HitInfo, shade
-from .shapes import Plane, Shape, Sphere, Triangle
+from .shapes import Shape
 from .image import write_png
+from .registry import SHAPES as _SHAPES
+
+# Every registered shape kind's lecture class (Plane, Sphere, Triangle, Disk, ...), exported
+# from its entry in rtfgu.registry.
+globals().update({_kind.cls.__name__: _kind.cls for _kind in _SHAPES})
 
 __all__ = [
     "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON",
     "Camera", "OrthographicCamera", "PinholeCamera",
-    "Shape", "Plane", "Sphere", "Triangle", "Scene",
+    "Shape", "Scene",
     "Material", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
     "PointLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "write_png",
-]
+] + [_kind.cls.__name__ for _kind in _SHAPES]

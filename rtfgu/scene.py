@@ -37,7 +37,7 @@ class Scene:
     def validate(self) -> None:
         """Raise a ValueError naming the field if this scene cannot be rendered."""
         from .cameras.camera import Camera as _Camera
-        from .lights import PointLight
+        from .registry import LIGHTS
         from .shapes.shape import Shape
 
         if not isinstance(self.camera, _Camera):
@@ -46,6 +46,7 @@ class Scene:
             if not isinstance(shape, Shape):
                 raise ValueError("Scene.shapes[%d] must be a Shape, got %r" % (i, shape))
         for i, light in enumerate(self.lights):
-            if not isinstance(light, PointLight):
-                raise ValueError("Scene.lights[%d] must be a PointLight, got %r" % (i, light))
+            if not isinstance(light, tuple(kind.cls for kind in LIGHTS)):
+                raise ValueError("Scene.lights[%d] must be one of %s, got %r"
+                                 % (i, ", ".join(kind.record for kind in LIGHTS), light))
         self.background = as_float3(self.background, "Scene.background")
