@@ -15,12 +15,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from rtfgu.hardcases import FAMILIES, build, evaluate
+from rtfgu.hardcases import FAMILIES, build, evaluate, runs
 from rtfgu.hardcases.paths import NumbaPath, ReferencePath
 from rtfgu.hardcases.wgsl_path import WgslPath, wgsl_unavailable_reason
-from rtfgu.layout import PLANE, SPHERE, TRIANGLE
 
-KIND_OF = {"sphere": SPHERE, "plane": PLANE, "triangle": TRIANGLE}
 SPEED_FAMILY = {"sphere": "sphere_far_small", "plane": "plane_nearly_parallel", "triangle": "tri_fan_edges"}
 
 
@@ -34,10 +32,13 @@ def _paths():
 
 @lru_cache(maxsize=None)
 def hardcase_results() -> tuple:
-    """Every (family, path) Result; a lecture-layer rejection is recorded as its message."""
+    """Every (family, path) Result; a lecture-layer rejection is recorded as its message.
+    A path without a formula for the family's kind (the disk's robust one) is left out."""
     rows = []
     for name in FAMILIES:
         for path in _paths():
+            if not runs(build(name, path.precision), path):
+                continue
             try:
                 rows.append(evaluate(build(name, path.precision), path))
             except ValueError as error:
@@ -74,17 +75,17 @@ def speed_rows(rays: int = 200_000) -> tuple:
             lo = np.ascontiguousarray(np.tile(fam.tmin, reps)[:rays])
             hi = np.ascontiguousarray(np.tile(fam.tmax, reps)[:rays])
             s = np.ascontiguousarray(np.tile(fam.shapes[0], (reps, 1))[:rays])
-            batch = kernels.BATCH[KIND_OF[kind_name]]
             speeds = {}
-            for formula, fid in (("slide", kernels.SLIDE), ("robust", kernels.ROBUST)):
-                speeds[formula] = _rays_per_second(lambda f, *a: batch(f, *a), fid, o, d, lo, hi, s)
+            for formula in ("slide", "robust"):
+                speeds[formula] = _rays_per_second(kernels.batch, kernels.ADAPTERS[kind_name, formula],
+                                                   o, d, lo, hi, s)
             rows.append(dict(kind=kind_name, path="numba", precision=precision, **speeds))
             if precision == "float32" and wgsl_unavailable_reason() is None:
                 speeds = {}
                 for formula in ("slide", "robust"):
                     path = WgslPath(formula)
                     speeds[formula] = _rays_per_second(
-                        lambda k, *a: path(k, *a), KIND_OF[kind_name], o, d, lo, hi, s, repeat=2)
+                        path, kind_name, o, d, lo, hi, s, repeat=2)
                 rows.append(dict(kind=kind_name, path="wgsl", precision=precision, **speeds))
     return tuple(rows)
 

@@ -21,6 +21,10 @@ import math
 
 from .float3 import Float3, as_float3, cross, dot
 from .ray import Ray
+from .shapes.plane import Plane
+from .shapes.sphere import Sphere
+
+WHITE = (1.0, 1.0, 1.0)
 
 # Unit roundoff u (half an ulp of 1) of each precision, and PBRT's gamma(n) = n u / (1 - n u),
 # the bound on the relative error of n chained roundings (PBRT-v4, section 6.8.1).
@@ -30,16 +34,6 @@ UNIT_ROUNDOFF = {"float64": 2.0 ** -53, "float32": 2.0 ** -24}
 def gamma(n: int, precision: str = "float64") -> float:
     u = UNIT_ROUNDOFF[precision]
     return (n * u) / (1.0 - n * u)
-
-
-def _check_radius(radius) -> float:
-    try:
-        ok = math.isfinite(radius) and radius > 0
-    except TypeError:
-        ok = False
-    if not ok:
-        raise ValueError("radius must be finite and > 0, got %r" % (radius,))
-    return float(radius)
 
 
 def _accept(ray: Ray, t: float) -> bool:
@@ -61,25 +55,31 @@ def intersect_sphere_robust(ray: Ray, center, radius: float) -> bool:
     - the roots are t0 = c / q and t1 = q / a with q = b' + sign(b') sqrt(disc), which never
       subtracts two nearly equal numbers (the near root of the slide formula does when the
       origin is close to the surface).
+
+    Both divisions by a go through 1 / a, as in the render kernel
+    (rtfgu.kernels.intersect.sphere_roots_robust, where 1 / a depends on the ray only and is
+    computed once for all spheres): the two compute the same operations in the same order.
     """
-    center = as_float3(center, "center")
-    radius = _check_radius(radius)
+    sphere = Sphere(center, radius, WHITE)  # refuses what the lecture's Sphere refuses
+    center, radius = sphere.center, sphere.radius
     f = ray.origin - center
     d = ray.direction
     a = dot(d, d)
+    inv_a = 1.0 / a
     b = -dot(f, d)
     c = dot(f, f) - radius * radius
-    l = f + d * (b / a)
+    l = f + d * (b * inv_a)
     disc = a * (radius * radius - dot(l, l))
     if disc < 0.0:
         return False
-    q = b + math.copysign(math.sqrt(disc), b)
+    root = math.sqrt(disc)
+    q = b + root if b >= 0.0 else b - root
     if q == 0.0:
         # b' = 0 and disc = 0: the origin is the tangent point, both roots are 0.
         t0 = t1 = 0.0
     else:
         t0 = c / q
-        t1 = q / a
+        t1 = q * inv_a
     if t0 > t1:
         t0, t1 = t1, t0
     return _accept(ray, t0) or _accept(ray, t1)
@@ -130,11 +130,9 @@ def intersect_plane_robust(ray: Ray, point, normal) -> bool:
     the pair of TwoSum, so that the sign of t is right for nearly parallel rays and for
     origins close to the plane. A ray with d . n == 0 is a defined miss (it never meets the
     plane, or lies in it, which we do not count as a hit)."""
-    point = as_float3(point, "point")
-    normal = as_float3(normal, "normal")
-    if normal.length_squared() == 0.0:
-        raise ValueError("normal must be non-zero")
-    o, d, n = ray.origin, ray.direction, normal
+    plane = Plane(point, normal, WHITE)  # refuses what the lecture's Plane refuses
+    point, n = plane.point, plane.normal
+    o, d = ray.origin, ray.direction
     denom = dot2((d.x, d.y, d.z), (n.x, n.y, n.z))
     if denom == 0.0:
         return False

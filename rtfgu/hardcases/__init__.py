@@ -1,4 +1,4 @@
-"""Hard cases for ray/shape intersection (issue 6): seeded families with exact truth, the
+"""Hard cases for ray/shape intersection: seeded families with exact truth, the
 paths they run through, and the evaluator that counts what each path gets wrong.
 
     from rtfgu.hardcases import FAMILIES, build, evaluate, available_paths
@@ -7,7 +7,8 @@ paths they run through, and the evaluator that counts what each path gets wrong.
 """
 from .evaluate import Result, evaluate
 from .families import FAMILIES, Family, build
-from .paths import FORMULAS, NumbaPath, ReferencePath, available_paths
+from .kinds import KINDS
+from .paths import FORMULAS, NumbaPath, ReferencePath, available_paths, runs
 
-__all__ = ["FAMILIES", "FORMULAS", "Family", "NumbaPath", "ReferencePath", "Result",
-           "available_paths", "build", "evaluate"]
+__all__ = ["FAMILIES", "FORMULAS", "Family", "KINDS", "NumbaPath", "ReferencePath", "Result",
+           "available_paths", "build", "evaluate", "runs"]

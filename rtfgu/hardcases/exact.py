@@ -113,16 +113,21 @@ def sphere(o, d, tmin, tmax, center, radius):
 
 # --- plane ----------------------------------------------------------------------------
 
+def _plane_t(o, d, point, normal):
+    """t = ((a - o) . n) / (d . n) as a Fraction, None when d . n == 0."""
+    n = q3(normal)
+    den = dot(q3(d), n)
+    if den == 0:
+        return None
+    return dot(sub(q3(point), q3(o)), n) / den
+
+
 def plane(o, d, tmin, tmax, point, normal):
     """t = ((a - o) . n) / (d . n) in rationals; d . n == 0 is a miss."""
     if not (finite(*o, *d, *point, *normal, tmin) and not math.isnan(tmax)):
         return MISS
-    n = q3(normal)
-    den = dot(q3(d), n)
-    if den == 0:
-        return MISS
-    t = dot(sub(q3(point), q3(o)), n) / den
-    if _in_range_rational(t, tmin, tmax):
+    t = _plane_t(o, d, point, normal)
+    if t is not None and _in_range_rational(t, tmin, tmax):
         return dd_from_fraction(t)
     return MISS
 
@@ -152,3 +157,20 @@ def triangle(o, d, tmin, tmax, v0, v1, v2):
     if beta >= 0 and gamma >= 0 and beta + gamma <= 1:
         return dd_from_fraction(t)
     return MISS
+
+
+# --- disk -----------------------------------------------------------------------------
+
+def disk(o, d, tmin, tmax, center, normal, radius):
+    """The plane of the disk (``plane``), then (p - c) . (p - c) <= r^2 at p = o + t d, in
+    rationals: the rim belongs to the disk (Suffern ch. 19; rtfgu.shapes.disk)."""
+    if not finite(radius):
+        return MISS
+    t = plane(o, d, tmin, tmax, center, normal)
+    if t == MISS:
+        return MISS
+    tq = _plane_t(o, d, center, normal)
+    p = tuple(oi + tq * di for oi, di in zip(q3(o), q3(d)))
+    to_hit = sub(p, q3(center))
+    r = Q(float(radius))
+    return t if dot(to_hit, to_hit) <= r * r else MISS

@@ -12,16 +12,34 @@ import math
 import zlib
 from dataclasses import dataclass, field
 from functools import lru_cache
+from typing import NamedTuple
 
 import numpy as np
 
-from ..layout import DTYPES, PLANE, SPHERE, TRIANGLE
+from ..layout import DTYPES
 from ..ray import RAY_EPSILON
 from . import exact
+from .kinds import KINDS
 
-SHAPE_WIDTH = {SPHERE: 4, PLANE: 6, TRIANGLE: 9}
-KIND_NAMES = {SPHERE: "sphere", PLANE: "plane", TRIANGLE: "triangle"}
 DEFAULT_RAYS = 200
+
+
+FAMILIES = {}
+
+
+class FamilySpec(NamedTuple):
+    group: str
+    kind: str            # a name of rtfgu.hardcases.kinds.KINDS
+    builder: object      # (rng, n) -> the raw rays and shapes, in float64
+    description: str
+
+
+def family(name: str, group: str, kind: str, description: str):
+    """Register the builder below as the family ``name`` of ``kind`` shapes."""
+    def register(builder):
+        FAMILIES[name] = FamilySpec(group, kind, builder, description)
+        return builder
+    return register
 
 
 @dataclass
@@ -37,7 +55,7 @@ class Family:
 
     name: str
     group: str
-    kind: int
+    kind: str            # a name of rtfgu.hardcases.kinds.KINDS
     description: str
     precision: str
     origins: np.ndarray
@@ -67,7 +85,7 @@ def _unit(v):
     return v / np.linalg.norm(v, axis=-1, keepdims=True)
 
 
-def _random_unit(rng, n, dtype=np.float64):
+def _random_unit(rng, n):
     return _unit(rng.normal(size=(n, 3)))
 
 
@@ -92,7 +110,9 @@ def _aim_at_sphere(rng, center, radius, distance, impact):
 
 # --- spheres --------------------------------------------------------------------------
 
-def _sphere_tangent(rng, n, dtype=np.float64):
+@family("sphere_tangent", "sphere", "sphere",
+        "tangent and grazing rays: impact parameter r (1 +- 2e-4), origin 20-100 r away")
+def _sphere_tangent(rng, n):
     c = rng.uniform(-2, 2, (n, 3))
     r = rng.uniform(0.5, 2.0, n)
     D = r * rng.uniform(20, 100, n)
@@ -101,7 +121,9 @@ def _sphere_tangent(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
-def _sphere_far_small(rng, n, dtype=np.float64):
+@family("sphere_far_small", "sphere", "sphere",
+        "far, small spheres: 100-1000 away, radius 1e-4..1e-3 of the distance")
+def _sphere_far_small(rng, n):
     D = rng.uniform(100, 1000, n)
     r = D * _log_uniform(rng, -4, -3, n)
     o0 = rng.uniform(-1, 1, (n, 3))
@@ -111,7 +133,8 @@ def _sphere_far_small(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
-def _sphere_tiny_radius(rng, n, dtype=np.float64):
+@family("sphere_tiny_radius", "sphere", "sphere", "radii 1e-6..1e-3, origin 3e2..1e4 radii away")
+def _sphere_tiny_radius(rng, n):
     r = _log_uniform(rng, -6, -3, n)
     D = r * _log_uniform(rng, 2.5, 4, n)
     c = _random_unit(rng, n) * (D * rng.uniform(0, 1, n))[:, None]
@@ -119,14 +142,17 @@ def _sphere_tiny_radius(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
-def _sphere_inside(rng, n, dtype=np.float64):
+@family("sphere_inside", "sphere", "sphere", "rays that start inside the sphere")
+def _sphere_inside(rng, n):
     c = rng.uniform(-2, 2, (n, 3))
     r = rng.uniform(0.5, 2.0, n)
     o = c + _random_unit(rng, n) * (r * rng.uniform(0, 0.999, n))[:, None]
     return dict(origins=o, directions=_random_unit(rng, n), shapes=[np.column_stack([c, r])])
 
 
-def _sphere_direction_scale(rng, n, dtype=np.float64):
+@family("sphere_direction_scale", "sphere", "sphere",
+        "unnormalised directions of length 1e-12..1e12")
+def _sphere_direction_scale(rng, n):
     c = rng.uniform(-2, 2, (n, 3))
     r = rng.uniform(0.5, 2.0, n)
     o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(2, 10, n), r * rng.uniform(0, 1.3, n))
@@ -140,7 +166,9 @@ _INTEGER_NORMALS = np.array([(0, 0, 1), (1, 2, 2), (3, 4, 0), (1, 1, 1), (2, -1,
                              (1, -2, 5), (-4, 1, 8)], dtype=np.float64)
 
 
-def _plane_parallel(rng, n, dtype=np.float64):
+@family("plane_parallel", "plane", "plane",
+        "d . n exactly 0 (a quarter of the rays lie in the plane)")
+def _plane_parallel(rng, n):
     # Small integers times powers of two: d . n is exactly 0 in either precision.
     nrm = _INTEGER_NORMALS[rng.integers(0, len(_INTEGER_NORMALS), n)]
     m = rng.integers(-3, 4, (n, 3)).astype(np.float64)
@@ -155,7 +183,9 @@ def _plane_parallel(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([a, nrm])])
 
 
-def _plane_nearly_parallel(rng, n, dtype=np.float64):
+@family("plane_nearly_parallel", "plane", "plane",
+        "angle to the plane 1e-20..1e-2, origin 0.1-10 off the plane")
+def _plane_nearly_parallel(rng, n):
     nrm = _random_unit(rng, n)
     along = _perpendicular(rng, nrm)
     theta = rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -20, -2, n)
@@ -166,7 +196,9 @@ def _plane_nearly_parallel(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([a, nrm])])
 
 
-def _plane_start_on(rng, n, dtype=np.float64):
+@family("plane_start_on", "plane", "plane",
+        "origins on the plane (rounded), tmin = RAY_EPSILON, coordinates up to 100")
+def _plane_start_on(rng, n):
     nrm = _random_unit(rng, n)
     a = rng.uniform(-50, 50, (n, 3))
     o = a + _perpendicular(rng, nrm) * rng.uniform(0, 50, n)[:, None]
@@ -179,17 +211,18 @@ def _plane_start_on(rng, n, dtype=np.float64):
 FAN = 6
 
 
-def _grid(x, dtype):
-    """x (inside [2, 4)) rounded to dtype: every float of [2, 4) is a multiple of the same
-    ulp, so sums and differences of such points that stay inside [2, 4) are exact."""
-    return np.clip(x, 2.0, np.nextafter(4.0, 0.0)).astype(dtype).astype(np.float64)
+def _grid(x):
+    """x (inside [2, 4)) rounded to float32: every float32 of [2, 4) is a multiple of the same
+    ulp, so sums and differences of such points that stay inside [2, 4) are exact, in
+    float32 and in float64 alike (the float64 grid of [2, 4) refines the float32 one)."""
+    return np.clip(x, 2.0, np.nextafter(4.0, 0.0)).astype(np.float32).astype(np.float64)
 
 
-def _fans(rng, n, dtype):
+def _fans(rng, n):
     """A closed fan of FAN triangles around a centre vertex per ray, slightly non-planar,
     inside the box [2, 4)^3 where the float grid is uniform. Ring vertex i is vc + 2 e_i, so
     the point vc + e_i lies exactly on the shared edge (vc, ring i), in either precision."""
-    vc = _grid(rng.uniform(2.9, 3.1, (n, 3)), dtype)
+    vc = _grid(rng.uniform(2.9, 3.1, (n, 3)))
     t1 = _random_unit(rng, n)
     t2 = _perpendicular(rng, t1)
     nz = np.cross(t1, t2)
@@ -199,7 +232,7 @@ def _fans(rng, n, dtype):
         rad = rng.uniform(0.1, 0.4, n)
         e = (t1 * (rad * np.cos(ang))[:, None] + t2 * (rad * np.sin(ang))[:, None]
              + nz * rng.uniform(-0.05, 0.05, n)[:, None])
-        half.append(_grid(vc + e, dtype) - vc)
+        half.append(_grid(vc + e) - vc)
     ring = [vc + 2.0 * e for e in half]
     return vc, ring, half, nz
 
@@ -220,25 +253,29 @@ def _fan_shapes(rng, vc, ring):
     return shapes
 
 
-def _fan_origins(rng, target, nz, n, dtype):
+def _fan_origins(rng, target, nz, n):
     # target - origin is exact (both on the uniform grid), so the exact ray passes exactly
     # through the target point.
     side = rng.choice([-1.0, 1.0], n)[:, None]
     return _grid(target + nz * side * rng.uniform(0.3, 0.8, n)[:, None]
-                 + rng.uniform(-0.2, 0.2, (n, 3)), dtype)
+                 + rng.uniform(-0.2, 0.2, (n, 3)))
 
 
-def _tri_fan_edges(rng, n, dtype=np.float64):
-    vc, ring, half, nz = _fans(rng, n, dtype)
+@family("tri_fan_edges", "triangle", "triangle",
+        "rays exactly through an edge shared by two triangles of a closed 6-triangle fan")
+def _tri_fan_edges(rng, n):
+    vc, ring, half, nz = _fans(rng, n)
     pick = rng.integers(0, FAN, n)
     target = vc + np.stack(half)[pick, np.arange(n)]
-    o = _fan_origins(rng, target, nz, n, dtype)
+    o = _fan_origins(rng, target, nz, n)
     return dict(origins=o, directions=target - o, shapes=_fan_shapes(rng, vc, ring))
 
 
-def _tri_fan_vertex(rng, n, dtype=np.float64):
-    vc, ring, half, nz = _fans(rng, n, dtype)
-    o = _fan_origins(rng, vc, nz, n, dtype)
+@family("tri_fan_vertex", "triangle", "triangle",
+        "rays exactly through the vertex shared by all six triangles of a closed fan")
+def _tri_fan_vertex(rng, n):
+    vc, ring, half, nz = _fans(rng, n)
+    o = _fan_origins(rng, vc, nz, n)
     return dict(origins=o, directions=vc - o, shapes=_fan_shapes(rng, vc, ring))
 
 
@@ -255,7 +292,8 @@ def _triangle_rays(rng, v0, v1, v2, lo, hi, n, distance=(1.0, 5.0)):
     return o, target - o
 
 
-def _tri_needle(rng, n, dtype=np.float64):
+@family("tri_needle", "triangle", "triangle", "needle triangles 1e-7..1e-3 wide")
+def _tri_needle(rng, n):
     v0 = rng.uniform(-2, 2, (n, 3))
     e = _random_unit(rng, n)
     side = _perpendicular(rng, e)
@@ -266,7 +304,9 @@ def _tri_needle(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
 
 
-def _tri_zero_area(rng, n, dtype=np.float64):
+@family("tri_zero_area", "triangle", "triangle",
+        "zero-area triangles (collinear or repeated vertices): always a miss")
+def _tri_zero_area(rng, n):
     # Collinear or repeated vertices with small integer coordinates: the area is exactly 0.
     v0 = rng.integers(-8, 9, (n, 3)).astype(np.float64)
     e = rng.integers(-3, 4, (n, 3)).astype(np.float64)
@@ -279,7 +319,8 @@ def _tri_zero_area(rng, n, dtype=np.float64):
     return dict(origins=o, directions=target - o, shapes=[np.column_stack([v0, v1, v2])])
 
 
-def _tri_nearly_parallel(rng, n, dtype=np.float64):
+@family("tri_nearly_parallel", "triangle", "triangle", "angle to the triangle's plane 1e-8..1e-1")
+def _tri_nearly_parallel(rng, n):
     v0 = rng.uniform(-2, 2, (n, 3))
     v1 = v0 + rng.uniform(-1, 1, (n, 3))
     v2 = v0 + rng.uniform(-1, 1, (n, 3))
@@ -293,9 +334,79 @@ def _tri_nearly_parallel(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
 
 
+# --- disks (Suffern ch. 19) -----------------------------------------------------------
+
+# Pythagorean triples (a, b, c): the rim point c + a u + b v of a disk of radius c with
+# axis-aligned u, v and normal is exact in either precision, so a ray can pass exactly
+# through the rim.
+_TRIPLES = np.array([(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25), (20, 21, 29)], dtype=np.float64)
+
+
+@family("disk_rim", "disk", "disk",
+        "rays through the rim: exactly (Pythagorean rim points, even rows) or 1e-8..1e-5 r off it")
+def _disk_rim(rng, n):
+    rows = np.arange(n)
+    axis = rng.integers(0, 3, n)
+    scale = 2.0 ** rng.integers(-4, 3, n)
+    abc = _TRIPLES[rng.integers(0, len(_TRIPLES), n)] * scale[:, None]
+    c = rng.integers(-8, 9, (n, 3)).astype(np.float64)
+    nrm = np.zeros((n, 3))
+    nrm[rows, axis] = rng.choice([-1.0, 1.0], n) * 2.0 ** rng.integers(-2, 3, n)
+    rim = np.zeros((n, 3))
+    rim[rows, (axis + 1) % 3] = abc[:, 0] * rng.choice([-1.0, 1.0], n)
+    rim[rows, (axis + 2) % 3] = abc[:, 1] * rng.choice([-1.0, 1.0], n)
+    target = c + rim
+    o = target + rng.integers(-6, 7, (n, 3))
+    o[rows, axis] = target[rows, axis] + rng.choice([-1.0, 1.0], n) * rng.integers(1, 7, n)
+    r = abc[:, 2]
+    # odd rows: a tilted disk, aimed just inside or outside its rim
+    odd = rows % 2 == 1
+    r_t = rng.uniform(0.5, 2.0, n)
+    c_t, nrm_t, _, target_t = _disk_in_plane(
+        rng, n, r_t, 1.0 + rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -5, n))
+    o_t = target_t + _unit(nrm_t * rng.choice([-1.0, 1.0], n)[:, None]
+                           + rng.uniform(-0.7, 0.7, (n, 3))) * rng.uniform(1, 5, n)[:, None]
+    c, nrm, r = np.where(odd[:, None], c_t, c), np.where(odd[:, None], nrm_t, nrm), np.where(odd, r_t, r)
+    target, o = np.where(odd[:, None], target_t, target), np.where(odd[:, None], o_t, o)
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([c, nrm, r])])
+
+
+def _disk_in_plane(rng, n, radius, reach):
+    """A disk per ray and a point of its plane at reach * radius from the centre."""
+    c = rng.uniform(-2, 2, (n, 3))
+    nrm = _random_unit(rng, n)
+    u = _perpendicular(rng, nrm)
+    return c, nrm, u, c + u * (radius * reach)[:, None]
+
+
+def _nearly_in_plane(rng, nrm, theta):
+    along = _perpendicular(rng, nrm)
+    return along * np.cos(theta)[:, None] + nrm * np.sin(theta)[:, None]
+
+
+@family("disk_nearly_parallel", "disk", "disk", "angle to the disk's plane 1e-8..1e-1, aimed within 1.3 r")
+def _disk_nearly_parallel(rng, n):
+    r = rng.uniform(0.5, 2.0, n)
+    c, nrm, _, target = _disk_in_plane(rng, n, r, rng.uniform(0, 1.3, n))
+    d = _nearly_in_plane(rng, nrm, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -1, n))
+    o = target - d * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, nrm, r])])
+
+
+@family("disk_grazing_edge", "disk", "disk",
+        "nearly parallel (1e-6..1e-2) rays through the rim, 1 +- 1e-4 r from the centre")
+def _disk_grazing_edge(rng, n):
+    r = rng.uniform(0.5, 2.0, n)
+    c, nrm, u, target = _disk_in_plane(rng, n, r, 1.0 + rng.uniform(-1e-4, 1e-4, n))
+    d = _nearly_in_plane(rng, nrm, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -6, -2, n))
+    o = target - d * (r * rng.uniform(0.5, 3, n))[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, nrm, r])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
-def _offset_sphere(rng, n, dtype=np.float64):
+@family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")
+def _offset_sphere(rng, n):
     offset = _random_unit(rng, n) * _log_uniform(rng, 4, 7, n)[:, None]
     r = _log_uniform(rng, 0, 1, n)
     c = offset + rng.uniform(-1, 1, (n, 3)) * r[:, None]
@@ -303,7 +414,8 @@ def _offset_sphere(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
-def _offset_triangle(rng, n, dtype=np.float64):
+@family("offset_triangle", "offset", "triangle", "triangles 1e4..1e7 from the world origin")
+def _offset_triangle(rng, n):
     offset = _random_unit(rng, n) * _log_uniform(rng, 4, 7, n)[:, None]
     size = _log_uniform(rng, 0, 1, n)[:, None]
     v0 = offset + rng.uniform(-1, 1, (n, 3)) * size
@@ -313,7 +425,8 @@ def _offset_triangle(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([v0, v1, v2])])
 
 
-def _tiny_sphere(rng, n, dtype=np.float64):
+@family("tiny_sphere", "offset", "sphere", "scenes of size 1e-6..1e-3, tmin 0")
+def _tiny_sphere(rng, n):
     scale = _log_uniform(rng, -6, -3, n)
     c = rng.uniform(-1, 1, (n, 3)) * scale[:, None]
     r = scale * rng.uniform(0.3, 1, n)
@@ -321,7 +434,8 @@ def _tiny_sphere(rng, n, dtype=np.float64):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
-def _tiny_triangle(rng, n, dtype=np.float64):
+@family("tiny_triangle", "offset", "triangle", "scenes of size 1e-6..1e-3, tmin 0")
+def _tiny_triangle(rng, n):
     size = _log_uniform(rng, -6, -3, n)[:, None]
     v0 = rng.uniform(-1, 1, (n, 3)) * size
     v1 = v0 + rng.uniform(-1, 1, (n, 3)) * size
@@ -342,7 +456,9 @@ def _spawn_directions(rng, nrm, mode):
     return nrm * (cos * sign) + v * np.sqrt(1 - cos ** 2)
 
 
-def _spawn_sphere(rng, n, dtype=np.float64):
+@family("spawn_sphere", "secondary", "sphere",
+        "rays leaving a sphere (out, in, out with nothing beyond), scale 1e-3..1e4")
+def _spawn_sphere(rng, n):
     scale = _log_uniform(rng, -3, 4, n)
     c = rng.uniform(-1, 1, (n, 3)) * scale[:, None]
     r = scale * rng.uniform(0.5, 2, n)
@@ -355,7 +471,9 @@ def _spawn_sphere(rng, n, dtype=np.float64):
                 self_threshold=1e-4 * r, mode=mode)
 
 
-def _spawn_plane(rng, n, dtype=np.float64):
+@family("spawn_plane", "secondary", "plane",
+        "rays leaving a plane, a parallel plane 1e-3..1e-2 beyond, scale 1e-3..1e4")
+def _spawn_plane(rng, n):
     scale = _log_uniform(rng, -3, 4, n)
     a = rng.uniform(-1, 1, (n, 3)) * scale[:, None]
     nrm = _random_unit(rng, n)
@@ -368,7 +486,9 @@ def _spawn_plane(rng, n, dtype=np.float64):
                 self_threshold=1e-4 * scale, mode=mode)
 
 
-def _spawn_triangle(rng, n, dtype=np.float64):
+@family("spawn_triangle", "secondary", "triangle",
+        "rays leaving a triangle, a parallel one 1e-3..1e-2 beyond, scale 1e-3..1e4")
+def _spawn_triangle(rng, n):
     scale = _log_uniform(rng, -3, 4, n)[:, None]
     v0 = rng.uniform(-1, 1, (n, 3)) * scale
     v1 = v0 + _random_unit(rng, n) * scale
@@ -385,7 +505,7 @@ def _spawn_triangle(rng, n, dtype=np.float64):
 
 # --- NaN and infinite input -----------------------------------------------------------
 
-def _corrupt(rng, built, width):
+def _corrupt(rng, built, kind):
     """Put a NaN, +inf or -inf into one field of each ray: origin, direction (or a zero
     direction), tmin, or the shape. The truth of every such ray is a miss."""
     n = built["origins"].shape[0]
@@ -405,62 +525,23 @@ def _corrupt(rng, built, width):
         elif f == 3:
             tmin[i] = math.nan
         else:
-            s[i, rng.integers(0, width)] = bad[i]
+            s[i, rng.integers(0, KINDS[kind].width)] = bad[i]
     return dict(origins=o, directions=d, shapes=[s], tmin=tmin, field_of=field_of)
 
 
-def _invalid_sphere(rng, n, dtype=np.float64):
-    return _corrupt(rng, _sphere_inside(rng, n), 4)
+@family("invalid_sphere", "invalid", "sphere", "NaN, inf or zero direction in one field")
+def _invalid_sphere(rng, n):
+    return _corrupt(rng, _sphere_inside(rng, n), "sphere")
 
 
-def _invalid_plane(rng, n, dtype=np.float64):
-    return _corrupt(rng, _plane_nearly_parallel(rng, n), 6)
+@family("invalid_plane", "invalid", "plane", "NaN, inf or zero direction in one field")
+def _invalid_plane(rng, n):
+    return _corrupt(rng, _plane_nearly_parallel(rng, n), "plane")
 
 
-def _invalid_triangle(rng, n, dtype=np.float64):
-    return _corrupt(rng, _tri_needle(rng, n), 9)
-
-
-# name: (group, kind, builder, description)
-FAMILIES = {
-    "sphere_tangent": ("sphere", SPHERE, _sphere_tangent,
-                       "tangent and grazing rays: impact parameter r (1 +- 2e-4), origin 20-100 r away"),
-    "sphere_far_small": ("sphere", SPHERE, _sphere_far_small,
-                         "far, small spheres: 100-1000 away, radius 1e-4..1e-3 of the distance"),
-    "sphere_tiny_radius": ("sphere", SPHERE, _sphere_tiny_radius,
-                           "radii 1e-6..1e-3, origin 3e2..1e4 radii away"),
-    "sphere_inside": ("sphere", SPHERE, _sphere_inside, "rays that start inside the sphere"),
-    "sphere_direction_scale": ("sphere", SPHERE, _sphere_direction_scale,
-                               "unnormalised directions of length 1e-12..1e12"),
-    "plane_parallel": ("plane", PLANE, _plane_parallel,
-                       "d . n exactly 0 (a quarter of the rays lie in the plane)"),
-    "plane_nearly_parallel": ("plane", PLANE, _plane_nearly_parallel,
-                              "angle to the plane 1e-20..1e-2, origin 0.1-10 off the plane"),
-    "plane_start_on": ("plane", PLANE, _plane_start_on,
-                       "origins on the plane (rounded), tmin = RAY_EPSILON, coordinates up to 100"),
-    "tri_fan_edges": ("triangle", TRIANGLE, _tri_fan_edges,
-                      "rays exactly through an edge shared by two triangles of a closed 6-triangle fan"),
-    "tri_fan_vertex": ("triangle", TRIANGLE, _tri_fan_vertex,
-                       "rays exactly through the vertex shared by all six triangles of a closed fan"),
-    "tri_needle": ("triangle", TRIANGLE, _tri_needle, "needle triangles 1e-7..1e-3 wide"),
-    "tri_zero_area": ("triangle", TRIANGLE, _tri_zero_area,
-                      "zero-area triangles (collinear or repeated vertices): always a miss"),
-    "tri_nearly_parallel": ("triangle", TRIANGLE, _tri_nearly_parallel,
-                            "angle to the triangle's plane 1e-8..1e-1"),
-    "spawn_sphere": ("secondary", SPHERE, _spawn_sphere,
-                     "rays leaving a sphere (out, in, out with nothing beyond), scale 1e-3..1e4"),
-    "spawn_plane": ("secondary", PLANE, _spawn_plane,
-                    "rays leaving a plane, a parallel plane 1e-3..1e-2 beyond, scale 1e-3..1e4"),
-    "spawn_triangle": ("secondary", TRIANGLE, _spawn_triangle,
-                       "rays leaving a triangle, a parallel one 1e-3..1e-2 beyond, scale 1e-3..1e4"),
-    "offset_sphere": ("offset", SPHERE, _offset_sphere, "spheres 1e4..1e7 from the world origin"),
-    "offset_triangle": ("offset", TRIANGLE, _offset_triangle, "triangles 1e4..1e7 from the world origin"),
-    "tiny_sphere": ("offset", SPHERE, _tiny_sphere, "scenes of size 1e-6..1e-3, tmin 0"),
-    "tiny_triangle": ("offset", TRIANGLE, _tiny_triangle, "scenes of size 1e-6..1e-3, tmin 0"),
-    "invalid_sphere": ("invalid", SPHERE, _invalid_sphere, "NaN, inf or zero direction in one field"),
-    "invalid_plane": ("invalid", PLANE, _invalid_plane, "NaN, inf or zero direction in one field"),
-    "invalid_triangle": ("invalid", TRIANGLE, _invalid_triangle, "NaN, inf or zero direction in one field"),
-}
+@family("invalid_triangle", "invalid", "triangle", "NaN, inf or zero direction in one field")
+def _invalid_triangle(rng, n):
+    return _corrupt(rng, _tri_needle(rng, n), "triangle")
 
 
 def _round_ulps(rng, x, dtype):
@@ -474,18 +555,14 @@ def _round_ulps(rng, x, dtype):
 
 
 def _truth(kind, o, d, tmin, tmax, shape):
-    if kind == SPHERE:
-        return exact.sphere(o, d, tmin, tmax, shape[:3], shape[3])
-    if kind == PLANE:
-        return exact.plane(o, d, tmin, tmax, shape[:3], shape[3:6])
-    return exact.triangle(o, d, tmin, tmax, shape[:3], shape[3:6], shape[6:9])
+    return getattr(exact, kind)(o, d, tmin, tmax, *KINDS[kind].split(shape))
 
 
 def _spawn_truth(kind, p, w, tmax, own, neighbour, threshold):
     """The first real hit from p along w: the neighbour (t > 0) or the surface left, except
     its root at t ~ 0 (only a sphere has a second, real root)."""
     best = exact.MISS
-    if kind == SPHERE:
+    if kind == "sphere":
         roots = exact.sphere_roots(p, w, own[:3], own[3])
         if roots is not None:
             for t in roots[:2]:
@@ -506,7 +583,7 @@ def build(name: str, precision: str, n: int = DEFAULT_RAYS, seed: int = 2024) ->
     group, kind, builder, description = FAMILIES[name]
     rng = np.random.default_rng([seed, zlib.crc32(name.encode())])
     with np.errstate(all="ignore"):
-        raw = builder(rng, n, dtype)
+        raw = builder(rng, n)
         shapes = np.stack(raw["shapes"]).astype(dtype)
         tmax = np.full(n, np.inf, dtype)
         spawn = None

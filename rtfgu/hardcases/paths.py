@@ -1,24 +1,29 @@
 """The paths a family runs through: the lecture layer (reference, float64), the numba kernels
 of rtfgu.kernels.robust (float64 and float32) and the WGSL programs (float32, see
-``wgsl_path``), each with the slide or the robust formula."""
+``wgsl_path``), each with the slide or the robust formula of every kind that has it
+(rtfgu.hardcases.kinds)."""
 from __future__ import annotations
 
 import numpy as np
 
-from .. import robust
 from ..float3 import Float3
-from ..layout import PLANE, SPHERE, TRIANGLE
+from ..robust import offset_ray_origin
 from ..ray import Ray
 from ..shading import SPAWN_EPSILON
-from ..shapes import Plane, Sphere, Triangle
+from .kinds import KINDS
 
 FORMULAS = ("slide", "robust")
 WHITE = (1.0, 1.0, 1.0)
 
 
-def _check_formula(formula):
+def check_formula(formula):
     if formula not in FORMULAS:
         raise ValueError("formula must be one of %s, got %r" % (", ".join(FORMULAS), formula))
+
+
+def slide_spawn(positions):
+    """The slide's secondary rays: from the hit point itself, with tmin = SPAWN_EPSILON."""
+    return positions.copy(), np.full(positions.shape[0], SPAWN_EPSILON, positions.dtype)
 
 
 def _f3(row) -> Float3:
@@ -33,48 +38,31 @@ class ReferencePath:
     precision = "float64"
 
     def __init__(self, formula: str):
-        _check_formula(formula)
+        check_formula(formula)
         self.formula = formula
 
-    def _hit(self, kind, ray, s) -> bool:
-        if self.formula == "slide":
-            if kind == SPHERE:
-                shape = Sphere(_f3(s[:3]), float(s[3]), WHITE)
-            elif kind == PLANE:
-                shape = Plane(_f3(s[:3]), _f3(s[3:6]), WHITE)
-            else:
-                shape = Triangle(_f3(s[:3]), _f3(s[3:6]), _f3(s[6:9]), WHITE)
-            return shape.intersect_p(ray)
-        if kind == SPHERE:
-            return robust.intersect_sphere_robust(ray, _f3(s[:3]), float(s[3]))
-        if kind == PLANE:
-            return robust.intersect_plane_robust(ray, _f3(s[:3]), _f3(s[3:6]))
-        return robust.intersect_triangle_watertight(ray, _f3(s[:3]), _f3(s[3:6]), _f3(s[6:9]))
-
     def __call__(self, kind, origins, directions, tmin, tmax, shapes):
+        k = KINDS[kind]
         out = np.full(origins.shape[0], np.inf)
         for i in range(origins.shape[0]):
             ray = Ray(_f3(origins[i]), _f3(directions[i]), float(tmin[i]), float(tmax[i]))
-            if self._hit(kind, ray, shapes[i]):
+            args = k.lecture_args(shapes[i])
+            hit = (k.cls(*args, WHITE).intersect_p(ray) if self.formula == "slide"
+                   else k.robust(ray, *args))
+            if hit:
                 out[i] = ray.tmax
         return out
 
     def spawn(self, kind, positions, normals, directions, shapes):
-        n = positions.shape[0]
         if self.formula == "slide":
-            return positions.copy(), np.full(n, SPAWN_EPSILON)
-        origins = np.empty((n, 3))
-        for i in range(n):
-            p, s = _f3(positions[i]), shapes[i]
-            if kind == SPHERE:
-                err = robust.sphere_point_error(p, _f3(s[:3]))
-            elif kind == TRIANGLE:
-                err = robust.triangle_point_error(_f3(s[:3]), _f3(s[3:6]), _f3(s[6:9]))
-            else:
-                err = robust.plane_point_error(p, _f3(s[:3]))
-            o = robust.offset_ray_origin(p, err, _f3(normals[i]), _f3(directions[i]))
+            return slide_spawn(positions)
+        origins = np.empty_like(positions)
+        for i in range(positions.shape[0]):
+            p = _f3(positions[i])
+            err = KINDS[kind].point_error(p, *KINDS[kind].lecture_args(shapes[i]))
+            o = offset_ray_origin(p, err, _f3(normals[i]), _f3(directions[i]))
             origins[i] = (o.x, o.y, o.z)
-        return origins, np.zeros(n)
+        return origins, np.zeros(positions.shape[0])
 
 
 class NumbaPath:
@@ -83,21 +71,30 @@ class NumbaPath:
     name = "numba"
 
     def __init__(self, formula: str, precision: str):
-        _check_formula(formula)
+        check_formula(formula)
         if precision not in ("float32", "float64"):
             raise ValueError("precision must be float32 or float64, got %r" % (precision,))
         from ..kernels import robust as kernels
         self.kernels = kernels
         self.formula = formula
         self.precision = precision
-        self.formula_id = kernels.ROBUST if formula == "robust" else kernels.SLIDE
 
     def __call__(self, kind, origins, directions, tmin, tmax, shapes):
+        adapter = self.kernels.ADAPTERS[kind, self.formula]
         with np.errstate(all="ignore"):
-            return self.kernels.BATCH[kind](self.formula_id, origins, directions, tmin, tmax, shapes)
+            return self.kernels.batch(adapter, origins, directions, tmin, tmax, shapes)
 
     def spawn(self, kind, positions, normals, directions, shapes):
-        return self.kernels.batch_spawn(self.formula_id, kind, positions, normals, directions, shapes)
+        if self.formula == "slide":
+            return slide_spawn(positions)
+        origins = self.kernels.batch_spawn(self.kernels.POINT_ERRORS[kind], positions, normals,
+                                           directions, shapes)
+        return origins, np.zeros(positions.shape[0], positions.dtype)
+
+
+def runs(family, path) -> bool:
+    """Whether ``path`` has a formula for the family's kind (the disk has no robust one)."""
+    return path.formula in KINDS[family.kind].formulas
 
 
 def available_paths() -> list:
@@ -113,4 +110,3 @@ def available_paths() -> list:
         for formula in FORMULAS:
             paths.append(WgslPath(formula))
     return paths
-

@@ -1,27 +1,28 @@
 """numba robust single-ray intersections and the batch evaluators of rtfgu.hardcases.
 
-The batch evaluators run the render's own kernels (rtfgu/kernels/intersect.py) for the
-formulas the render has: the slide sphere, plane and triangle tests and the robust sphere
-(Ray Tracing Gems ch. 7), so the hard cases measure the code that renders. The robust plane
-and triangle tests and the spawned-ray offset exist only here; they repeat rtfgu/robust.py
-(Woop, Benthin and Wald 2013 for triangles, compensated dot products for planes, PBRT-v4
-6.8.6 for spawned rays); see the docstrings there for the reasons and sources.
+The robust plane and triangle tests and the spawned-ray offset perform rtfgu/robust.py's
+operations in the same order, so that in float64 they round alike, bit for bit
+(tests/test_robust_parity.py): Woop, Benthin and Wald 2013 for triangles, compensated dot
+products (Ogita, Rump and Oishi 2005) for planes, PBRT-v4 6.8.6 for spawned rays; see the
+docstrings there for the reasons and sources. The sphere tests, slide and robust (Ray
+Tracing Gems ch. 7), are the render's own (rtfgu/kernels/intersect.py), so the hard cases
+measure the code that renders.
 
 Every function returns the hit distance t, or inf on a miss: in [tmin, tmax) for the
-functions here, in [tmin, tmax] for the render kernels (intersect.py says why; the tie
-at tmax changes no hard-case result). They are generic over float32 and float64: every literal
-goes through ``F = type(x)``, because a bare numba literal is float64 (or int64) and would
-silently promote float32 arithmetic to float64, which would hide exactly the float32
-failures these kernels measure. The one deliberate float64 computation is the fallback of
-the watertight test for edge functions that round to zero (Woop et al. 2013, section 3).
-``error_model="numpy"`` keeps IEEE division (x / 0 is inf or NaN) instead of numba's
-default ZeroDivisionError, so that bad input gives a defined miss and never an exception.
+functions here, in [tmin, tmax] for the render kernels (intersect.py says why; the tie at
+tmax changes no hard-case result). They are generic over float32 and float64: every
+constant goes through ``lit`` (rtfgu.kernels.float3), because a bare numba literal is
+float64 (or int64) and would silently promote float32 arithmetic to float64, which would
+hide exactly the float32 failures these kernels measure. The one deliberate float64
+computation is the fallback of the watertight test for edge functions that round to zero
+(Woop et al. 2013, section 3). ``error_model="numpy"`` keeps IEEE division (x / 0 is inf
+or NaN), so bad input gives a defined miss and never an exception. Points and vectors are
+Float3 tuples, as in the rest of rtfgu.kernels.
 
-Shape parameters, one row per ray (the hard-case families of rtfgu.hardcases):
-    sphere    (N, 4)  center, radius
-    plane     (N, 6)  point, normal
-    triangle  (N, 9)  v0, v1, v2   (the vertices themselves: watertightness needs the same
-                                    floats in every triangle that shares them)
+The batch evaluators take one shape per ray as a row of the lecture constructor's
+arguments (rtfgu.hardcases.kinds): sphere (center, radius), plane (point, normal),
+triangle (v0, v1, v2: the vertices themselves, as watertightness needs the same floats in
+every triangle that shares them), disk (center, normal, radius).
 """
 from __future__ import annotations
 
@@ -30,22 +31,16 @@ import math
 import numpy as np
 from numba import njit
 
-from ..layout import PLANE, SPHERE, TRIANGLE
-from ..shading import SPAWN_EPSILON
-from .float3 import cross, lit, row3, sub
-from .intersect import (intersect_plane, intersect_sphere, intersect_sphere_robust,
-                        intersect_triangle)
-
-SLIDE = 0
-ROBUST = 1
-FORMULAS = {SLIDE: "slide", ROBUST: "robust"}
+from .float3 import cross, lit, lit_per_precision, row3, sub
+from .intersect import (intersect_disk, intersect_plane, intersect_sphere,
+                        intersect_sphere_robust, intersect_triangle)
 
 
 @njit(cache=True, error_model="numpy")
-def _finite6(a, b, c, d, e, f):
+def _finite(v):
     # x - x is 0 for a finite x and NaN for inf and NaN; the sum carries any NaN through.
-    s = a + b + c + d + e + f
-    return s - s == type(a)(0.0)
+    s = v[0] + v[1] + v[2]
+    return s - s == lit(0, s)
 
 
 # --- plane ----------------------------------------------------------------------------
@@ -59,10 +54,8 @@ def _two_sum(a, b):
 
 @njit(cache=True, error_model="numpy")
 def _two_product(a, b):
-    F = type(a)
     # Veltkamp's splitter 2^ceil(p/2) + 1: 2^12 + 1 for float32 (p = 24), 2^27 + 1 for float64.
-    # 1 + 1e-10 rounds to 1 in float32 only; LLVM folds the test to a constant.
-    splitter = F(4097.0) if F(1.0) + F(1e-10) == F(1.0) else F(134217729.0)
+    splitter = lit_per_precision(4097.0, 134217729.0, a)
     p = a * b
     ca = splitter * a
     ah = ca - (ca - a)
@@ -83,294 +76,260 @@ def _dot2_add(p, s, x, y):
 
 
 @njit(cache=True, error_model="numpy")
-def _dot2_3(x0, x1, x2, y0, y1, y2):
-    # "Dot2" for three terms.
-    p, s = _two_product(x0, y0)
-    p, s = _dot2_add(p, s, x1, y1)
-    p, s = _dot2_add(p, s, x2, y2)
-    return p + s
+def _dot2_start(x, y):
+    # "Dot2" over the three terms of x . y, as (sum, running error).
+    p, s = _two_product(x[0], y[0])
+    p, s = _dot2_add(p, s, x[1], y[1])
+    return _dot2_add(p, s, x[2], y[2])
 
 
 @njit(cache=True, error_model="numpy")
-def _dot2_6(x0, x1, x2, x3, x4, x5, y0, y1, y2, y3, y4, y5):
-    p, s = _two_product(x0, y0)
-    p, s = _dot2_add(p, s, x1, y1)
-    p, s = _dot2_add(p, s, x2, y2)
-    p, s = _dot2_add(p, s, x3, y3)
-    p, s = _dot2_add(p, s, x4, y4)
-    p, s = _dot2_add(p, s, x5, y5)
-    return p + s
+def _dot2_more(p, s, x, y):
+    # "Dot2" continued over the three terms of x . y.
+    p, s = _dot2_add(p, s, x[0], y[0])
+    p, s = _dot2_add(p, s, x[1], y[1])
+    return _dot2_add(p, s, x[2], y[2])
 
 
 @njit(cache=True, error_model="numpy")
-def plane_robust(ox, oy, oz, dx, dy, dz, tmin, tmax, px, py, pz, nx, ny, nz):
+def plane_robust(origin, direction, tmin, tmax, point, normal):
     """t = ((a - o) . n) / (d . n) with a - o exact (TwoSum) and both dot products
-    compensated (Dot2); d . n == 0 and non-finite input are a defined miss."""
-    F = type(ox)
-    inf = F(math.inf)
-    if not (_finite6(ox, oy, oz, dx, dy, dz) and _finite6(px, py, pz, nx, ny, nz)
-            and _finite6(tmin, F(0.0), F(0.0), F(0.0), F(0.0), F(0.0))):
-        return inf
-    denom = _dot2_3(dx, dy, dz, nx, ny, nz)
-    if denom == F(0.0):
-        return inf
-    sx, ex = _two_sum(px, -ox)
-    sy, ey = _two_sum(py, -oy)
-    sz, ez = _two_sum(pz, -oz)
-    num = _dot2_6(sx, sy, sz, ex, ey, ez, nx, ny, nz, nx, ny, nz)
-    t = num / denom
+    compensated (Dot2); d . n == 0 is a defined miss."""
+    p, s = _dot2_start(direction, normal)
+    denom = p + s
+    if denom == lit(0, denom):
+        return lit(math.inf, denom)
+    sx, ex = _two_sum(point[0], -origin[0])
+    sy, ey = _two_sum(point[1], -origin[1])
+    sz, ez = _two_sum(point[2], -origin[2])
+    p, s = _dot2_start((sx, sy, sz), normal)
+    p, s = _dot2_more(p, s, (ex, ey, ez), normal)
+    t = (p + s) / denom
     if t >= tmin and t < tmax:
         return t
-    return inf
+    return lit(math.inf, denom)
 
 
 # --- triangle -------------------------------------------------------------------------
 
 @njit(cache=True, error_model="numpy")
-def _pick(x, y, z, k):
-    if k == 0:
-        return x
-    if k == 1:
-        return y
-    return z
-
-
-@njit(cache=True, error_model="numpy")
-def triangle_robust(ox, oy, oz, dx, dy, dz, tmin, tmax,
-                    v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
+def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
     """Watertight ray/triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (non-culling)."""
-    F = type(ox)
-    inf = F(math.inf)
-    zero = F(0.0)
-    if not (_finite6(ox, oy, oz, dx, dy, dz) and _finite6(v0x, v0y, v0z, v1x, v1y, v1z)
-            and _finite6(v2x, v2y, v2z, tmin, zero, zero)):
-        return inf
-    adx = abs(dx)
-    ady = abs(dy)
-    adz = abs(dz)
+    zero = lit(0, tmin)
+    inf = lit(math.inf, tmin)
+    adx = abs(direction[0])
+    ady = abs(direction[1])
+    adz = abs(direction[2])
     if adx > ady:
         kz = 0 if adx > adz else 2
     else:
         kz = 1 if ady > adz else 2
-    kx = kz + 1
-    if kx == 3:
-        kx = 0
-    ky = kx + 1
-    if ky == 3:
-        ky = 0
-    dkz = _pick(dx, dy, dz, kz)
+    kx = (kz + 1) % 3
+    ky = (kx + 1) % 3
+    dkz = direction[kz]
     if dkz < zero:
-        kx, ky = ky, kx
-    Sx = _pick(dx, dy, dz, kx) / dkz
-    Sy = _pick(dx, dy, dz, ky) / dkz
-    Sz = F(1.0) / dkz
-    Ax = v0x - ox
-    Ay = v0y - oy
-    Az = v0z - oz
-    Bx = v1x - ox
-    By = v1y - oy
-    Bz = v1z - oz
-    Cx = v2x - ox
-    Cy = v2y - oy
-    Cz = v2z - oz
-    Akz = _pick(Ax, Ay, Az, kz)
-    Bkz = _pick(Bx, By, Bz, kz)
-    Ckz = _pick(Cx, Cy, Cz, kz)
-    ax = _pick(Ax, Ay, Az, kx) - Sx * Akz
-    ay = _pick(Ax, Ay, Az, ky) - Sy * Akz
-    bx = _pick(Bx, By, Bz, kx) - Sx * Bkz
-    by = _pick(Bx, By, Bz, ky) - Sy * Bkz
-    cx = _pick(Cx, Cy, Cz, kx) - Sx * Ckz
-    cy = _pick(Cx, Cy, Cz, ky) - Sy * Ckz
+        kx, ky = ky, kx  # keep the winding, so U, V, W keep their sign convention
+    Sx = direction[kx] / dkz
+    Sy = direction[ky] / dkz
+    Sz = lit(1, tmin) / dkz
+    A = sub(v0, origin)
+    B = sub(v1, origin)
+    C = sub(v2, origin)
+    ax = A[kx] - Sx * A[kz]
+    ay = A[ky] - Sy * A[kz]
+    bx = B[kx] - Sx * B[kz]
+    by = B[ky] - Sy * B[kz]
+    cx = C[kx] - Sx * C[kz]
+    cy = C[ky] - Sy * C[kz]
     U = cx * by - cy * bx
     V = ax * cy - ay * cx
     W = bx * ay - by * ax
     # A zero-area triangle has exactly zero e0 x e1; the paper's det == 0 test alone lets
     # some through, because U + V + W of a collinear triangle need not round to zero.
-    e0x = v1x - v0x
-    e0y = v1y - v0y
-    e0z = v1z - v0z
-    e1x = v2x - v0x
-    e1y = v2y - v0y
-    e1z = v2z - v0z
-    if (e0y * e1z - e0z * e1y == zero and e0z * e1x - e0x * e1z == zero
-            and e0x * e1y - e0y * e1x == zero):
+    n = cross(sub(v1, v0), sub(v2, v0))
+    if n[0] == zero and n[1] == zero and n[2] == zero:
         return inf
     if U == zero or V == zero or W == zero:
         # Woop et al. section 3: an edge function that rounds to zero is recomputed in
         # double, so that the edge test stays consistent with the exact one (a no-op in
         # float64).
-        U = F(np.float64(cx) * np.float64(by) - np.float64(cy) * np.float64(bx))
-        V = F(np.float64(ax) * np.float64(cy) - np.float64(ay) * np.float64(cx))
-        W = F(np.float64(bx) * np.float64(ay) - np.float64(by) * np.float64(ax))
+        U = lit(np.float64(cx) * np.float64(by) - np.float64(cy) * np.float64(bx), tmin)
+        V = lit(np.float64(ax) * np.float64(cy) - np.float64(ay) * np.float64(cx), tmin)
+        W = lit(np.float64(bx) * np.float64(ay) - np.float64(by) * np.float64(ax), tmin)
     if (U < zero or V < zero or W < zero) and (U > zero or V > zero or W > zero):
         return inf
     det = U + V + W
     if det == zero:
         return inf
-    T = U * (Sz * Akz) + V * (Sz * Bkz) + W * (Sz * Ckz)
+    T = U * (Sz * A[kz]) + V * (Sz * B[kz]) + W * (Sz * C[kz])
     t = T / det
     if t >= tmin and t < tmax:
         return t
     return inf
 
 
-# --- spawned rays (PBRT-v4 6.8.6) -----------------------------------------------------
+# --- spawned rays (PBRT-v4 6.8.5-6.8.6) -----------------------------------------------
 
 @njit(cache=True, error_model="numpy")
 def gamma(n, x):
     """PBRT's gamma(n) = n u / (1 - n u) in the precision of x (u = half the ulp of 1)."""
-    F = type(x)
-    u = F(2.0 ** -24) if F(1.0) + F(1e-10) == F(1.0) else F(2.0 ** -53)
-    nu = F(n) * u
-    return nu / (F(1.0) - nu)
+    nu = lit(n, x) * lit_per_precision(2.0 ** -24, 2.0 ** -53, x)
+    return nu / (lit(1, x) - nu)
 
 
 @njit(cache=True, error_model="numpy")
-def sphere_point_error(px, py, pz, cx, cy, cz):
-    g5 = gamma(5, px)
-    g3 = gamma(3, px)
-    qx = abs(px - cx)
-    qy = abs(py - cy)
-    qz = abs(pz - cz)
-    return (g5 * qx + g3 * (qx + abs(cx)), g5 * qy + g3 * (qy + abs(cy)),
-            g5 * qz + g3 * (qz + abs(cz)))
+def sphere_point_error(p, center):
+    g5 = gamma(5, p[0])
+    g3 = gamma(3, p[0])
+    qx = abs(p[0] - center[0])
+    qy = abs(p[1] - center[1])
+    qz = abs(p[2] - center[2])
+    return (g5 * qx + g3 * (qx + abs(center[0])), g5 * qy + g3 * (qy + abs(center[1])),
+            g5 * qz + g3 * (qz + abs(center[2])))
 
 
 @njit(cache=True, error_model="numpy")
-def triangle_point_error(v0x, v0y, v0z, v1x, v1y, v1z, v2x, v2y, v2z):
-    g7 = gamma(7, v0x)
-    return (g7 * (abs(v0x) + abs(v1x) + abs(v2x)), g7 * (abs(v0y) + abs(v1y) + abs(v2y)),
-            g7 * (abs(v0z) + abs(v1z) + abs(v2z)))
+def triangle_point_error(v0, v1, v2):
+    g7 = gamma(7, v0[0])
+    return (g7 * (abs(v0[0]) + abs(v1[0]) + abs(v2[0])), g7 * (abs(v0[1]) + abs(v1[1]) + abs(v2[1])),
+            g7 * (abs(v0[2]) + abs(v1[2]) + abs(v2[2])))
 
 
 @njit(cache=True, error_model="numpy")
-def plane_point_error(px, py, pz, ax, ay, az):
-    g7 = gamma(7, px)
-    return (g7 * (abs(px) + abs(ax)), g7 * (abs(py) + abs(ay)), g7 * (abs(pz) + abs(az)))
+def plane_point_error(p, point):
+    g7 = gamma(7, p[0])
+    return (g7 * (abs(p[0]) + abs(point[0])), g7 * (abs(p[1]) + abs(point[1])),
+            g7 * (abs(p[2]) + abs(point[2])))
 
 
 @njit(cache=True, error_model="numpy")
 def _away(x, o):
-    F = type(x)
-    if o > F(0.0):
-        return np.nextafter(x, F(math.inf))
-    if o < F(0.0):
-        return np.nextafter(x, F(-math.inf))
+    if o > lit(0, x):
+        return np.nextafter(x, lit(math.inf, x))
+    if o < lit(0, x):
+        return np.nextafter(x, lit(-math.inf, x))
     return x
 
 
 @njit(cache=True, error_model="numpy")
-def offset_ray_origin(px, py, pz, ex, ey, ez, nx, ny, nz, wx, wy, wz):
+def offset_ray_origin(p, p_error, n, w):
     """PBRT-v4 OffsetRayOrigin: p + (|n| . p_error) n toward w, rounded away from p."""
-    F = type(px)
-    d = abs(nx) * ex + abs(ny) * ey + abs(nz) * ez
-    sx = d * nx
-    sy = d * ny
-    sz = d * nz
-    if wx * nx + wy * ny + wz * nz < F(0.0):
+    d = abs(n[0]) * p_error[0] + abs(n[1]) * p_error[1] + abs(n[2]) * p_error[2]
+    sx = n[0] * d
+    sy = n[1] * d
+    sz = n[2] * d
+    if w[0] * n[0] + w[1] * n[1] + w[2] * n[2] < lit(0, d):
         sx = -sx
         sy = -sy
         sz = -sz
-    return _away(px + sx, sx), _away(py + sy, sy), _away(pz + sz, sz)
+    return _away(p[0] + sx, sx), _away(p[1] + sy, sy), _away(p[2] + sz, sz)
 
 
 # --- batch evaluators -----------------------------------------------------------------
+# One adapter per kind and formula: (origin, direction, tmin, tmax, shapes, i) -> t for
+# the shape in row i. The render relies on compile_scene for finite input; the hard cases
+# include non-finite rays and shapes, which the robust adapters answer with a miss.
 
 @njit(cache=True, error_model="numpy")
-def batch_sphere(formula, origins, directions, tmin, tmax, shapes):
-    """The render's sphere tests, one ray per row. The robust one runs behind a finiteness
-    test: the render kernel relies on compile_scene for finite input, and the hard cases
-    include non-finite rays and spheres, which must be a defined miss."""
-    n = origins.shape[0]
-    out = np.empty(n, dtype=origins.dtype)
-    for i in range(n):
-        o = row3(origins, i, 0)
-        d = row3(directions, i, 0)
-        center = row3(shapes, i, 0)
-        radius = shapes[i, 3]
-        if formula == ROBUST:
-            if (_finite6(o[0], o[1], o[2], d[0], d[1], d[2])
-                    and _finite6(center[0], center[1], center[2], radius, tmin[i], lit(0, radius))):
-                out[i] = intersect_sphere_robust(o, d, tmin[i], tmax[i], center, radius)
-            else:
-                out[i] = lit(math.inf, radius)
-        else:
-            out[i] = intersect_sphere(o, d, tmin[i], tmax[i], center, radius)
+def _finite_ray(origin, direction, tmin):
+    return _finite(origin) and _finite(direction) and tmin - tmin == lit(0, tmin)
+
+
+@njit(cache=True, error_model="numpy")
+def sphere_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_sphere(o, d, tmin, tmax, row3(shapes, i, 0), shapes[i, 3])
+
+
+@njit(cache=True, error_model="numpy")
+def sphere_robust(o, d, tmin, tmax, shapes, i):
+    center = row3(shapes, i, 0)
+    radius = shapes[i, 3]
+    if _finite_ray(o, d, tmin) and _finite(center) and radius - radius == lit(0, radius):
+        return intersect_sphere_robust(o, d, tmin, tmax, center, radius)
+    return lit(math.inf, radius)
+
+
+@njit(cache=True, error_model="numpy")
+def plane_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_plane(o, d, tmin, tmax, row3(shapes, i, 0), row3(shapes, i, 3))
+
+
+@njit(cache=True, error_model="numpy")
+def plane_robust_row(o, d, tmin, tmax, shapes, i):
+    point = row3(shapes, i, 0)
+    normal = row3(shapes, i, 3)
+    if _finite_ray(o, d, tmin) and _finite(point) and _finite(normal):
+        return plane_robust(o, d, tmin, tmax, point, normal)
+    return lit(math.inf, tmin)
+
+
+@njit(cache=True, error_model="numpy")
+def triangle_slide(o, d, tmin, tmax, shapes, i):
+    # e0 = v1 - v0, e1 = v2 - v0 and n = e0 x e1 rounded in the rows' precision, as
+    # compile_scene stores them in rtfgu.layout.
+    v0 = row3(shapes, i, 0)
+    e0 = sub(row3(shapes, i, 3), v0)
+    e1 = sub(row3(shapes, i, 6), v0)
+    return intersect_triangle(o, d, tmin, tmax, v0, e0, e1, cross(e0, e1))
+
+
+@njit(cache=True, error_model="numpy")
+def triangle_robust_row(o, d, tmin, tmax, shapes, i):
+    v0 = row3(shapes, i, 0)
+    v1 = row3(shapes, i, 3)
+    v2 = row3(shapes, i, 6)
+    if _finite_ray(o, d, tmin) and _finite(v0) and _finite(v1) and _finite(v2):
+        return triangle_robust(o, d, tmin, tmax, v0, v1, v2)
+    return lit(math.inf, tmin)
+
+
+@njit(cache=True, error_model="numpy")
+def disk_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_disk(o, d, tmin, tmax, row3(shapes, i, 0), row3(shapes, i, 3), shapes[i, 6])
+
+
+@njit(cache=True, error_model="numpy")
+def batch(adapter, origins, directions, tmin, tmax, shapes):
+    """t of ray i against the shape in row i of ``shapes``, through ``adapter``."""
+    out = np.empty(origins.shape[0], dtype=origins.dtype)
+    for i in range(origins.shape[0]):
+        out[i] = adapter(row3(origins, i, 0), row3(directions, i, 0), tmin[i], tmax[i], shapes, i)
     return out
 
 
 @njit(cache=True, error_model="numpy")
-def batch_plane(formula, origins, directions, tmin, tmax, shapes):
-    n = origins.shape[0]
-    out = np.empty(n, dtype=origins.dtype)
-    for i in range(n):
-        o = origins[i]
-        d = directions[i]
-        s = shapes[i]
-        if formula == ROBUST:
-            out[i] = plane_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
-                                  s[0], s[1], s[2], s[3], s[4], s[5])
-        else:
-            out[i] = intersect_plane(row3(origins, i, 0), row3(directions, i, 0), tmin[i],
-                                     tmax[i], row3(shapes, i, 0), row3(shapes, i, 3))
-    return out
+def sphere_error(p, shapes, i):
+    return sphere_point_error(p, row3(shapes, i, 0))
 
 
 @njit(cache=True, error_model="numpy")
-def batch_triangle(formula, origins, directions, tmin, tmax, shapes):
-    """The slide test is the render's, on e0 = v1 - v0, e1 = v2 - v0 and n = e0 x e1 as in
-    rtfgu.layout, computed here in the rows' own precision."""
-    n = origins.shape[0]
-    out = np.empty(n, dtype=origins.dtype)
-    for i in range(n):
-        o = origins[i]
-        d = directions[i]
-        s = shapes[i]
-        if formula == ROBUST:
-            out[i] = triangle_robust(o[0], o[1], o[2], d[0], d[1], d[2], tmin[i], tmax[i],
-                                     s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
-        else:
-            v0 = row3(shapes, i, 0)
-            e0 = sub(row3(shapes, i, 3), v0)
-            e1 = sub(row3(shapes, i, 6), v0)
-            out[i] = intersect_triangle(row3(origins, i, 0), row3(directions, i, 0), tmin[i],
-                                        tmax[i], v0, e0, e1, cross(e0, e1))
-    return out
+def plane_error(p, shapes, i):
+    return plane_point_error(p, row3(shapes, i, 0))
 
 
 @njit(cache=True, error_model="numpy")
-def batch_spawn(formula, kind, positions, normals, directions, shapes):
-    """Origins and tmin of secondary rays leaving ``positions`` (on the shapes of ``kind``):
-    the slide's fixed SPAWN_EPSILON as tmin, or PBRT's offset origin with tmin 0."""
-    n = positions.shape[0]
-    F = positions.dtype.type
+def triangle_error(p, shapes, i):
+    return triangle_point_error(row3(shapes, i, 0), row3(shapes, i, 3), row3(shapes, i, 6))
+
+
+@njit(cache=True, error_model="numpy")
+def batch_spawn(point_error, positions, normals, directions, shapes):
+    """PBRT's offset origins of secondary rays leaving ``positions`` on the shape in row i
+    of ``shapes``, whose point error ``point_error(p, shapes, i)`` bounds; tmin is 0."""
     origins = np.empty_like(positions)
-    tmin = np.empty(n, dtype=positions.dtype)
-    for i in range(n):
-        p = positions[i]
-        if formula != ROBUST:
-            origins[i, 0] = p[0]
-            origins[i, 1] = p[1]
-            origins[i, 2] = p[2]
-            tmin[i] = F(SPAWN_EPSILON)
-            continue
-        s = shapes[i]
-        if kind == SPHERE:
-            ex, ey, ez = sphere_point_error(p[0], p[1], p[2], s[0], s[1], s[2])
-        elif kind == TRIANGLE:
-            ex, ey, ez = triangle_point_error(s[0], s[1], s[2], s[3], s[4], s[5], s[6], s[7], s[8])
-        else:
-            ex, ey, ez = plane_point_error(p[0], p[1], p[2], s[0], s[1], s[2])
-        nn = normals[i]
-        w = directions[i]
-        ox, oy, oz = offset_ray_origin(p[0], p[1], p[2], ex, ey, ez, nn[0], nn[1], nn[2],
-                                       w[0], w[1], w[2])
-        origins[i, 0] = ox
-        origins[i, 1] = oy
-        origins[i, 2] = oz
-        tmin[i] = F(0.0)
-    return origins, tmin
+    for i in range(positions.shape[0]):
+        p = row3(positions, i, 0)
+        o = offset_ray_origin(p, point_error(p, shapes, i), row3(normals, i, 0),
+                              row3(directions, i, 0))
+        origins[i, 0] = o[0]
+        origins[i, 1] = o[1]
+        origins[i, 2] = o[2]
+    return origins
 
 
-BATCH = {SPHERE: batch_sphere, PLANE: batch_plane, TRIANGLE: batch_triangle}
+# (kind name, formula) -> adapter, and kind name -> point error, for rtfgu.hardcases.
+ADAPTERS = {("sphere", "slide"): sphere_slide, ("sphere", "robust"): sphere_robust,
+            ("plane", "slide"): plane_slide, ("plane", "robust"): plane_robust_row,
+            ("triangle", "slide"): triangle_slide, ("triangle", "robust"): triangle_robust_row,
+            ("disk", "slide"): disk_slide}
+POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}

@@ -1,17 +1,16 @@
 // Robust ray-sphere intersection after Haines, Guenther and Akenine-Moeller, "Precision
 // Improvements for Ray/Sphere Intersection", Ray Tracing Gems, chapter 7 (2019); the Python
-// and numba versions are rtfgu/robust.py and rtfgu/kernels/robust.py.
+// and numba versions are rtfgu/robust.py and rtfgu/kernels/intersect.py.
 // With f = o - c, a = w . w and b' = -f . w:
 //   disc = a (r^2 - |f + (b'/a) w|^2)   the squared distance from the centre to the line,
 //                                       instead of b^2 - 4ac, which cancels for a far or
 //                                       small sphere in f32;
 //   t0 = c / q, t1 = q / a with q = b' + sign(b') sqrt(disc), never a difference of two
 //   nearly equal numbers.
-// The render's assembler (rtfgu/wgsl/assemble.py) takes intersect_sphere from this file
-// instead of intersect_sphere.wgsl when the render's formula is "robust"; both have the
-// 02562 signature. Its inputs are finite (compile_scene refuses anything else). The
-// hard-case program (rtfgu/hardcases/wgsl_path.py) renames it intersect_sphere_robust and
-// adds a test that makes non-finite input a miss.
+// The assembler (rtfgu/wgsl/assemble.py) takes intersect_sphere from this file instead of
+// intersect_sphere.wgsl when the formula is "robust"; both have the 02562 signature. Its
+// inputs are finite (compile_scene refuses anything else; the hard-case program,
+// hardcase_main.wgsl, makes non-finite input a miss before calling it).
 
 fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
 {
@@ -36,28 +35,15 @@ fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: 
         t0 = c / q;
         t1 = q / a;
     }
-    // The least t in [tmin, tmax): the near root first, then the far one.
-    var t = min(t0, t1);
+    // The least t in [tmin, tmax): the near root if it is in range, else the far one.
+    let near = min(t0, t1);
+    let t = select(max(t0, t1), near, near >= r.tmin && near < r.tmax);
     if (!(t >= r.tmin && t < r.tmax)) {
-        t = max(t0, t1);
-        if (!(t >= r.tmin && t < r.tmax)) {
-            return false;
-        }
+        return false;
     }
-    (*hit).has_hit = true;
     (*hit).dist = t;
+    (*hit).has_hit = true;
     (*hit).position = r.origin + r.direction * t;
     (*hit).normal = normalize((*hit).position - center);
     return true;
-}
-
-// A bound on the error of a computed point on the sphere (PBRT-v4 section 6.8.5):
-// gamma(5) |p - c| in the sphere's frame plus gamma(3) (|p - c| + |c|) for the translation.
-fn sphere_point_error(p: vec3f, center: vec3f) -> vec3f
-{
-    let u = 0.5 * 1.1920929e-7;  // f32 unit roundoff 2^-24
-    let g5 = 5.0 * u / (1.0 - 5.0 * u);
-    let g3 = 3.0 * u / (1.0 - 3.0 * u);
-    let q = abs(p - center);
-    return g5 * q + g3 * (q + abs(center));
 }

@@ -7,20 +7,11 @@
 // It takes the vertices themselves (the slide's v: array<vec3f, 3>): e0 = v1 - v0 rounded in
 // each triangle would break that. WGSL has no f64, so the paper's double-precision
 // recomputation of a zero edge function is left out; watertightness does not depend on it.
-
-fn triangle_robust_finite(v: vec4f) -> bool
-{
-    let e = bitcast<vec4u>(v) & vec4u(0x7f800000u);
-    return all(e != vec4u(0x7f800000u));
-}
+// The render does not use it (the flat layout stores v0, e0, e1, n); the hard-case program,
+// hardcase_main.wgsl, makes non-finite input a miss before calling it.
 
 fn intersect_triangle_robust(r: Ray, hit: ptr<function, HitInfo>, v: array<vec3f, 3>) -> bool
 {
-    if (!(triangle_robust_finite(vec4f(r.origin, r.tmin)) && triangle_robust_finite(vec4f(r.direction, 0.0))
-          && triangle_robust_finite(vec4f(v[0], v[1].x)) && triangle_robust_finite(vec4f(v[1].yz, v[2].xy))
-          && triangle_robust_finite(vec4f(v[2].z, 0.0, 0.0, 0.0)))) {
-        return false;
-    }
     // A zero-area triangle is a miss: U + V + W of a collinear triangle need not round to 0.
     let n = cross(v[1] - v[0], v[2] - v[0]);
     if (all(n == vec3f(0.0))) {
@@ -73,46 +64,4 @@ fn intersect_triangle_robust(r: Ray, hit: ptr<function, HitInfo>, v: array<vec3f
     (*hit).position = r.origin + w * t;
     (*hit).normal = normalize(n);
     return true;
-}
-
-// PBRT-v4's triangle bound gamma(7) (|b0 p0| + |b1 p1| + |b2 p2|) (section 6.8.5) at its
-// largest over barycentrics in [0, 1].
-fn triangle_point_error(v: array<vec3f, 3>) -> vec3f
-{
-    let u = 0.5 * 1.1920929e-7;
-    let g7 = 7.0 * u / (1.0 - 7.0 * u);
-    return g7 * (abs(v[0]) + abs(v[1]) + abs(v[2]));
-}
-
-// The next f32 away from x in the direction of the sign of s (PBRT's NextFloatUp/Down).
-fn next_float_toward(x: f32, s: f32) -> f32
-{
-    if (s == 0.0) {
-        return x;
-    }
-    if (x == 0.0) {
-        return select(bitcast<f32>(0x80000001u), bitcast<f32>(1u), s > 0.0);
-    }
-    let bits = bitcast<u32>(x);
-    // Growing in magnitude is +1 on the bits; toward zero is -1.
-    if ((x > 0.0) == (s > 0.0)) {
-        return bitcast<f32>(bits + 1u);
-    }
-    return bitcast<f32>(bits - 1u);
-}
-
-// PBRT-v4 section 6.8.6, "Robust Spawned Ray Origins" (OffsetRayOrigin): move p along the
-// geometric normal n, to the side w leaves toward, by |n| . p_error, rounded away from p.
-// The spawned ray starts there with tmin = 0 and neither re-hits its surface nor skips a
-// real hit beyond the tiny offset, which a fixed epsilon does at large or small scales.
-fn offset_ray_origin(p: vec3f, p_error: vec3f, n: vec3f, w: vec3f) -> vec3f
-{
-    let d = dot(abs(n), p_error);
-    var offset = d * n;
-    if (dot(w, n) < 0.0) {
-        offset = -offset;
-    }
-    let po = p + offset;
-    return vec3f(next_float_toward(po.x, offset.x), next_float_toward(po.y, offset.y),
-                 next_float_toward(po.z, offset.z));
 }

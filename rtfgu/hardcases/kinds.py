@@ -1,0 +1,66 @@
+"""The shape kinds of the hard cases, each described once, keyed by its rtfgu.registry name.
+
+A hard-case shape is a row of the lecture constructor's arguments before the colour,
+flattened: a sphere (center, radius) is 4 floats, a triangle (v0, v1, v2) 9. From that row
+
+* the exact truth is ``rtfgu.hardcases.exact.<name>(o, d, tmin, tmax, *args)``;
+* the reference path builds the lecture class of the registry (``Sphere(center, radius,
+  color)``) for the slide formula, and calls ``robust`` for the robust one;
+* the numba path runs ``rtfgu.kernels.robust.ADAPTERS[name, formula]`` and, for spawned
+  rays, ``POINT_ERRORS[name]``;
+* the WGSL path runs ``rtfgu/wgsl/hardcase_main.wgsl`` with the feature ``<name>``, which
+  reads the row with ``arg3``/``arg1`` and calls the kind's WGSL function.
+
+A kind without a robust formula (the disk) runs the slide formula only.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .. import robust
+from ..float3 import Float3
+from ..registry import SHAPE_BY_NAME
+
+
+@dataclass(frozen=True)
+class HardCaseKind:
+    name: str
+    args: tuple                  # components of each constructor argument: (3, 1) for a sphere
+    robust: object = None        # rtfgu.robust's test (ray, *args) -> bool, or None
+    point_error: object = None   # rtfgu.robust's error bound of a hit point (p, *args) -> Float3
+
+    @property
+    def cls(self) -> type:
+        return SHAPE_BY_NAME[self.name].cls
+
+    @property
+    def width(self) -> int:
+        return sum(self.args)
+
+    @property
+    def formulas(self) -> tuple:
+        return ("slide", "robust") if self.robust is not None else ("slide",)
+
+    def split(self, row) -> list:
+        """The constructor's arguments of ``row``: slices of 3 and scalars."""
+        out, k = [], 0
+        for components in self.args:
+            out.append(row[k:k + 3] if components == 3 else row[k])
+            k += components
+        return out
+
+    def lecture_args(self, row) -> list:
+        return [Float3(float(a[0]), float(a[1]), float(a[2])) if hasattr(a, "__len__") else float(a)
+                for a in self.split(row)]
+
+
+KINDS = {kind.name: kind for kind in (
+    HardCaseKind("sphere", (3, 1), robust.intersect_sphere_robust,
+                 lambda p, center, radius: robust.sphere_point_error(p, center)),
+    HardCaseKind("plane", (3, 3), robust.intersect_plane_robust,
+                 lambda p, point, normal: robust.plane_point_error(p, point)),
+    HardCaseKind("triangle", (3, 3, 3), robust.intersect_triangle_watertight,
+                 lambda p, v0, v1, v2: robust.triangle_point_error(v0, v1, v2)),
+    HardCaseKind("disk", (3, 3, 1)),
+)}
+assert set(KINDS) <= set(SHAPE_BY_NAME), "every hard-case kind is a kind of rtfgu.registry"
