@@ -37,6 +37,25 @@ def _lit_overload(value, like):
     return None
 
 
+def lit_per_precision(value32, value64, like):
+    """``value32`` as a float32 ``like`` is, ``value64`` as a float64 one: a constant whose
+    value depends on the precision (Veltkamp's splitter, the unit roundoff), chosen like
+    ``lit`` when numba types ``like``, so a float32 kernel pays nothing for the choice."""
+    return type(like)(value32 if np.dtype(type(like)).itemsize == 4 else value64)
+
+
+@overload(lit_per_precision)
+def _lit_per_precision_overload(value32, value64, like):
+    if isinstance(like, types.Float):
+        single = like.bitwidth == 32
+        cast = np.float32 if single else np.float64
+
+        def impl(value32, value64, like):
+            return cast(value32 if single else value64)
+        return impl
+    return None
+
+
 @njit(cache=True, error_model="numpy")
 def add(a, b):
     return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
