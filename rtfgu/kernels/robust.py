@@ -37,9 +37,10 @@ from .intersect import (intersect_disk, intersect_plane, intersect_sphere,
 
 
 @njit(cache=True, error_model="numpy")
-def _finite(v):
-    # x - x is 0 for a finite x and NaN for inf and NaN; the sum carries any NaN through.
-    s = v[0] + v[1] + v[2]
+def _finite(a, b):
+    """Whether the six components of the Float3s a and b are finite: x - x is 0 for a finite
+    x and NaN for inf and NaN, and the sum carries any NaN through."""
+    s = a[0] + a[1] + a[2] + b[0] + b[1] + b[2]
     return s - s == lit(0, s)
 
 
@@ -231,11 +232,6 @@ def offset_ray_origin(p, p_error, n, w):
 # include non-finite rays and shapes, which the robust adapters answer with a miss.
 
 @njit(cache=True, error_model="numpy")
-def _finite_ray(origin, direction, tmin):
-    return _finite(origin) and _finite(direction) and tmin - tmin == lit(0, tmin)
-
-
-@njit(cache=True, error_model="numpy")
 def sphere_slide(o, d, tmin, tmax, shapes, i):
     return intersect_sphere(o, d, tmin, tmax, row3(shapes, i, 0), shapes[i, 3])
 
@@ -244,7 +240,7 @@ def sphere_slide(o, d, tmin, tmax, shapes, i):
 def sphere_robust(o, d, tmin, tmax, shapes, i):
     center = row3(shapes, i, 0)
     radius = shapes[i, 3]
-    if _finite_ray(o, d, tmin) and _finite(center) and radius - radius == lit(0, radius):
+    if _finite(o, d) and _finite(center, (radius, tmin, lit(0, tmin))):
         return intersect_sphere_robust(o, d, tmin, tmax, center, radius)
     return lit(math.inf, radius)
 
@@ -258,7 +254,7 @@ def plane_slide(o, d, tmin, tmax, shapes, i):
 def plane_robust_row(o, d, tmin, tmax, shapes, i):
     point = row3(shapes, i, 0)
     normal = row3(shapes, i, 3)
-    if _finite_ray(o, d, tmin) and _finite(point) and _finite(normal):
+    if _finite(o, d) and _finite(point, normal) and _finite((tmin, tmin, tmin), (tmin, tmin, tmin)):
         return plane_robust(o, d, tmin, tmax, point, normal)
     return lit(math.inf, tmin)
 
@@ -278,7 +274,7 @@ def triangle_robust_row(o, d, tmin, tmax, shapes, i):
     v0 = row3(shapes, i, 0)
     v1 = row3(shapes, i, 3)
     v2 = row3(shapes, i, 6)
-    if _finite_ray(o, d, tmin) and _finite(v0) and _finite(v1) and _finite(v2):
+    if _finite(o, d) and _finite(v0, v1) and _finite(v2, (tmin, tmin, tmin)):
         return triangle_robust(o, d, tmin, tmax, v0, v1, v2)
     return lit(math.inf, tmin)
 
