@@ -4,8 +4,7 @@ A script, not a test: nothing is asserted.
 
 Rows are scene x path, a path being backend x precision x sphere formula: the reference
 (lecture layer, float64, the slide formula), numba float64 and float32, wgpu float32, each
-with formula="slide" and "robust" when rtfgu.render takes a ``formula`` keyword (otherwise
-each path's built-in formula, shown as "built-in"). Every path renders through
+with formula="slide" and "robust". Every path renders through
 rtfgu.render, so the numbers compare. BASELINES are kernels of benchmarks/spheres_only.py
 that know only spheres, for the spheres-only scene.
 
@@ -38,7 +37,6 @@ import os
 os.environ.setdefault("MESA_SHADER_CACHE_DISABLE", "true")
 
 import argparse  # noqa: E402
-import inspect  # noqa: E402
 import platform  # noqa: E402
 import statistics  # noqa: E402
 import subprocess  # noqa: E402
@@ -88,14 +86,6 @@ REFERENCE_STEP = 4
 # A wgpu render slower than this (the software adapter on a large image) is benchmarked at
 # half the size, and so on; the row says so.
 WGPU_MAX_SECONDS = 20.0
-# Without a formula keyword every path has one built-in sphere formula.
-BUILT_IN = "built-in"
-
-
-def formulas_available() -> bool:
-    return "formula" in inspect.signature(render).parameters
-
-
 @dataclass
 class Path_:
     backend: str
@@ -106,7 +96,7 @@ class Path_:
     def formula_label(self) -> str:
         if self.backend == "reference":
             return "slide"
-        return self.formula or BUILT_IN
+        return self.formula
 
     @property
     def label(self) -> str:
@@ -117,7 +107,7 @@ class Path_:
 
 
 def paths(with_wgpu: bool) -> list:
-    formulas = ("slide", "robust") if formulas_available() else (None,)
+    formulas = ("slide", "robust")
     out = [Path_(backend="reference", precision="float64")]
     for precision in ("float64", "float32"):
         out += [Path_("numba", precision, f) for f in formulas]
@@ -246,9 +236,7 @@ def wgpu_cold_compile_seconds(scene, path):
 
 def ray_counts(scene, width, height, precision, formula):
     """The numba kernel's RayCounts (primary, shadow, secondary) for this render."""
-    kwargs = {}
-    if formula is not None and "formula" in inspect.signature(render_numba).parameters:
-        kwargs["formula"] = formula
+    kwargs = {} if formula is None else {"formula": formula}
     return render_numba(scene, width, height, precision, with_counts=True, **kwargs)[1]
 
 
@@ -327,7 +315,7 @@ def bench_scene(name, scene_fn, width, height, path_list, runs, measure_compile,
             def run(w=width, h=height):
                 return reference_render(scene, w, h)[0]
             image = ref_image
-            c = counts(width, height, "float64", "slide" if formulas_available() else None)
+            c = counts(width, height, "float64", "slide")
         else:
             def run(path=path, w=width, h=height):
                 return render(scene, w, h, backend=path.backend, precision=path.precision,
@@ -534,10 +522,7 @@ def main(argv=None):
         "the wgpu rows use the counts of numba float32 with the same formula on the same scene "
         "and size (the shader does not count). Columns are explained in benchmarks/bench.py.",
         "- formula: the sphere intersection, the slides' quadratic (\"slide\") or Ray Tracing "
-        "Gems ch. 7 (\"robust\"); the reference has the slide formula only.%s" % (
-            "" if formulas_available() else
-            " rtfgu.render takes no formula keyword in this checkout, so each path runs its "
-            "built-in formula."),
+        "Gems ch. 7 (\"robust\"); the reference has the slide formula only.",
         "",
         *plot_note,
         *lines,

@@ -8,7 +8,7 @@ and either one would promote a float32 expression to float64. Writing every cons
 
 Every kernel is compiled with ``error_model="numpy"``: a float division by zero gives inf
 or NaN (as in C and WGSL) instead of raising, and a function that cannot raise is one LLVM
-inlines into its caller, which made the intersection loop several times faster. The lecture
+can inline into its caller, so the small helpers here cost no call in a hot loop. The lecture
 layer guards every division a valid scene can reach, and ``render`` refuses an image with a
 non-finite pixel.
 """

@@ -6,17 +6,10 @@ long enough to trip a driver's watchdog. Compiled pipelines are cached per proce
 their WGSL text, so a moved camera or light only rewrites buffers ("pass data from CPU to
 GPU to enable interaction", 02562 week 1).
 
-Buffer kinds, measured on llvmpipe (Mesa 22.3.6 through OpenGL, 2 shared cores), best of 3,
-512x512, 128-pixel tiles, one process per row:
-
-    scene                              uniform        storage (read-only)
-    default_lambertian_shadows (3)     5.6-6.3 Mpx/s  3.0-4.7 Mpx/s
-    default_glossy_sphere (3)          1.9-2.5 Mpx/s  1.8-2.8 Mpx/s
-    lambertian_shadows + 300 spheres   0.24-0.26      0.14-0.26
-
-Uniform buffers were as fast or faster in every case (up to 1.9x), never clearly slower, so
-"uniform" is the default; an array too large for a uniform binding (64 KiB) goes to storage.
-Compiling a pipeline (naga, then Mesa at the first dispatch) took 0.5-1.7 s.
+The scene arrays go into uniform buffers unless ``scene_buffer="storage"``; an array too
+large for a uniform binding (64 KiB) goes to storage either way. docs/wgsl_buffers.md has
+the measurements behind that default. rtfgu/wgsl/harness.py runs other compute programs
+(the hard cases, the grading checks) on the same device and cache.
 """
 from __future__ import annotations
 
