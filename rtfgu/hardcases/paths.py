@@ -30,16 +30,23 @@ def _f3(row) -> Float3:
     return Float3(float(row[0]), float(row[1]), float(row[2]))
 
 
-class ReferencePath:
+class Path:
+    """A path runs the slide or the robust formula (``formula``) in ``precision``."""
+
+    name = ""
+    precision = ""
+
+    def __init__(self, formula: str):
+        check_formula(formula)
+        self.formula = formula
+
+
+class ReferencePath(Path):
     """The lecture layer: a Ray and a Shape per ray, ``intersect_p`` (slide) or the
     functions of rtfgu.robust (robust). Bad input raises the lecture layer's ValueError."""
 
     name = "reference"
     precision = "float64"
-
-    def __init__(self, formula: str):
-        check_formula(formula)
-        self.formula = formula
 
     def __call__(self, kind, origins, directions, tmin, tmax, shapes):
         k = KINDS[kind]
@@ -65,18 +72,17 @@ class ReferencePath:
         return origins, np.zeros(positions.shape[0])
 
 
-class NumbaPath:
+class NumbaPath(Path):
     """rtfgu.kernels.robust's batch evaluators in float64 or float32."""
 
     name = "numba"
 
     def __init__(self, formula: str, precision: str):
-        check_formula(formula)
+        super().__init__(formula)
         if precision not in ("float32", "float64"):
             raise ValueError("precision must be float32 or float64, got %r" % (precision,))
         from ..kernels import robust as kernels
         self.kernels = kernels
-        self.formula = formula
         self.precision = precision
 
     def __call__(self, kind, origins, directions, tmin, tmax, shapes):

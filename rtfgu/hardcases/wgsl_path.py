@@ -13,7 +13,7 @@ import numpy as np
 from ..layout import FAR
 from ..registry import SHAPE_BY_NAME
 from .kinds import KINDS
-from .paths import check_formula, slide_spawn
+from .paths import Path, slide_spawn
 
 
 def _piece(kind: str, formula: str) -> str:
@@ -56,15 +56,11 @@ def _run(kind, formula, spawn, rays, shapes, count):
                                                      np.ascontiguousarray(shapes, np.float32)], count)[:, 0]
 
 
-class WgslPath:
+class WgslPath(Path):
     """The WGSL float32 path: one dispatch per batch of rays."""
 
     name = "wgsl"
     precision = "float32"
-
-    def __init__(self, formula: str):
-        check_formula(formula)
-        self.formula = formula
 
     def __call__(self, kind, origins, directions, tmin, tmax, shapes):
         n = origins.shape[0]

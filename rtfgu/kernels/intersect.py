@@ -123,21 +123,19 @@ def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
     else:
         t0 = c / q
         t1 = q * inv_a
-    if t0 > t1:
-        t0, t1 = t1, t0
-    if t0 >= tmin and t0 <= tmax:
-        return t0
-    if t1 >= tmin and t1 <= tmax:
-        return t1
+    # The least t in range: the near root if it is, else the far one (a ray from inside).
+    near = min(t0, t1)
+    t = near if near >= tmin and near <= tmax else max(t0, t1)
+    if t >= tmin and t <= tmax:
+        return t
     return lit(math.inf, a)
 
 
 @njit(cache=True, error_model="numpy")
 def intersect_sphere_robust(origin, direction, tmin, tmax, center, radius):
     # f = o - center and c = f . f - r^2 as in intersect_sphere, then Ray Tracing Gems ch. 7.
-    temp = sub(origin, center)
-    c = dot(temp, temp) - radius * radius
-    return sphere_roots_robust(temp, c, radius, direction, tmin, tmax)
+    f = sub(origin, center)
+    return sphere_roots_robust(f, dot(f, f) - radius * radius, radius, direction, tmin, tmax)
 
 
 @njit(cache=True, error_model="numpy")

@@ -114,6 +114,12 @@ def plane_robust(origin, direction, tmin, tmax, point, normal):
 # --- triangle -------------------------------------------------------------------------
 
 @njit(cache=True, error_model="numpy")
+def _shear(P, kx, ky, kz, Sx, Sy):
+    # The vertex P - o in the ray's frame (Woop et al. 2013, eq. 3): x and y after the shear.
+    return P[kx] - Sx * P[kz], P[ky] - Sy * P[kz]
+
+
+@njit(cache=True, error_model="numpy")
 def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
     """Watertight ray/triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (non-culling)."""
     zero = lit(0, tmin)
@@ -136,12 +142,9 @@ def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
     A = sub(v0, origin)
     B = sub(v1, origin)
     C = sub(v2, origin)
-    ax = A[kx] - Sx * A[kz]
-    ay = A[ky] - Sy * A[kz]
-    bx = B[kx] - Sx * B[kz]
-    by = B[ky] - Sy * B[kz]
-    cx = C[kx] - Sx * C[kz]
-    cy = C[ky] - Sy * C[kz]
+    ax, ay = _shear(A, kx, ky, kz, Sx, Sy)
+    bx, by = _shear(B, kx, ky, kz, Sx, Sy)
+    cx, cy = _shear(C, kx, ky, kz, Sx, Sy)
     U = cx * by - cy * bx
     V = ax * cy - ay * cx
     W = bx * ay - by * ax

@@ -68,12 +68,12 @@ fn intersect_plane(r: Ray, hit: ptr<function, HitInfo>, position: vec3f, normal:
     let num = plane_dot2(array<f32, 6>(sx.x, sy.x, sz.x, sx.y, sy.y, sz.y),
                          array<f32, 6>(n.x, n.y, n.z, n.x, n.y, n.z), 6);
     let t = num / denom;
-    if (!(t >= r.tmin && t < r.tmax)) {
-        return false;
+    let in_range = t >= r.tmin && t < r.tmax;
+    if (in_range) {
+        (*hit).has_hit = true;
+        (*hit).dist = t;
+        (*hit).position = r.origin + w * t;
+        (*hit).normal = normalize(n);
     }
-    (*hit).has_hit = true;
-    (*hit).dist = t;
-    (*hit).position = r.origin + w * t;
-    (*hit).normal = normalize(n);
-    return true;
+    return in_range;
 }

@@ -41,9 +41,10 @@ fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: 
     if (!(t >= r.tmin && t < r.tmax)) {
         return false;
     }
-    (*hit).dist = t;
+    let p = r.origin + r.direction * t;
     (*hit).has_hit = true;
-    (*hit).position = r.origin + r.direction * t;
-    (*hit).normal = normalize((*hit).position - center);
+    (*hit).dist = t;
+    (*hit).position = p;
+    (*hit).normal = normalize(p - center);
     return true;
 }
