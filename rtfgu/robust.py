@@ -10,10 +10,11 @@ skips a real hit just beyond). Each function below fixes one of these and cites 
 the test suite ``tests/test_hardcases*.py`` measures both versions on ``rtfgu.hardcases``.
 
 All functions follow ``Shape.intersect_p``: True on a hit in [ray.tmin, ray.tmax), and then
-``ray.tmax`` is the hit distance. They run in Python floats (float64); the numba versions for
-float32 and float64 are in ``rtfgu.kernels.intersect`` (the sphere, which the render kernel
-uses) and ``rtfgu.kernels.robust`` (triangle, plane, spawn offset), and the WGSL ones in
-``rtfgu/wgsl/robust_*.wgsl``.
+``ray.tmax`` is the hit distance. They run in Python floats (float64). The numba versions,
+for float32 and float64, are in ``rtfgu.kernels.intersect`` (the sphere, which the render
+kernel uses) and ``rtfgu.kernels.robust`` (triangle, plane, spawn offset); they perform the
+same operations in the same order, so that in float64 both give the same bits
+(tests/test_robust_parity.py). The WGSL ones are ``rtfgu/wgsl/robust_*.wgsl``.
 """
 from __future__ import annotations
 

@@ -52,6 +52,27 @@ def test_wgsl_adapter_or_named_package():
     assert WgslPath("robust").precision == "float32"
 
 
+def test_wgsl_harness_names_the_file_and_line_of_a_compile_error():
+    if WGSL_MISSING is not None:
+        pytest.skip("WGSL float32 path not run, no WebGPU adapter: %s" % WGSL_MISSING)
+    from rtfgu.hardcases.wgsl_path import program
+    from rtfgu.wgsl import WGSLCompileError
+    from rtfgu.wgsl.assemble import read_piece
+    from rtfgu.wgsl.harness import batch_program, run_batch
+
+    lines = read_piece("robust_plane.wgsl").splitlines()
+    target = next(i for i, line in enumerate(lines) if "let t = num / denom;" in line)
+    lines[target] = "    let t = num / undefined_denom;"
+    good = program("plane", "robust")
+    broken = batch_program(good.pieces, good.features, {"SHAPE_WIDTH": 6},
+                           overrides={"robust_plane.wgsl": "\n".join(lines)})
+    with pytest.raises(WGSLCompileError) as caught:
+        run_batch(broken, [np.zeros(1, np.uint32), np.zeros(8, np.float32), np.zeros(6, np.float32)], 1)
+    error = caught.value
+    assert (error.file, error.line, error.function) == ("rtfgu/wgsl/robust_plane.wgsl", target + 1,
+                                                        "intersect_plane")
+
+
 # --- exact truth --------------------------------------------------------------------
 
 def test_exact_truth_by_hand():
