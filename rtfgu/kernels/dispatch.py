@@ -13,8 +13,11 @@ entries go to a function of its own as arguments, and numba compiles that functi
 the ``is None`` branch taken or removed, so a scene pays only for the kinds it has. ``hit`` is (t, scene index, kind, row); of two hits at the same t the one earlier
 in Scene.shapes wins, whichever kind is visited first.
 
-Only one shape kind may be ``from_eye`` (the sphere): its primary rays from a pinhole eye
-use the per-frame terms and the tile's candidate rows in ``eye`` and ``tile``.
+Only one shape kind may be ``from_eye`` (the sphere): a primary ray from a pinhole eye
+tests only the tile's ``candidates[:n_candidates]`` with the per-frame ``terms`` of each
+row; ``terms`` is None without such an eye, and ``n_candidates`` is -1 for any other ray.
+Arrays travel as arguments of their own, never unpacked from a tuple per ray (that would
+cost a reference count per ray).
 """
 from __future__ import annotations
 
@@ -56,10 +59,11 @@ def _overloaded(name: str, params: str, absent: str, present: str, doc: str,
                 eye_free: str = "", inline: str = "always") -> str:
     """A function typed per call by an overload: the body ``absent`` when its first argument
     is None (a kind the scene lacks), ``present`` otherwise; with ``eye_free``, that body
-    instead when ``eye`` is None. The choice is made when numba types the call, so it
+    instead when ``terms`` is None. The choice is made when numba types the call, so it
     costs nothing at run time; ``inline="always"`` puts the body into the caller."""
     lines = ["def %s(%s):" % (name, params),
              '    """%s (typed by the overload below)."""' % doc,
+             "    return as_python(_typed_%s, %s)" % (name, params),
              "",
              "",
              "@overload(%s, inline=\"%s\")" % (name, inline),
@@ -69,7 +73,7 @@ def _overloaded(name: str, params: str, absent: str, present: str, doc: str,
              "            return %s" % absent,
              "        return absent"]
     if eye_free:
-        lines += ["    if isinstance(eye, types.NoneType):",
+        lines += ["    if isinstance(terms, types.NoneType):",
                   "        def no_eye(%s):" % params]
         lines += ["        " + line if line else line for line in eye_free.split("\n")]
         lines += ["        return no_eye"]
@@ -79,46 +83,53 @@ def _overloaded(name: str, params: str, absent: str, present: str, doc: str,
     return "\n".join(lines)
 
 
+def _branches(cases) -> list:
+    """One if/elif/else chain over (condition, loop header lines, call) cases, every branch a
+    loop over rows that keeps the nearest hit, and a single return after it: numba inlines
+    the whole chain into the caller, and one exit keeps (t, index, kind, row) in registers."""
+    lines = []
+    for n, (condition, header, call, keep) in enumerate(cases):
+        if len(cases) > 1:
+            lines.append("    %s %s:" % ("if" if n == 0 else "elif", condition) if condition
+                         else "    else:")
+        pad = "    " if len(cases) > 1 else ""
+        lines += [pad + line for line in header]
+        lines.append(pad + "        t = " + call)
+        lines += [pad + line[4:] for line in keep.split("\n")]
+    return lines
+
+
 def _scan(k: int, kind) -> str:
     """scan_<kind>: the nearest hit of this kind's rows, given the nearest so far."""
     name = kind.name
     keep = _KEEP.format(kind=k)
-    loops = []
-    # One loop per formula: the formula is the same for every row, and a test of it
-    # inside the loop would be paid per row.
-    for formula in kind.formulas[::-1]:
-        loop = ["    for i in range(table.shape[0]):",
-                "        t = %s(origin, direction, tmin, tmax, %s)"
-                % (kind.formula_function(formula), _row_args(kind, "table", "i")),
-                ] + [line[4:] for line in keep.split("\n")]
-        if formula != "slide":
-            loop = ["    if formula == %d:" % FORMULAS.index(formula)] + ["    " + l for l in loop]
-            loop.append("        return tmax, best, kind, row")
-        loops += loop
+    rows = ["    for i in range(table.shape[0]):"]
+    # One loop per formula: the formula is the same for every row, and a test of it inside
+    # the loop would be paid per row.
+    cases = [("formula == %d" % FORMULAS.index(f) if f != "slide" else "", rows,
+              "%s(origin, direction, tmin, tmax, %s)" % (kind.formula_function(f), _row_args(kind, "table", "i")),
+              keep)
+             for f in sorted(kind.formulas, key=lambda f: f == "slide")]
     start = ["    tmax, best, kind, row = hit"]
     end = ["    return tmax, best, kind, row"]
     if not kind.from_eye:
         return _overloaded("scan_" + name, "table, index, origin, direction, tmin, hit, formula",
-                           "hit", "\n".join(start + loops + end),
+                           "hit", "\n".join(start + _branches(cases) + end),
                            "The nearest hit among the %ss, given the nearest so far" % name)
     # Primary rays from the eye: the tile's candidate rows, o - center and c per frame.
     radius = layout.offset(kind.record, "radius")
-    eye_loops = ["    candidates, n_candidates, from_eye = tile", "    terms = eye[0]"]
-    for condition, call in (
-            ("from_eye and formula == %d" % FORMULAS.index("robust"),
-             "%s_roots_robust(row3(terms, i, 0), terms[i, 3], table[i, %d], direction, tmin, tmax)"
-             % (name, radius)),
-            ("from_eye", "%s_roots(row3(terms, i, 0), terms[i, 3], direction, tmin, tmax)" % name)):
-        eye_loops += ["    if %s:" % condition,
-                      "        for c in range(n_candidates):",
-                      "            i = candidates[c]",
-                      "            t = " + call,
-                      keep,
-                      "        return tmax, best, kind, row"]
-    return _overloaded("scan_" + name, "table, index, eye, tile, origin, direction, tmin, hit, formula",
-                       "hit", "\n".join(start + eye_loops + loops + end),
+    candidates = ["    for c in range(n_candidates):", "        i = candidates[c]"]
+    eye_cases = [
+        ("n_candidates >= 0 and formula == %d" % FORMULAS.index("robust"), candidates,
+         "%s_roots_robust(row3(terms, i, 0), terms[i, 3], table[i, %d], direction, tmin, tmax)"
+         % (name, radius), keep),
+        ("n_candidates >= 0", candidates,
+         "%s_roots(row3(terms, i, 0), terms[i, 3], direction, tmin, tmax)" % name, keep)]
+    return _overloaded("scan_" + name,
+                       "table, index, terms, candidates, n_candidates, origin, direction, tmin, hit, formula",
+                       "hit", "\n".join(start + _branches(eye_cases + cases) + end),
                        "The nearest hit among the %ss, given the nearest so far" % name,
-                       eye_free="\n".join(start + loops + end))
+                       eye_free="\n".join(start + _branches(cases) + end))
 
 
 def _any_hit(kind) -> str:
@@ -170,7 +181,7 @@ def _direct(light) -> str:
                        "table, shader, mat, surface_point, w_o, shapes, shadows, formula, result",
                        "result, 0", body,
                        "The light of every %s reflected by the surface, added to ``result``" % light.name,
-                       inline="never")
+                       inline="always")
 
 
 def source() -> str:
@@ -195,6 +206,7 @@ def source() -> str:
     header = ['"""Generated from rtfgu.registry by rtfgu.kernels.dispatch: do not edit."""',
              "from numba import njit, types",
              "from numba.extending import overload",
+             "from rtfgu.kernels.dispatch_support import as_python",
              "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
              "from rtfgu.kernels.lights import %s" % ", ".join("sample_" + l.name for l in LIGHTS),
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
@@ -208,12 +220,12 @@ def source() -> str:
 
     calls = []
     for k, kind in enumerate(SHAPES):
-        eye_args = "eye, tile, " if kind.from_eye else ""
+        eye_args = "terms, candidates, n_candidates, " if kind.from_eye else ""
         calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
                      % (kind.name, 2 * k, 2 * k + 1, eye_args))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def intersect_scene(shapes, eye, tile, origin, direction, tmin, tmax, formula):",
+        "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula):",
         '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss."""',
         "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
     parts.append("\n".join([

@@ -17,13 +17,15 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange
+from numba import njit, prange, types
+from numba.extending import overload
 
 from ..material import BASE_COLOR
 from ..shading import SPAWN_EPSILON
 from .camera import gen_ray
 from .culling import tile_candidates
 from .dispatch import intersect_scene, shade, shape_normal
+from .dispatch_support import as_python
 from .float3 import add, lit, load3, scale
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
@@ -38,9 +40,9 @@ SECONDARY = 2
 @njit(cache=True, error_model="numpy")
 def eye_candidates(eye, camera, tile_box, size, candidates):
     """The rows of the from-eye kind that the tile's primary rays can hit (culling), and
-    their number; 0 without a pinhole eye or such a kind."""
+    their number; -1 without a pinhole eye or such a kind."""
     if eye is None:
-        return 0
+        return -1
     x0, x1, y0, y1 = tile_box
     return tile_candidates(camera[2], eye[1], x0, x1, y0, y1, size[0], size[1], candidates)
 
@@ -50,15 +52,28 @@ def from_eye_rows(eye):
     return 0 if eye is None else eye[0].shape[0]
 
 
+def eye_terms(eye):
+    """The per-frame terms of the from-eye kind, or None (typed by the overload below)."""
+    return as_python(_typed_eye_terms, eye)
+
+
+@overload(eye_terms, inline="always")
+def _typed_eye_terms(eye):
+    if isinstance(eye, types.NoneType):
+        return lambda eye: None
+    return lambda eye: eye[0]
+
+
 @njit(cache=True, error_model="numpy", inline="always")
-def trace(ray, shapes, lights, scene, eye, tile, settings, bounces):
+def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces):
     """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
     path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
-    Returns (radiance, shadow rays, secondary rays)."""
+    Primary rays from a pinhole eye test the from-eye kind's ``candidates[:n_candidates]``
+    with its per-frame ``terms`` (n_candidates -1: no such eye). Returns (radiance, shadow
+    rays, secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene
     shadows, show_ray_direction, formula = settings
-    candidates, n_candidates, from_eye = tile
     zero = lit(0, tmin)
     result = (zero, zero, zero)
     n_shadow = 0
@@ -67,7 +82,7 @@ def trace(ray, shapes, lights, scene, eye, tile, settings, bounces):
     for i in range(depth):
         if i > 0:
             n_secondary += 1
-        t, idx, kind, row = intersect_scene(shapes, eye, (candidates, n_candidates, from_eye and i == 0),
+        t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if i == 0 else -1,
                                             origin, direction, tmin, tmax, formula)
         if idx < 0:
             result = add(result, load3(background, 0))
@@ -94,6 +109,45 @@ def trace(ray, shapes, lights, scene, eye, tile, settings, bounces):
     return result, n_shadow, n_secondary
 
 
+@njit(cache=True, error_model="numpy", _nrt=False)
+def render_tile(tile_box, size, camera, shapes, lights, scene, terms, candidates, n_candidates,
+                settings, bounces, image):
+    """The pixels x0 <= ix < x1, y0 <= iy < y1 of the image: (primary, shadow, secondary)
+    rays cast. ``candidates[:n_candidates]`` are the from-eye kind's rows the tile's primary
+    rays can hit, with their per-frame ``terms`` (None and -1 without a pinhole eye).
+
+    Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
+    the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
+    cost an atomic increment and decrement each per pixel, twice the time of the pixel."""
+    x0, x1, y0, y1 = tile_box
+    width, height = size
+    camera_kind, camera_row = camera[0], camera[1]
+    shadows, show_ray_direction, formula = settings
+    n_shadow = 0
+    n_secondary = 0
+    n_primary = 0
+    one = lit(1, camera_row[0])
+    for iy in range(y0, y1):
+        for ix in range(x0, x1):
+            sx = lit(2, one) * (lit(ix, one) + lit(0.5, one)) / lit(width, one) - one
+            sy = lit(2, one) * (lit(iy, one) + lit(0.5, one)) / lit(height, one) - one
+            ray = gen_ray(camera_kind, camera_row, sx, sy)
+            n_primary += 1
+            if show_ray_direction:
+                half = lit(0.5, one)
+                color = add(scale(ray[1], half), (half, half, half))
+            else:
+                color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms, candidates,
+                                                           n_candidates, settings, bounces)
+                n_shadow += shadow_rays
+                n_secondary += secondary_rays
+            out = image[height - 1 - iy, ix]
+            out[0] = color[0]
+            out[1] = color[1]
+            out[2] = color[2]
+    return n_primary, n_shadow, n_secondary
+
+
 @njit(parallel=True, cache=True, error_model="numpy")
 def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, tile_stride, image,
                   counts):
@@ -102,46 +156,22 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, t
     holds its per-frame terms and culling cones, so each tile tests only the rows its
     primary rays can hit; otherwise it is None."""
     width, height = size
-    camera_kind, camera_row = camera[0], camera[1]
-    shadows, show_ray_direction, formula = settings
-    from_eye = eye is not None
-    n_rows = from_eye_rows(eye)
     tiles_x = (width + TILE - 1) // TILE
     tiles_y = (height + TILE - 1) // TILE
     n_tiles = tiles_x * tiles_y
+    candidates = np.empty((n_tiles, from_eye_rows(eye)), dtype=np.int64)
+    terms = eye_terms(eye)
     for k in prange(n_tiles):
         # prange hands each thread a contiguous block of k; the stride (coprime with
         # n_tiles) spreads every block over the whole image, so the threads share the work.
         tile = (k * tile_stride) % n_tiles
         x0 = (tile % tiles_x) * TILE
         y0 = (tile // tiles_x) * TILE
-        n_shadow = 0
-        n_secondary = 0
-        n_primary = 0
-        x1 = min(x0 + TILE, width)
-        y1 = min(y0 + TILE, height)
-        candidates = np.empty(n_rows, dtype=np.int64)
-        n_candidates = eye_candidates(eye, camera, (x0, x1, y0, y1), size, candidates)
-        for iy in range(y0, y1):
-            for ix in range(x0, x1):
-                one = lit(1, camera_row[0])
-                sx = lit(2, one) * (lit(ix, one) + lit(0.5, one)) / lit(width, one) - one
-                sy = lit(2, one) * (lit(iy, one) + lit(0.5, one)) / lit(height, one) - one
-                ray = gen_ray(camera_kind, camera_row, sx, sy)
-                n_primary += 1
-                if show_ray_direction:
-                    half = lit(0.5, one)
-                    color = add(scale(ray[1], half), (half, half, half))
-                else:
-                    color, shadow_rays, secondary_rays = trace(
-                        ray, shapes, lights, scene, eye, (candidates, n_candidates, from_eye),
-                        settings, bounces)
-                    n_shadow += shadow_rays
-                    n_secondary += secondary_rays
-                out = image[height - 1 - iy, ix]
-                out[0] = color[0]
-                out[1] = color[1]
-                out[2] = color[2]
+        box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
+        n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
+        n_primary, n_shadow, n_secondary = render_tile(box, size, camera, shapes, lights, scene, terms,
+                                                       candidates[tile], n_candidates, settings,
+                                                       bounces, image)
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
