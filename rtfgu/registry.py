@@ -34,15 +34,8 @@ from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
 
 
-@dataclass(frozen=True)
-class ShapeKind:
-    name: str
-    cls: type
-    fields: tuple                       # ((field, components), ...), the intersection's arguments
-    formulas: tuple = ("slide",)        # the intersection formulas the kernels and WGSL provide
-    numba_module: str = "rtfgu.kernels.intersect"
-    from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
-    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
+class _Rows:
+    """A kind with a row per object in the flat layout: its table and record names."""
 
     @property
     def table(self) -> str:
@@ -53,6 +46,17 @@ class ShapeKind:
     def record(self) -> str:
         """The layout record and WGSL struct: "Sphere"."""
         return self.cls.__name__
+
+
+@dataclass(frozen=True)
+class ShapeKind(_Rows):
+    name: str
+    cls: type
+    fields: tuple                       # ((field, components), ...), the intersection's arguments
+    formulas: tuple = ("slide",)        # the intersection formulas the kernels and WGSL provide
+    numba_module: str = "rtfgu.kernels.intersect"
+    from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
+    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
 
     @property
     def wgsl_file(self) -> str:
@@ -81,7 +85,7 @@ class ShaderKind:
 
 
 @dataclass(frozen=True)
-class LightKind:
+class LightKind(_Rows):
     """A light: the lecture class with an attribute per field, numba
     ``sample_<name>(lights, j, position)`` and WGSL ``fn sample_<name>(pos, i) -> Light``
     in ``lights.wgsl``, both returning the slide's (L_i, w_i, dist)."""
@@ -89,14 +93,6 @@ class LightKind:
     name: str
     cls: type
     fields: tuple
-
-    @property
-    def table(self) -> str:
-        return self.name + "s"
-
-    @property
-    def record(self) -> str:
-        return self.cls.__name__
 
 
 SHAPES = (

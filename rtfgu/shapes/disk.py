@@ -8,29 +8,18 @@ edges belong to the triangle).
 """
 from __future__ import annotations
 
-import math
-
 from ..float3 import Float3, as_float3, normalize
 from ..ray import Ray
 from .plane import Plane
-from .shape import Shape
+from .shape import Shape, nonzero_vector, positive
 
 
 class Disk(Shape):
     def __init__(self, center, normal, radius: float, color, material=None):
         super().__init__(color, material)
         self.center = as_float3(center, "Disk.center")
-        normal = as_float3(normal, "Disk.normal")
-        if normal.length_squared() == 0.0:
-            raise ValueError("Disk.normal must be non-zero")
-        self.normal = normal
-        try:
-            ok = math.isfinite(radius) and radius > 0
-        except TypeError:
-            ok = False
-        if not ok:
-            raise ValueError("Disk.radius must be finite and > 0, got %r" % (radius,))
-        self.radius = float(radius)
+        self.normal = nonzero_vector(normal, "Disk.normal")
+        self.radius = positive(radius, "Disk.radius")
         self._plane = Plane(self.center, self.normal, color)
 
     def intersect_p(self, ray: Ray) -> bool:

@@ -8,6 +8,7 @@ ray with a fresh ``tmax``.
 """
 from __future__ import annotations
 
+import math
 from abc import ABC, abstractmethod
 
 from ..float3 import Float3, as_float3
@@ -29,3 +30,23 @@ class Shape(ABC):
     @abstractmethod
     def normal_at(self, position: Float3) -> Float3:
         """The unit geometric normal at a point on the surface."""
+
+
+def positive(value, name: str) -> float:
+    """``value`` as a float if it is a finite number > 0 (a radius); else a ValueError
+    naming ``name``."""
+    try:
+        ok = math.isfinite(value) and value > 0
+    except TypeError:
+        ok = False
+    if not ok:
+        raise ValueError("%s must be finite and > 0, got %r" % (name, value))
+    return float(value)
+
+
+def nonzero_vector(value, name: str) -> Float3:
+    """``value`` as a finite, non-zero Float3 (a normal); else a ValueError naming ``name``."""
+    value = as_float3(value, name)
+    if value.length_squared() == 0.0:
+        raise ValueError("%s must be non-zero" % name)
+    return value
