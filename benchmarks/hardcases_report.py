@@ -57,7 +57,7 @@ def _rays_per_second(fn, *args, repeat: int = 3) -> float:
         start = time.perf_counter()
         fn(*args)
         best = min(best, time.perf_counter() - start)
-    return args[1].shape[0] / best
+    return args[-2].shape[0] / best  # rays: the rows of tmax
 
 
 @lru_cache(maxsize=None)
@@ -77,8 +77,8 @@ def speed_rows(rays: int = 200_000) -> tuple:
             s = np.ascontiguousarray(np.tile(fam.shapes[0], (reps, 1))[:rays])
             speeds = {}
             for formula in ("slide", "robust"):
-                speeds[formula] = _rays_per_second(kernels.batch, kernels.ADAPTERS[kind_name, formula],
-                                                   o, d, lo, hi, s)
+                adapter, finite = kernels.ADAPTERS[kind_name, formula]
+                speeds[formula] = _rays_per_second(kernels.batch, adapter, finite, o, d, lo, hi, s)
             rows.append(dict(kind=kind_name, path="numba", precision=precision, **speeds))
             if precision == "float32" and wgsl_unavailable_reason() is None:
                 speeds = {}

@@ -88,7 +88,7 @@ class NumbaPath(Path):
     def __call__(self, kind, origins, directions, tmin, tmax, shapes):
         adapter = self.kernels.ADAPTERS[kind, self.formula]
         with np.errstate(all="ignore"):
-            return self.kernels.batch(adapter, origins, directions, tmin, tmax, shapes)
+            return self.kernels.batch(*adapter, origins, directions, tmin, tmax, shapes)
 
     def spawn(self, kind, positions, normals, directions, shapes):
         if self.formula == "slide":

@@ -114,9 +114,20 @@ def plane_robust(origin, direction, tmin, tmax, point, normal):
 # --- triangle -------------------------------------------------------------------------
 
 @njit(cache=True, error_model="numpy")
+def _pick(v, k):
+    # v[k] for a Float3: a branch is cheaper than numba's runtime tuple index.
+    if k == 0:
+        return v[0]
+    if k == 1:
+        return v[1]
+    return v[2]
+
+
+@njit(cache=True, error_model="numpy")
 def _shear(P, kx, ky, kz, Sx, Sy):
     # The vertex P - o in the ray's frame (Woop et al. 2013, eq. 3): x and y after the shear.
-    return P[kx] - Sx * P[kz], P[ky] - Sy * P[kz]
+    Pkz = _pick(P, kz)
+    return _pick(P, kx) - Sx * Pkz, _pick(P, ky) - Sy * Pkz
 
 
 @njit(cache=True, error_model="numpy")
@@ -133,11 +144,11 @@ def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
         kz = 1 if ady > adz else 2
     kx = (kz + 1) % 3
     ky = (kx + 1) % 3
-    dkz = direction[kz]
+    dkz = _pick(direction, kz)
     if dkz < zero:
         kx, ky = ky, kx  # keep the winding, so U, V, W keep their sign convention
-    Sx = direction[kx] / dkz
-    Sy = direction[ky] / dkz
+    Sx = _pick(direction, kx) / dkz
+    Sy = _pick(direction, ky) / dkz
     Sz = lit(1, tmin) / dkz
     A = sub(v0, origin)
     B = sub(v1, origin)
@@ -165,7 +176,7 @@ def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
     det = U + V + W
     if det == zero:
         return inf
-    T = U * (Sz * A[kz]) + V * (Sz * B[kz]) + W * (Sz * C[kz])
+    T = U * (Sz * _pick(A, kz)) + V * (Sz * _pick(B, kz)) + W * (Sz * _pick(C, kz))
     t = T / det
     if t >= tmin and t < tmax:
         return t
@@ -230,9 +241,27 @@ def offset_ray_origin(p, p_error, n, w):
 
 
 # --- batch evaluators -----------------------------------------------------------------
-# One adapter per kind and formula: (origin, direction, tmin, tmax, shapes, i) -> t for
-# the shape in row i. The render relies on compile_scene for finite input; the hard cases
-# include non-finite rays and shapes, which the robust adapters answer with a miss.
+# Per kind and formula an adapter (origin, direction, tmin, tmax, shapes, i) -> t for the
+# shape in row i, and per kind a test (origin, direction, tmin, shapes, i) -> bool that the
+# ray and the row are finite. The render relies on compile_scene for finite input; the
+# hard cases include non-finite rays and shapes, which the robust formulas answer with a
+# miss: ``batch`` runs them behind the kind's test, the slide formulas behind ``_any``.
+
+@njit(cache=True, error_model="numpy")
+def _any(o, d, tmin, shapes, i):
+    return True
+
+
+@njit(cache=True, error_model="numpy")
+def sphere_finite(o, d, tmin, shapes, i):
+    return _finite(o, d) and _finite(row3(shapes, i, 0), (shapes[i, 3], tmin, lit(0, tmin)))
+
+
+@njit(cache=True, error_model="numpy")
+def triangle_finite(o, d, tmin, shapes, i):
+    return (_finite(o, d) and _finite(row3(shapes, i, 0), row3(shapes, i, 3))
+            and _finite(row3(shapes, i, 6), (tmin, tmin, tmin)))
+
 
 @njit(cache=True, error_model="numpy")
 def sphere_slide(o, d, tmin, tmax, shapes, i):
@@ -241,11 +270,7 @@ def sphere_slide(o, d, tmin, tmax, shapes, i):
 
 @njit(cache=True, error_model="numpy")
 def sphere_robust(o, d, tmin, tmax, shapes, i):
-    center = row3(shapes, i, 0)
-    radius = shapes[i, 3]
-    if _finite(o, d) and _finite(center, (radius, tmin, lit(0, tmin))):
-        return intersect_sphere_robust(o, d, tmin, tmax, center, radius)
-    return lit(math.inf, radius)
+    return intersect_sphere_robust(o, d, tmin, tmax, row3(shapes, i, 0), shapes[i, 3])
 
 
 @njit(cache=True, error_model="numpy")
@@ -255,6 +280,7 @@ def plane_slide(o, d, tmin, tmax, shapes, i):
 
 @njit(cache=True, error_model="numpy")
 def plane_robust_row(o, d, tmin, tmax, shapes, i):
+    # Tests finiteness itself (ADAPTERS pairs it with _any), before the compensated sums.
     point = row3(shapes, i, 0)
     normal = row3(shapes, i, 3)
     if _finite(o, d) and _finite(point, normal) and _finite((tmin, tmin, tmin), (tmin, tmin, tmin)):
@@ -274,12 +300,7 @@ def triangle_slide(o, d, tmin, tmax, shapes, i):
 
 @njit(cache=True, error_model="numpy")
 def triangle_robust_row(o, d, tmin, tmax, shapes, i):
-    v0 = row3(shapes, i, 0)
-    v1 = row3(shapes, i, 3)
-    v2 = row3(shapes, i, 6)
-    if _finite(o, d) and _finite(v0, v1) and _finite(v2, (tmin, tmin, tmin)):
-        return triangle_robust(o, d, tmin, tmax, v0, v1, v2)
-    return lit(math.inf, tmin)
+    return triangle_robust(o, d, tmin, tmax, row3(shapes, i, 0), row3(shapes, i, 3), row3(shapes, i, 6))
 
 
 @njit(cache=True, error_model="numpy")
@@ -288,11 +309,17 @@ def disk_slide(o, d, tmin, tmax, shapes, i):
 
 
 @njit(cache=True, error_model="numpy")
-def batch(adapter, origins, directions, tmin, tmax, shapes):
-    """t of ray i against the shape in row i of ``shapes``, through ``adapter``."""
+def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
+    """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
+    where ``finite`` says the input is not finite."""
     out = np.empty(origins.shape[0], dtype=origins.dtype)
     for i in range(origins.shape[0]):
-        out[i] = adapter(row3(origins, i, 0), row3(directions, i, 0), tmin[i], tmax[i], shapes, i)
+        o = row3(origins, i, 0)
+        d = row3(directions, i, 0)
+        if finite(o, d, tmin[i], shapes, i):
+            out[i] = adapter(o, d, tmin[i], tmax[i], shapes, i)
+        else:
+            out[i] = lit(math.inf, tmin[i])
     return out
 
 
@@ -326,9 +353,11 @@ def batch_spawn(point_error, positions, normals, directions, shapes):
     return origins
 
 
-# (kind name, formula) -> adapter, and kind name -> point error, for rtfgu.hardcases.
-ADAPTERS = {("sphere", "slide"): sphere_slide, ("sphere", "robust"): sphere_robust,
-            ("plane", "slide"): plane_slide, ("plane", "robust"): plane_robust_row,
-            ("triangle", "slide"): triangle_slide, ("triangle", "robust"): triangle_robust_row,
-            ("disk", "slide"): disk_slide}
+# (kind name, formula) -> (adapter, finiteness test) for ``batch``, and kind name -> point
+# error for ``batch_spawn``, for rtfgu.hardcases.
+ADAPTERS = {("sphere", "slide"): (sphere_slide, _any), ("sphere", "robust"): (sphere_robust, sphere_finite),
+            ("plane", "slide"): (plane_slide, _any), ("plane", "robust"): (plane_robust_row, _any),
+            ("triangle", "slide"): (triangle_slide, _any),
+            ("triangle", "robust"): (triangle_robust_row, triangle_finite),
+            ("disk", "slide"): (disk_slide, _any)}
 POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}
