@@ -126,9 +126,7 @@ def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
     # The least t in range: the near root if it is, else the far one (a ray from inside).
     near = min(t0, t1)
     t = near if near >= tmin and near <= tmax else max(t0, t1)
-    if t >= tmin and t <= tmax:
-        return t
-    return lit(math.inf, a)
+    return t if t >= tmin and t <= tmax else lit(math.inf, a)
 
 
 @njit(cache=True, error_model="numpy")
