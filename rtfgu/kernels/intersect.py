@@ -101,7 +101,7 @@ def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
     the line (no b^2 - 4ac cancellation), and the roots c / q and q / a with
     q = b' + sign(b') sqrt(disc) subtract no two nearly equal numbers. The inputs are finite
     (compile_scene refuses anything else), so it needs no finiteness test (the hard cases'
-    rtfgu.kernels.robust.batch_sphere adds one): a zero direction gives NaN, and NaN fails
+    rtfgu.kernels.robust.batch adds one): a zero direction gives NaN, and NaN fails
     every comparison."""
     a = dot(direction, direction)
     # Through 1 / a, which depends on the ray only: inlined in intersect_scene's loop over
