@@ -4,7 +4,11 @@ A family is a batch of rays, each with its own K shapes of one kind (K = 1 for m
 triangle fan; 2 for a spawned ray: the surface it leaves and a neighbour just beyond). The
 inputs are drawn in float64 from a seeded generator and then rounded once to the precision
 of the path under test; the truth is computed from the rounded numbers (``exact``), so a
-float32 family and a float64 family share their geometry but not their last bits.
+float32 family and a float64 family share their geometry but not their last bits. A shape
+is a row of its lecture constructor's arguments (``rtfgu.hardcases.kinds``).
+
+A family is a builder ``(rng, n) -> dict`` registered with ``@family(name, group, kind,
+description)``; FAMILIES keeps them in the order they are defined here.
 """
 from __future__ import annotations
 
@@ -22,7 +26,6 @@ from . import exact
 from .kinds import KINDS
 
 DEFAULT_RAYS = 200
-
 
 FAMILIES = {}
 
