@@ -26,6 +26,7 @@ import importlib.util
 import os
 import sys
 import tempfile
+import warnings
 from pathlib import Path
 
 from .. import layout
@@ -229,7 +230,7 @@ def source() -> str:
         '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss."""',
         "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
     parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\")",
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
         '    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""']
         + ["    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
@@ -325,6 +326,17 @@ def use_versioned_cache() -> None:
     numba.config.CACHE_DIR = str(cache_dir() / ("numba-" + kernel_version()))
 
 
+def _quiet_inlined_loops() -> None:
+    """numba's SSA pass reports a pedantic NumbaIRAssumptionWarning ("variable ... is not in
+    scope") for loop variables of an overload body inlined with inline="always", such as the
+    light loop's; the compiled code is right (the parity tests compare it bit for bit with
+    the lecture layer), so only those warnings are silenced."""
+    from numba.core.errors import NumbaIRAssumptionWarning
+
+    warnings.filterwarnings("ignore", message=r"variable '_typed_\w+__locals__",
+                            category=NumbaIRAssumptionWarning)
+
+
 def load():
     """The generated module, written once per distinct text and imported from its file."""
     text = source()
@@ -345,6 +357,7 @@ def load():
 
 
 use_versioned_cache()
+_quiet_inlined_loops()
 _generated = load()
 intersect_scene = _generated.intersect_scene
 in_shadow = _generated.in_shadow
