@@ -76,13 +76,13 @@ def spheres_only(width, height, camera, camera64, spheres, sphere_eye, cones, co
 
 def prepare(flat, width, height):
     """Arguments for both baselines from a FlatScene of spheres (scene order = row order)."""
-    if flat.camera_kind != PINHOLE or len(flat.planes) or len(flat.triangles):
+    if flat.camera_kind != PINHOLE or any(flat.count(k) for k in flat.shapes if k != "sphere"):
         raise ValueError("the spheres-only baselines need a pinhole camera and spheres only")
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     camera64 = camera.astype(np.float64)
-    sphere_eye = np.empty((len(flat.spheres), 4), dtype=flat.dtype)
-    sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), flat.spheres, sphere_eye)
-    cones = cone_table(camera64, flat.spheres)
+    sphere_eye = np.empty((len(flat.table("sphere")), 4), dtype=flat.dtype)
+    sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), flat.table("sphere"), sphere_eye)
+    cones = cone_table(camera64, flat.table("sphere"))
     n_tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     stride = max(1, int(n_tiles * 0.6180339887))
     while math.gcd(stride, n_tiles) != 1:
@@ -93,13 +93,13 @@ def prepare(flat, width, height):
 def run_brute_force(flat, width, height):
     camera = prepare(flat, width, height)[0]
     image = np.empty((height, width, 3), dtype=flat.dtype)
-    brute_force(width, height, camera, flat.spheres, flat.materials, flat.background, image)
+    brute_force(width, height, camera, flat.table("sphere"), flat.materials, flat.background, image)
     return image.astype(np.float64)
 
 
 def run_spheres_only(flat, width, height):
     camera, camera64, sphere_eye, cones, stride = prepare(flat, width, height)
     image = np.empty((height, width, 3), dtype=flat.dtype)
-    spheres_only(width, height, camera, camera64, flat.spheres, sphere_eye, cones,
+    spheres_only(width, height, camera, camera64, flat.table("sphere"), sphere_eye, cones,
                  flat.materials, flat.background, stride, image)
     return image.astype(np.float64)
