@@ -14,9 +14,25 @@ $(STAMP): setup.cfg pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
-venv: $(STAMP)
+# bubblewrap isolates the grader's student code (rtfgu/grading/sandbox.py). Where it is not
+# installed (Debian package bubblewrap) and apt-get can download it, its binary is unpacked
+# into .venv/sandbox; without it the grader falls back to weaker isolation and says so.
+SANDBOX_STAMP := $(VENV)/.sandbox
+$(SANDBOX_STAMP): $(STAMP)
+	@if command -v bwrap >/dev/null 2>&1; then echo "bubblewrap: $$(command -v bwrap)"; \
+	elif command -v apt-get >/dev/null 2>&1 && command -v dpkg-deb >/dev/null 2>&1; then \
+	  rm -rf $(VENV)/sandbox-download && mkdir -p $(VENV)/sandbox-download && \
+	  (cd $(VENV)/sandbox-download && apt-get download bubblewrap >/dev/null 2>&1) && \
+	  dpkg-deb -x $(VENV)/sandbox-download/bubblewrap_*.deb $(VENV)/sandbox && \
+	  echo "bubblewrap: $(VENV)/sandbox/usr/bin/bwrap" || \
+	  echo "bubblewrap could not be downloaded (Debian package bubblewrap): the grader will use a weaker sandbox"; \
+	  rm -rf $(VENV)/sandbox-download; \
+	else echo "bubblewrap not found (Debian package bubblewrap): the grader will use a weaker sandbox"; fi
+	touch $(SANDBOX_STAMP)
 
-render: $(STAMP)
+venv: $(STAMP) $(SANDBOX_STAMP)
+
+render: $(STAMP) $(SANDBOX_STAMP)
 	$(if $(A),$(PY) -m rtfgu.grading render $(A),$(PY) -m rtfgu render-all --backend numba --out renders)
 
 # The benchmark (not a test): prints the table and writes docs/bench.md and its plot.
@@ -33,7 +49,7 @@ bench: $(BENCH_STAMP)
 montage: $(STAMP)
 	$(PY) -m rtfgu.montage docs/homework_renders.png
 
-test: $(STAMP)
+test: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m pytest
 
 clean:
@@ -45,14 +61,14 @@ clean:
 assignments: $(STAMP)
 	$(PY) -m rtfgu.grading generate --out assignments
 
-check: $(STAMP)
+check: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m rtfgu.grading check $(A)
 
-grade: $(STAMP)
+grade: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m rtfgu.grading grade $(A) $(SUBMISSION) --out $(or $(OUT),grading-results/$(A)/$(notdir $(patsubst %/,%,$(SUBMISSION))))
 
-grade-all: $(STAMP)
+grade-all: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m rtfgu.grading grade-all $(A) $(SUBMISSIONS) --out $(or $(OUT),grading-results/$(A))
 
-autograder-zip: $(STAMP)
+autograder-zip: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m rtfgu.grading autograder-zip $(A)

@@ -1,3 +1,4 @@
+# release: solves a03
 """Robust ray/shape intersection, next to the slide formulas of ``rtfgu.shapes``.
 
 The slide formulas are exact in real arithmetic and fail in floating point in known places:

@@ -12,31 +12,40 @@ from pathlib import Path
 from .assignments import ASSIGNMENTS, get_assignment
 
 
-def _cmd_render(a, folder, out, width, height):
+def _cmd_render(a, folder, out, width, height) -> int:
+    """Render the assignment's images with the student's files; 1 if any render failed."""
+    import tempfile
+
     import numpy as np
 
     from ..image import write_png
-    from .sandbox import build_overlay, run_child
-    import tempfile
+    from .sandbox import choose_isolation, prepare, run_child
 
+    if not a.images:
+        print("%s has no images to render: its tests are `make check A=%s`" % (a.id, a.short))
+        return 1
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
+    failed = 0
+    isolation = choose_isolation()
     with tempfile.TemporaryDirectory(prefix="rtfgu-render-") as tmp:
-        overlay, notes = build_overlay(a, folder, Path(tmp))
-        for note in notes:
+        ws = prepare(a, folder, Path(tmp) / "work")
+        for note in ws.notes + list(ws.broken.values()):
             print("note:", note)
         for name in a.images:
-            def observe(rt, name=name):
-                fn = rt.scenes.get_scene(name)
-                w, h = fn.size
-                return {"image": rt.renderer.render_reference(fn(), width or w, height or h).tolist()}
-            child = run_child(overlay, Path(tmp) / name, observe, time_limit=3600, memory_mb=4096)
+            child = run_child(ws, Path(tmp) / "scratch" / name, ["render", name, width or 0, height or 0],
+                              isolation=isolation, time_limit=3600, memory_mb=4096,
+                              output_limit=16 * 1024 * 1024)
             if child.status != "ok" or "error" in child.data:
                 print("%s: failed: %s" % (name, child.detail or child.data.get("error")))
+                failed += 1
                 continue
             path = out / (name + ".png")
             write_png(np.asarray(child.data["image"]), path)
             print(path)
+    if failed:
+        print("%d of %d images failed to render" % (failed, len(a.images)))
+    return 1 if failed else 0
 
 
 def main(argv=None) -> int:
@@ -58,6 +67,8 @@ def main(argv=None) -> int:
     def grading_options(p):
         p.add_argument("--time-limit", type=float, default=None, help="seconds per test")
         p.add_argument("--memory-mb", type=int, default=1024, help="memory per test, MB")
+        p.add_argument("--require-sandbox", action="store_true",
+                       help="refuse to grade unless student code runs in bubblewrap")
 
     p = sub.add_parser("grade", help="grade one submission (a folder or a zip)")
     p.add_argument("assignment")
@@ -127,15 +138,19 @@ def main(argv=None) -> int:
             if not Path(submission).exists():
                 parser.exit(2, "error: submission %s does not exist\n" % submission)
             log = (lambda line: print(line, flush=True)) if args.command == "check" else None
-            result = grade(a, submission, args.out, fmt_name=fmt, visible_only=visible_only,
-                           time_limit=args.time_limit, memory_mb=args.memory_mb, log=log)
+            out = args.out
+            if args.command == "check" and out is None:
+                out = str(Path("check-results") / a.short)
+            result = grade(a, submission, out, fmt_name=fmt, visible_only=visible_only,
+                           time_limit=args.time_limit, memory_mb=args.memory_mb, log=log,
+                           require_sandbox=args.require_sandbox)
             print(result.summary())
             if args.command == "check":
                 return 0 if result.score >= result.max_score - 1e-9 else 1
         elif args.command == "render":
             a = get_assignment(args.assignment)
             folder = args.folder or str(Path("assignments") / a.id)
-            _cmd_render(a, folder, args.out or str(Path("renders") / a.short), args.width, args.height)
+            return _cmd_render(a, folder, args.out or str(Path("renders") / a.short), args.width, args.height)
         elif args.command == "grade-all":
             from .gradebook import grade_all
 
@@ -144,6 +159,7 @@ def main(argv=None) -> int:
                 parser.exit(2, "error: submissions folder %s does not exist\n" % args.submissions)
             path = grade_all(a, args.submissions, args.out, processes=args.processes,
                              time_limit=args.time_limit, memory_mb=args.memory_mb,
+                             require_sandbox=args.require_sandbox,
                              log=lambda line: print(line, flush=True))
             print(path)
         elif args.command == "autograder-zip":

@@ -84,10 +84,12 @@ def _stub_lines(assignment: Assignment, block, indent: str, language: str):
     return out
 
 
-def transform(text: str, filename: str, stub_from: int | None, language_of=None) -> str:
+def transform(text: str, filename: str, stub_from: int | None, language_of=None,
+              revealed=None) -> str:
     """The file with every block of an assignment numbered >= ``stub_from`` replaced by its
     stub and every other block's markers removed (the solution kept). ``stub_from=None``
-    keeps every solution (the solved student file)."""
+    keeps every solution (the solved student file). With ``revealed`` (a set of assignment
+    numbers) instead, every block of an assignment not in it is stubbed."""
     table = block_table()
     language = "wgsl" if filename.endswith(".wgsl") else "python"
     lines = text.split("\n")
@@ -99,7 +101,9 @@ def transform(text: str, filename: str, stub_from: int | None, language_of=None)
                              "(add it to rtfgu/grading/assignments.py)" % (filename, qualname))
         assignment, block = table[key]
         out.extend(lines[cursor:begin])
-        if stub_from is not None and assignment.number >= stub_from:
+        stub = (assignment.number not in revealed if revealed is not None
+                else stub_from is not None and assignment.number >= stub_from)
+        if stub:
             out.extend(_stub_lines(assignment, block, indent, language))
         else:
             out.extend(lines[begin + 1:end])
@@ -197,3 +201,31 @@ def write_tree(out_dir) -> list:
         if relpath not in tree:
             (out_dir / relpath).unlink()
     return write_files(tree, out_dir)
+
+
+_REGION = re.compile(r"^[ \t]*#[ \t]*### (?P<edge>BEGIN|END) (?P<tag>HIDDEN|STAFF)\s*$")
+
+
+def strip_regions(text: str, tags, filename: str = "") -> str:
+    """``text`` without the lines between ``# ### BEGIN TAG`` and ``# ### END TAG`` for every
+    TAG in ``tags`` (the markers of the other tags removed, their lines kept). HIDDEN marks
+    the hidden tests of a check module (left out of a student release), STAFF grader code
+    that must not run next to student code (left out of the release and of the sandbox)."""
+    out, inside = [], None
+    for number, line in enumerate(text.split("\n"), start=1):
+        m = _REGION.match(line)
+        if m:
+            if m.group("edge") == "BEGIN":
+                if inside is not None:
+                    raise ValueError("%s line %d: BEGIN %s inside %s" % (filename, number, m.group("tag"), inside))
+                inside = m.group("tag")
+            else:
+                if inside != m.group("tag"):
+                    raise ValueError("%s line %d: END %s without BEGIN" % (filename, number, m.group("tag")))
+                inside = None
+            continue
+        if inside is None or inside not in tags:
+            out.append(line)
+    if inside is not None:
+        raise ValueError("%s: BEGIN %s without END" % (filename, inside))
+    return "\n".join(out)

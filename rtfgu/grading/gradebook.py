@@ -27,21 +27,27 @@ def list_submissions(folder) -> list:
 def _grade_one(job):
     from .grader import grade
 
-    assignment_id, student, path, out_dir, time_limit, memory_mb = job
+    assignment_id, student, path, out_dir, time_limit, memory_mb, require_sandbox = job
     try:
-        result = grade(assignment_id, path, Path(out_dir) / student, time_limit=time_limit, memory_mb=memory_mb)
+        result = grade(assignment_id, path, Path(out_dir) / student, time_limit=time_limit, memory_mb=memory_mb,
+                       require_sandbox=require_sandbox)
         return student, result.score, result.max_score, {t.number: t.score for t in result.tests}, ""
     except Exception as error:  # one broken submission must not stop the class
         return student, 0.0, None, {}, "%s: %s" % (type(error).__name__, error)
 
 
-def grade_all(assignment, submissions, out_dir, *, processes=None, time_limit=None, memory_mb=1024, log=None) -> Path:
+def grade_all(assignment, submissions, out_dir, *, processes=None, time_limit=None, memory_mb=1024, log=None,
+              require_sandbox: bool = False) -> Path:
     """Grade every submission in ``submissions``; write ``out_dir/<student>/results.json`` and
     ``out_dir/gradebook.csv`` (one row per submission); return the CSV's path."""
     a = get_assignment(assignment) if isinstance(assignment, str) else assignment
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
-    jobs = [(a.id, student, str(path), str(out_dir), time_limit, memory_mb)
+    if require_sandbox:
+        from .sandbox import choose_isolation
+
+        choose_isolation(require_sandbox=True)  # refuse before any submission is touched
+    jobs = [(a.id, student, str(path), str(out_dir), time_limit, memory_mb, require_sandbox)
             for student, path in list_submissions(submissions)]
     processes = processes or os.cpu_count() or 1
     checks = checks_for(a.id)

@@ -1,15 +1,19 @@
-"""Grading one submission: overlay, one sandboxed child per test, judge, diff images.
+"""Grading one submission: the student package, one sandboxed interpreter per test, judge,
+diff images.
 
 The reference observations (``rtfgu/grading/reference/<assignment>/``) are what the
 solution gives for every test; they are regenerated only on request
 (``python -m rtfgu.grading references``). The grader reads them into memory before any
-student code runs, never lets the overlay contain them, and checks afterwards that their
-files are unchanged (restoring them if a submission wrote to them).
+student code runs; the package the code runs in never contains them (rtfgu.grading.sandbox),
+and the grader checks afterwards that their files are unchanged (restoring them if a
+submission reached them). Only numbers come back from the child; the judging is here.
 """
 from __future__ import annotations
 
 import hashlib
 import json
+import os
+import stat
 import tempfile
 import time
 from pathlib import Path
@@ -20,7 +24,7 @@ from ..image import read_png, to_8bit
 from .assignments import get_assignment
 from .checks import IMAGE_FRACTION, IMAGE_LEVELS, checks_for, fmt, judge_cases
 from .results import Result, TestResult
-from .sandbox import build_overlay, run_child
+from .sandbox import choose_isolation, prepare, run_child
 
 REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
 
@@ -38,15 +42,15 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
     folder, obs_path = reference_paths(a)
     folder.mkdir(parents=True, exist_ok=True)
     observations, written = {}, []
+    isolation = choose_isolation()
     with tempfile.TemporaryDirectory(prefix="rtfgu-ref-") as tmp:
-        overlay, _ = build_overlay(a, None, Path(tmp))
+        ws = prepare(a, None, Path(tmp) / "work")
         for check in checks_for(a.id):
-            child = run_child(overlay, Path(tmp) / "scratch" / check.slug, check.observe,
-                              time_limit=time_limit, memory_mb=0, extra_modules=getattr(check, "modules", ()),
-                              fresh=(a.id, check.slug) if check.fresh else None)
+            child = run_child(ws, Path(tmp) / "scratch" / check.slug, ["check", a.id, check.slug],
+                              isolation=isolation, time_limit=time_limit, memory_mb=0)
             if child.status != "ok" or "error" in child.data or any("error" in c for c in child.data.get("cases", [])):
-                raise RuntimeError("the solution fails %s (%s): %s %s" % (check.name, child.status, child.detail,
-                                                                          json.dumps(child.data)[:2000]))
+                raise RuntimeError("the solution fails %s (%s): %s %s %s" % (
+                    check.name, child.status, child.detail, json.dumps(child.data)[:2000], child.output))
             if check.kind == "image":
                 from ..image import write_png
 
@@ -166,48 +170,43 @@ def _child_failure(child, time_limit, memory_mb) -> str:
     return "the test gave no usable answer: %s" % child.detail
 
 
+def _needs(check, a) -> tuple:
+    return tuple(check.needs) or a.files
+
+
 def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope", visible_only: bool = False,
           time_limit: float | None = None, memory_mb: int = 1024, output_limit: int = 1024 * 1024,
-          log=None) -> Result:
+          log=None, require_sandbox: bool = False, only=None) -> Result:
     """Grade ``submission`` (a folder, a zip file, or None for the solution) and, if
-    ``out_dir`` is given, write results.json, summary.txt and diffs/ there."""
+    ``out_dir`` is given, write results.json, summary.txt and diffs/ there. ``only``: the
+    slugs of the tests to run (the rest are left out of the result)."""
     a = get_assignment(assignment) if isinstance(assignment, str) else assignment
     time_limit = a.time_limit if time_limit is None else time_limit
+    isolation = choose_isolation(require_sandbox)
     start = time.monotonic()
     refs, ref_files = load_references(a)
     digest = _digest(ref_files)
-    result = Result(a.id, str(submission))
+    result = Result(a.id, str(submission), isolation=isolation)
     out_dir = Path(out_dir) if out_dir is not None else None
-    with tempfile.TemporaryDirectory(prefix="rtfgu-grade-") as tmp:
-        overlay, notes = build_overlay(a, submission, Path(tmp))
-        result.notes.extend(notes)
-        for check in checks_for(a.id):
-            if visible_only and check.visibility != "visible":
-                continue
-            child = run_child(overlay, Path(tmp) / "scratch" / check.slug, check.observe, time_limit=time_limit,
-                              memory_mb=memory_mb if check.memory_mb is None else check.memory_mb,
-                              output_limit=output_limit, extra_modules=getattr(check, "modules", ()),
-                              fresh=(a.id, check.slug) if check.fresh else None)
-            diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
-            image_path = None
-            if child.status != "ok":
-                fraction, lines = 0.0, [_child_failure(child, time_limit, memory_mb)]
-            elif check.kind == "image":
-                fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
-            else:
-                fraction, lines = judge_cases(check, child.data, refs[check.slug])
-            if child.output.strip() and fraction < 1.0:
-                lines.append("What your code printed:\n" + child.output)
-            message = "\n".join(lines) if lines else "all cases right"
-            if fraction >= 1.0 and check.kind != "image":
-                message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
-            test = TestResult(check.number, check.name, float(check.weight),
-                              round(check.weight * fraction, 4), check.visibility, message,
-                              str(image_path) if image_path else None)
-            result.tests.append(test)
-            if log:
-                log("%-5s %-70s %5.2f / %g  (%.2f s)" % (test.number, test.name[:70], test.score,
-                                                        test.max_score, child.seconds))
+    folder = reference_paths(a)[0]
+    hidden_refs = isolation == "unprivileged user"
+    if hidden_refs:  # the sandbox user may not read them; the grader holds them in memory
+        old_mode = folder.stat().st_mode
+        os.chmod(folder, 0o700)
+    try:
+        with tempfile.TemporaryDirectory(prefix="rtfgu-grade-") as tmp:
+            ws = prepare(a, submission, Path(tmp) / "work")
+            result.notes.extend(ws.notes)
+            for check in checks_for(a.id):
+                if visible_only and check.visibility != "visible":
+                    continue
+                if only is not None and check.slug not in only:
+                    continue
+                result.tests.append(_run_check(a, check, ws, Path(tmp), refs, out_dir, isolation,
+                                               time_limit, memory_mb, output_limit, log))
+    finally:
+        if hidden_refs:
+            os.chmod(folder, stat.S_IMODE(old_mode))
     now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
     if now != digest:
         for path, data in ref_files.items():
@@ -221,3 +220,35 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     if out_dir is not None:
         result.write(out_dir, fmt_name)
     return result
+
+
+def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_mb, output_limit, log):
+    broken = [ws.broken[f] for f in _needs(check, a) if f in ws.broken]
+    diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
+    image_path = None
+    seconds = 0.0
+    if broken:
+        fraction, lines = 0.0, ["this test runs a file that does not compile, so it was not run: " + b
+                                for b in broken]
+        output = ""
+    else:
+        child = run_child(ws, tmp / "scratch" / check.slug, ["check", a.id, check.slug], isolation=isolation,
+                          time_limit=time_limit, memory_mb=memory_mb if check.memory_mb is None else check.memory_mb,
+                          output_limit=output_limit)
+        seconds, output = child.seconds, child.output
+        if child.status != "ok":
+            fraction, lines = 0.0, [_child_failure(child, time_limit, memory_mb)]
+        elif check.kind == "image":
+            fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
+        else:
+            fraction, lines = judge_cases(check, child.data, refs[check.slug])
+    if output.strip() and fraction < 1.0:
+        lines.append("What your code printed:\n" + output)
+    message = "\n".join(lines) if lines else "all cases right"
+    if fraction >= 1.0 and check.kind != "image":
+        message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
+    test = TestResult(check.number, check.name, float(check.weight), round(check.weight * fraction, 4),
+                      check.visibility, message, str(image_path) if image_path else None)
+    if log:
+        log("%-5s %-70s %5.2f / %g  (%.2f s)" % (test.number, test.name[:70], test.score, test.max_score, seconds))
+    return test

@@ -32,6 +32,7 @@ class Result:
     tests: list = field(default_factory=list)
     execution_time: float = 0.0
     notes: list = field(default_factory=list)
+    isolation: str = ""          # how student code was isolated (rtfgu.grading.sandbox.ISOLATIONS)
 
     @property
     def score(self) -> float:
@@ -45,6 +46,9 @@ class Result:
         lines = ["%s: %g / %g points" % (self.assignment, self.score, self.max_score)]
         lines += self.notes
         return "\n".join(lines)
+
+    def isolation_line(self) -> str:
+        return "student code ran isolated by: %s" % (self.isolation or "unknown")
 
     def to_gradescope(self) -> dict:
         return {
@@ -80,7 +84,8 @@ class Result:
         for t in self.tests:
             if t.status != "passed":
                 lines += ["", "--- %s %s" % (t.number, t.name), t.output]
-        lines += ["", "total %g / %g   (%.1f s)" % (self.score, self.max_score, self.execution_time)]
+        lines += ["", "total %g / %g   (%.1f s)" % (self.score, self.max_score, self.execution_time),
+                  self.isolation_line()]
         return "\n".join(lines) + "\n"
 
     def write(self, out_dir, fmt: str = "gradescope") -> Path:

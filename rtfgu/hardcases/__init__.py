@@ -1,3 +1,4 @@
+# release: solves a03
 """Hard cases for ray/shape intersection: seeded families with exact truth, the
 paths they run through, and the evaluator that counts what each path gets wrong.
 

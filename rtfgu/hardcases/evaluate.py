@@ -1,3 +1,4 @@
+# release: solves a03
 """Run a family through a path and count what it gets wrong against the exact truth.
 
 A path is a callable ``path(kind, origins, directions, tmin, tmax, shapes) -> t`` over

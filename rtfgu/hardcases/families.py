@@ -1,3 +1,4 @@
+# release: solves a03
 """The seeded hard-case families, each with its exact truth.
 
 A family is a batch of rays, each with its own K shapes of one kind (K = 1 for most; 6 for a

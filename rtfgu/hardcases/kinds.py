@@ -1,3 +1,4 @@
+# release: solves a03
 """The shape kinds of the hard cases, each described once, keyed by its rtfgu.registry name.
 
 A hard-case shape is a row of the lecture constructor's arguments before the colour,

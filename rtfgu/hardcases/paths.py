@@ -1,3 +1,4 @@
+# release: solves a03
 """The paths a family runs through: the lecture layer (reference, float64), the numba kernels
 of rtfgu.kernels.robust (float64 and float32) and the WGSL programs (float32, see
 ``wgsl_path``), each with the slide or the robust formula of every kind that has it

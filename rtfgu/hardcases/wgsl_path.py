@@ -1,3 +1,4 @@
+# release: solves a03
 """The WGSL float32 path of the hard cases: rtfgu/wgsl/hardcase_main.wgsl runs a batch of
 rays, each against its own shape, with the kind's slide function (the registry's
 intersect_<kind>.wgsl, and the files of the kinds it uses) or its robust one

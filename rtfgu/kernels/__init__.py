@@ -1,3 +1,4 @@
+# release: solves a01 a02 a03 a04 a05
 """The numba path: the lecture layer's renderer as jitted kernels over the flat layout.
 
 ``render_numba(scene, width, height, precision)`` compiles the scene (rtfgu.layout, which

@@ -1,3 +1,4 @@
+# release: solves a02
 """gen_ray for the two cameras of the flat layout (lecture 01 "Orthographic Camera";
 02562 worksheet 1 "get_camera_ray"), operation for operation as in rtfgu/cameras/.
 

@@ -1,3 +1,4 @@
+# release: solves a03
 """Per-tile sphere culling for a pinhole camera's primary rays.
 
 All primary rays of a tile leave the eye inside one circular cone: around the mean of the

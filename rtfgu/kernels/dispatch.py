@@ -1,3 +1,4 @@
+# release: solves a03 a04 a05
 """The per-kind loops of the numba path, generated from rtfgu.registry.
 
 ``intersect_scene``, ``in_shadow``, ``shape_normal``, the light loop over every light kind

@@ -1,3 +1,4 @@
+# release: solves a03
 """What the generated dispatch module (rtfgu.kernels.dispatch) needs besides numba."""
 from __future__ import annotations
 

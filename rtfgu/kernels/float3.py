@@ -1,3 +1,4 @@
+# release: solves a01
 """Float3 for the kernels: a 3-tuple of floats, with the lecture's operators as functions.
 
 Every function does the operations of ``rtfgu.float3`` in the same order, so a kernel in

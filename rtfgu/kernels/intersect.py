@@ -1,3 +1,4 @@
+# release: solves a03
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
 "Ray-triangle intersection", Suffern ch. 19 "Disks"), operation for operation as in
 rtfgu/shapes/.

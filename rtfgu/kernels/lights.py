@@ -1,3 +1,4 @@
+# release: solves a04
 """sample_point_light (02562 "Sampling light in the shader", Kepler's inverse square law),
 operation for operation as rtfgu.lights.sample_point_light."""
 from __future__ import annotations

@@ -1,3 +1,4 @@
+# release: solves a03 a04 a05
 """The pixel loop on all cores: the lecture's render loop (lecture 01 "Rendering a Scene")
 and the 02562 path loop (``main_fs``), in tiles under ``prange``.
 

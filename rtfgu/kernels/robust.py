@@ -1,3 +1,4 @@
+# release: solves a03
 """numba robust single-ray intersections and the batch evaluators of rtfgu.hardcases.
 
 The robust plane and triangle tests and the spawned-ray offset perform rtfgu/robust.py's

@@ -1,3 +1,4 @@
+# release: solves a04 a05
 """The 02562 shaders, operation for operation as rtfgu.shading, as the terms the generated
 ``shade`` (rtfgu.kernels.dispatch) combines.
 

@@ -1,3 +1,4 @@
+// release: solves a02
 // OrthographicCamera::gen_ray (lecture 01, "Orthographic Camera"): parallel rays along -z
 // from the view plane z = hither, for (sx, sy) in [-1, 1]^2.
 fn get_camera_ray(sx: f32, sy: f32) -> Ray

@@ -1,3 +1,4 @@
+// release: solves a04
 // The light loop (02562, "Sampling light in the shader"), written once for every shader
 // that reflects light (rtfgu.registry ShaderKind.brdf): L_e + L_a, plus for every light the
 // shader's BRDF term times L_i (n . w_i), unless the light is below the surface or, with

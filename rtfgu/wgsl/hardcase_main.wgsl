@@ -1,3 +1,4 @@
+// release: solves a03
 // The hard-case program (rtfgu/hardcases/wgsl_path.py, run by rtfgu/wgsl/harness.py): one
 // invocation per ray, against the shape in the ray's row. Features: the shape kind
 // (sphere, plane, triangle, disk), the formula (slide, robust), and spawn (PBRT's offset

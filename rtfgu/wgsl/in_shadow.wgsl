@@ -1,3 +1,4 @@
+// release: solves a05
 // A shadow ray toward the light: is any shape hit strictly before it? It starts
 // SPAWN_EPSILON off the surface so that it does not hit the surface it leaves.
 fn in_shadow(position: vec3f, w_i: vec3f, dist: f32) -> bool

@@ -1,3 +1,4 @@
+// release: solves a04
 // A light sample (02562, "Sampling light in the shader"): incident radiance, unit direction
 // toward the light, and distance to it.
 struct Light {

@@ -1,3 +1,4 @@
+// release: solves a05
 // Perfect reflection: the path continues along w - 2 (w . n) n (rtfgu.shading.mirror).
 fn mirror(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 {

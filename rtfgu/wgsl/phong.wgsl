@@ -1,3 +1,4 @@
+// release: solves a05
 // Lambertian plus the normalised Phong lobe (02562 worksheet 3; rtfgu.shading.phong):
 //   f_r = rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s
 // with w_r = 2 (n . w_i) n - w_i, the mirrored light direction.

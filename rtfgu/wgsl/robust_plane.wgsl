@@ -1,4 +1,4 @@
-// release: solves a06
+// release: solves a03 a06
 // Robust ray-plane intersection: t = ((a - o) . n) / (d . n) (lecture 01, "Ray-Plane
 // Intersection") with a - o kept exact as the pair of TwoSum and both dot products
 // compensated: Dot2 of Ogita, Rump and Oishi, "Accurate Sum and Dot Product", SIAM J. Sci.

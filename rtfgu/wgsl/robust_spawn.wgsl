@@ -1,3 +1,4 @@
+// release: solves a03
 // Robust spawned rays after PBRT-v4, sections 6.8.5 ("Bounding Intersection Point Error")
 // and 6.8.6 ("Robust Spawned Ray Origins"); the Python and numba versions are
 // rtfgu/robust.py and rtfgu/kernels/robust.py. The render spawns with the slides'

@@ -1,3 +1,4 @@
+// release: solves a03 a06
 // Robust ray-sphere intersection after Haines, Guenther and Akenine-Moeller, "Precision
 // Improvements for Ray/Sphere Intersection", Ray Tracing Gems, chapter 7 (2019); the Python
 // and numba versions are rtfgu/robust.py and rtfgu/kernels/intersect.py.

@@ -1,3 +1,4 @@
+// release: solves a03 a06
 // Watertight ray-triangle intersection after Woop, Benthin and Wald, "Watertight
 // Ray/Triangle Intersection", JCGT 2(1), 2013 (non-culling); the Python and numba versions
 // are rtfgu/robust.py and rtfgu/kernels/robust.py.

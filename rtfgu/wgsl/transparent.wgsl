@@ -1,3 +1,4 @@
+// release: solves a05
 // Refraction by Snell's law with relative index eta = n1 / n2 (rtfgu.shading.transparent).
 // w . n < 0: the ray enters (eta = 1 / ior); otherwise it leaves (eta = ior, normal
 // flipped). With no real refracted direction (total internal reflection) it is mirrored.

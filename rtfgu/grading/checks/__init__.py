@@ -35,12 +35,25 @@ class Check:
     number: str = ""
     slug: str = ""
     tags: tuple = field(default_factory=tuple)
-    fresh: bool = False             # run in a newly started interpreter (GPU drivers do not survive fork)
+    fresh: bool = False             # kept for old callers: every test runs in a new interpreter
     memory_mb: int | None = None    # overrides the grader's limit (0: none; llvmpipe reserves much address space)
+    needs: tuple = ()               # the student files the test runs (relative to rtfgu/); () : all of them
+    assignment: str = ""
+
+    def hint_function(self):
+        """The hint: a function, or the name of one in the check's module (a hint that
+        computes a solution lives in a STAFF region, which a release leaves out: then none)."""
+        if not isinstance(self.hint, str):
+            return self.hint
+        import importlib
+
+        module = importlib.import_module("%s.%s" % (__name__, self.assignment.split("_", 1)[0]))
+        return getattr(module, self.hint, None)
 
 
 def register(assignment_id: str, checks) -> None:
     for i, check in enumerate(checks, start=1):
+        check.assignment = assignment_id
         check.number = "%s.%d" % (assignment_id.split("_", 1)[0][1:].lstrip("0") or "0", i)
         check.slug = "%02d_%s" % (i, _slug(check.name))
     CHECKS[assignment_id] = list(checks)
@@ -127,9 +140,10 @@ def judge_cases(check: Check, got, want):
         parts = ["%s should be %s, yours is %s" % (key, fmt(w["out"][key]), fmt(g.get("out", {}).get(key)))
                  for key in wrong]
         line = "- %s: %s." % (label, "; ".join(parts))
-        if check.hint is not None:
+        hint_function = check.hint_function()
+        if hint_function is not None:
             try:
-                hint = check.hint(w.get("in", {}), w["out"], g.get("out", {}))
+                hint = hint_function(w.get("in", {}), w["out"], g.get("out", {}))
             except Exception:  # a hint is a courtesy; a malformed observation must not stop grading
                 hint = None
             if hint:

@@ -84,6 +84,7 @@ def observe_ray(rt):
     return cases.result()
 
 
+# ### BEGIN HIDDEN
 def observe_unchanged(rt):
     """Operators return new vectors and leave their operands as they were."""
     cases = Cases()
@@ -99,6 +100,7 @@ def observe_unchanged(rt):
                     "b afterwards": vec(b, "b"), "a new vector": result is not a and result is not b}
         cases.run("%s with a = (2, -3, 6), b = (0.5, 0.25, -2)" % label, run)
     return cases.result()
+# ### END HIDDEN
 
 
 register("a01_float3_ray", [
@@ -107,6 +109,8 @@ register("a01_float3_ray", [
     Check("dot and cross products", 2, observe_dot_cross, hint=hint_dot_cross),
     Check("length_squared, length and normalize", 2, observe_length, hint=hint_length),
     Check("Ray: the point at parameter t, r(t) = o + t d", 1, observe_ray),
+    # ### BEGIN HIDDEN
     Check("operators return new vectors and leave their operands unchanged", 1, observe_unchanged,
           visibility="hidden"),
+    # ### END HIDDEN
 ])

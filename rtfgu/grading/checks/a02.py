@@ -27,8 +27,10 @@ def observe_ortho(rt):
     return _ortho_cases(rt, [(-2.0, 2.0, -1.0, 1.0)])
 
 
+# ### BEGIN HIDDEN
 def observe_ortho_hidden(rt):
     return _ortho_cases(rt, [(0.0, 4.0, -3.0, 3.0, 0.5, 10.0), (-1.0, 1.0, -1.0, 1.0, 1e-5, 100.0)])
+# ### END HIDDEN
 
 
 def hint_ortho(inputs, want, got):
@@ -71,9 +73,11 @@ def observe_pinhole(rt):
     return _pinhole_cases(rt, [((2.0, 1.5, 2.0), (0.0, 0.5, 0.0), (0.0, 1.0, 0.0), 1.0, 1.0)])
 
 
+# ### BEGIN HIDDEN
 def observe_pinhole_hidden(rt):
     return _pinhole_cases(rt, [((0.0, 0.0, 5.0), (0.0, 0.0, 0.0), (0.0, 1.0, 0.0), 2.0, 16 / 9),
                                ((-1.0, 3.0, 1.0), (1.0, 0.0, -2.0), (0.0, 1.0, 0.0), 1.5, 0.75)])
+# ### END HIDDEN
 
 
 def hint_pinhole(inputs, want, got):
@@ -85,13 +89,17 @@ def hint_pinhole(inputs, want, got):
 
 register("a02_cameras", [
     Check("OrthographicCamera.gen_ray: ray origin, direction and interval at pixel centres", 3,
-          observe_ortho, hint=hint_ortho),
+          observe_ortho, hint=hint_ortho, needs=("cameras/orthographic.py",)),
     Check("PinholeCamera.gen_ray: unit directions through the image plane", 3, observe_pinhole,
-          hint=hint_pinhole),
+          hint=hint_pinhole, needs=("cameras/pinhole.py",)),
     image_check("image: lecture 01 scene through your orthographic camera", 1, "lecture01_flat_colors"),
     image_check("image: ray directions of the 02562 default camera", 1, "default_ray_directions"),
+    # ### BEGIN HIDDEN
     Check("orthographic cameras with other bounds, hither and yon", 1, observe_ortho_hidden,
-          visibility="hidden", hint=hint_ortho),
+          visibility="hidden", hint=hint_ortho, needs=("cameras/orthographic.py",)),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
     Check("pinhole cameras with other eyes, camera constants and aspect ratios", 1,
-          observe_pinhole_hidden, visibility="hidden", hint=hint_pinhole),
+          observe_pinhole_hidden, visibility="hidden", hint=hint_pinhole, needs=("cameras/pinhole.py",)),
+    # ### END HIDDEN
 ])

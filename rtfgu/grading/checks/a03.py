@@ -104,14 +104,17 @@ def observe_sphere_interval(rt):
     ])
 
 
+# ### BEGIN HIDDEN
 def observe_sphere_long_directions(rt):
     return _sphere_cases(rt, [
         ((0, 0, -3), 1.0, (0, 0, 0), (0, 0, -2), 1e-5, INF),
         ((1, 2, -5), 2.0, (0, 0, 0), (0.6, 1.2, -3.0), 1e-5, INF),
         ((0, 0, -3), 1.0, (0.5, 0, 0), (0, 0, -0.25), 1e-5, INF),
     ])
+# ### END HIDDEN
 
 
+# ### BEGIN STAFF
 def _roots(inputs, disc_sign=-1.0):
     o, d, c, r = inputs["o"], inputs["d"], inputs["center"], inputs["radius"]
     oc = [o[i] - c[i] for i in range(3)]
@@ -123,8 +126,10 @@ def _roots(inputs, disc_sign=-1.0):
         return a, b, cc, disc, ()
     e = math.sqrt(disc)
     return a, b, cc, disc, ((-b - e) / (2 * a), (-b + e) / (2 * a))
+# ### END STAFF
 
 
+# ### BEGIN STAFF
 def hint_sphere(inputs, want, got):
     t = got.get("ray.tmax")
     a, b, c, disc, roots = _roots(inputs)
@@ -146,6 +151,7 @@ def hint_sphere(inputs, want, got):
     if isinstance(t, float) and a != 1.0 and any(abs(t - w * a) < 1e-6 * max(1.0, abs(t)) for w in roots):
         return "your t is off by the factor d . d: keep a = d . d in the quadratic (the direction need not be a unit vector)"
     return None
+# ### END STAFF
 
 
 # --- triangle ------------------------------------------------------------------------
@@ -214,6 +220,7 @@ def hint_normals(inputs, want, got):
 
 # --- the closest hit over many shapes -------------------------------------------------------
 
+# ### BEGIN HIDDEN
 def observe_closest(rt):
     """The slide's inner loop: every shape in turn, the last one that reports a hit is the
     closest. All shapes lie in front of the rays (z < 0, rays from z = 5 toward -z)."""
@@ -236,18 +243,28 @@ def observe_closest(rt):
             return {"closest shape": last, "ray.tmax": num(ray.tmax, "ray.tmax")}
         cases.run("the ray toward (%g, %g, 0) through two spheres, a plane, a triangle and a sphere" % (px, py), run)
     return cases.result()
+# ### END HIDDEN
 
 
 register("a03_intersections", [
-    Check("Plane.intersect_p: hits, misses and the ray interval", 2, observe_plane, hint=_interval_hint),
-    Check("Sphere.intersect_p: rays that hit", 2, observe_sphere_hits, hint=hint_sphere),
-    Check("Sphere.intersect_p: rays that miss", 1, observe_sphere_misses, hint=hint_sphere),
-    Check("Sphere.intersect_p: only t in [tmin, tmax) counts", 2, observe_sphere_interval, hint=hint_sphere),
-    Check("Triangle.intersect_p: inside, outside and the ray interval", 2, observe_triangle, hint=hint_triangle),
+    Check("Plane.intersect_p: hits, misses and the ray interval", 2, observe_plane, hint=_interval_hint,
+          needs=("shapes/plane.py",)),
+    Check("Sphere.intersect_p: rays that hit", 2, observe_sphere_hits, hint="hint_sphere",
+          needs=("shapes/sphere.py",)),
+    Check("Sphere.intersect_p: rays that miss", 1, observe_sphere_misses, hint="hint_sphere",
+          needs=("shapes/sphere.py",)),
+    Check("Sphere.intersect_p: only t in [tmin, tmax) counts", 2, observe_sphere_interval, hint="hint_sphere",
+          needs=("shapes/sphere.py",)),
+    Check("Triangle.intersect_p: inside, outside and the ray interval", 2, observe_triangle, hint=hint_triangle,
+          needs=("shapes/triangle.py",)),
     Check("normal_at: unit normals of sphere, plane and triangle", 1, observe_normals, hint=hint_normals),
     image_check("image: lecture 01 scene, the closest hit in flat colours", 2, "lecture01_flat_colors"),
     image_check("image: 02562 default scene in flat colours", 2, "default_flat_colors"),
+    # ### BEGIN HIDDEN
     Check("the closest hit among five shapes", 2, observe_closest, visibility="hidden", hint=_interval_hint),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
     Check("Sphere.intersect_p with directions that are not unit vectors", 1, observe_sphere_long_directions,
-          visibility="hidden", hint=hint_sphere),
+          visibility="hidden", hint="hint_sphere", needs=("shapes/sphere.py",)),
+    # ### END HIDDEN
 ])

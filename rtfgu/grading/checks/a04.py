@@ -95,6 +95,7 @@ def observe_lambert_below(rt):
     ])
 
 
+# ### BEGIN HIDDEN
 def observe_lambert_more(rt):
     return _lambert_cases(rt, [
         ([((0, 1, 0), PI3), ((2, 1, 0), (1, 2, 3))], (0.5, 0, 0), (0, 1, 0), (0.8, 0.6, 0.4), (0, 0, 0)),
@@ -102,6 +103,7 @@ def observe_lambert_more(rt):
         ([((1, 1, 1), (2, 2, 2)), ((-1, 1, 1), (2, 0, 2)), ((0, -1, 0), (9, 9, 9))], (0, 0, 0),
          (0, 1, 1), (0.3, 0.6, 0.9), (0, 0, 0)),
     ])
+# ### END HIDDEN
 
 
 def hint_lambert(inputs, want, got):
@@ -135,6 +137,8 @@ register("a04_diffuse", [
     Check("lambertian: a light below the surface adds nothing", 1, observe_lambert_below, hint=hint_lambert),
     image_check("image: 02562 default scene, Lambertian, no shadows", 2,
                 lambda rt: rt.scenes.default_scene.default_scene(rt.LAMBERTIAN, rt.LAMBERTIAN, shadows=False)),
+    # ### BEGIN HIDDEN
     Check("lambertian: several lights and emission", 2, observe_lambert_more, visibility="hidden",
           hint=hint_lambert),
+    # ### END HIDDEN
 ])

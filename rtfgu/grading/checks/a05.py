@@ -169,6 +169,7 @@ def _shaded(sphere_shader_name, shadows):
     return build
 
 
+# ### BEGIN HIDDEN
 def observe_occluders_more(rt):
     cases = Cases()
     F = rt.Float3
@@ -183,6 +184,7 @@ def observe_occluders_more(rt):
         _shadow_case(rt, cases, "in_shadow from (%g, %g, %g) toward a light at (%g, %g, %g) among two spheres, "
                      "a triangle and a plane" % (tuple(point) + tuple(light)), shapes, point, light)
     return cases.result()
+# ### END HIDDEN
 
 
 register("a05_shadows_phong_mirror_refraction", [
@@ -197,6 +199,10 @@ register("a05_shadows_phong_mirror_refraction", [
     image_check("image: Phong sphere (no shadows)", 1, _shaded("PHONG", False)),
     image_check("image: mirror sphere (no shadows)", 1, _shaded("MIRROR", False)),
     image_check("image: refractive sphere (no shadows)", 1, _shaded("TRANSPARENT", False)),
+    # ### BEGIN HIDDEN
     image_check("image: glossy sphere (no shadows)", 1, _shaded("GLOSSY", False), visibility="hidden"),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
     Check("in_shadow among several shapes", 1, observe_occluders_more, visibility="hidden", hint=hint_shadow),
+    # ### END HIDDEN
 ])

@@ -12,7 +12,7 @@ import math
 from pathlib import Path
 
 from . import Check, image_check, register
-from .a03 import TRIANGLE, hint_sphere
+from .a03 import TRIANGLE
 from .child import StudentError
 
 FAR = 1.0e30   # rtfgu.layout.FAR: WGSL has no infinity
@@ -146,11 +146,15 @@ def observe_sphere(rt):
     return _cases(rt, "intersect_sphere", specs)
 
 
+# ### BEGIN STAFF
 def hint_sphere_wgsl(inputs, want, got):
+    from .a03 import hint_sphere
+
     def as_a03(out):
         return {"returned": out.get("returned"),
                 "ray.tmax": out.get("hit.dist", inputs["tmax"]) if out.get("returned") else inputs["tmax"]}
     return hint_sphere(inputs, as_a03(want), as_a03(got))
+# ### END STAFF
 
 
 def observe_triangle(rt):
@@ -180,7 +184,7 @@ OPTIONS = dict(fresh=True, memory_mb=0, rtol=1e-4, atol=1e-5)
 register("a06_wgsl_intersections", [
     Check("intersect_plane in WGSL: hits, misses, the interval and the HitInfo", 2, observe_plane, **OPTIONS),
     Check("intersect_sphere in WGSL: near and far roots, misses and [tmin, tmax)", 3, observe_sphere,
-          hint=hint_sphere_wgsl, **OPTIONS),
+          hint="hint_sphere_wgsl", **OPTIONS),
     Check("intersect_triangle in WGSL: inside, outside and the interval", 2, observe_triangle, **OPTIONS),
     image_check("image: 02562 default scene in flat colours, rendered by your WGSL", 2, "default_flat_colors",
                 size=(32, 32), render=_render_wgsl, fresh=True, memory_mb=0),
