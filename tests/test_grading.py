@@ -68,7 +68,12 @@ PLANTED = [
                                       "3.7": "pixels", "3.8": "pixels", "3.10": "discriminant"}),
     ("a03_missing_tmin", "a03", {"3.4": "less than ray.tmin"}),
     ("a03_unnormalised_normal", "a03", {"3.6": "unit vector"}),
-    ("a02_half_pixel_offset", "a02", {"2.1": "half-pixel offset", "2.5": "half-pixel offset"}),
+    ("a03_sphere_a_is_one", "a03", {"3.2": "as if a = d . d were 1", "3.9": "should be",
+                                    "3.10": "as if a = d . d were 1"}),
+    ("a03_triangle_parallel_hits", "a03", {"3.5": "in its plane, parallel to it"}),
+    ("a03_triangle_open_edges", "a03", {"3.5": "beta + gamma = 1"}),
+    ("a03_triangle_closed_tmax", "a03", {"3.5": "t = tmax = 3"}),
+    ("a02_half_pixel_offset", "a02", {"2.1": "half-pixel offset", "2.3": "pixels", "2.5": "half-pixel offset"}),
     ("a04_missing_cosine", "a04", {"4.2": "cosine term", "4.4": "pixels", "4.5": "should be"}),
     ("a05_shadow_acne", "a05", {"5.2": "shadow acne", "5.6": "pixels"}),
 ]
@@ -136,11 +141,18 @@ def test_memory_printing_and_wrong_types_cost_only_their_tests(tmp_path):
 
 
 def test_a_submission_cannot_change_the_reference_files(tmp_path, monkeypatch):
+    # With rlimits only (no sandbox) student code can reach the checkout: the grader notices
+    # the change, restores the file and scores the submission 0.
+    from rtfgu.grading import sandbox
+
     target = REFERENCE_DIR / "a03_intersections" / "observations.json"
     before = target.read_bytes()
-    monkeypatch.setenv("RTFGU_ATTACK_PATH", str(target))
+    child_env = sandbox._child_env
+    monkeypatch.setattr(sandbox, "_child_env", lambda *a: dict(child_env(*a), RTFGU_ATTACK_PATH=str(target)))
+    monkeypatch.setenv("RTFGU_ISOLATION", "rlimits")
     result = grade("a03", make_submission("a03_writes_references", tmp_path / "sub"), tmp_path / "out",
                    time_limit=LIMIT)
+    assert result.isolation == "rlimits only"
     assert target.read_bytes() == before
     assert result.score == 0
     assert any("reference files" in note for note in result.notes)

@@ -115,7 +115,7 @@ A02 = Assignment(
     slides=("Lecture 01: Camera", "Lecture 01: Orthographic Camera (two slides)",
             "Lecture 01: Rendering a Scene",
             "02562 week 1: Rays in theory and in practice; main_fs (uv from coords)"),
-    images=("lecture01_flat_colors", "default_ray_directions"),
+    images=("default_ray_directions",),
 )
 
 A03 = Assignment(

@@ -3,17 +3,14 @@ from __future__ import annotations
 
 from ..float3 import Float3, as_float3, dot, normalize
 from ..ray import Ray
-from .shape import Shape
+from .shape import Shape, nonzero_vector
 
 
 class Plane(Shape):
     def __init__(self, point, normal, color, material=None):
         super().__init__(color, material)
         self.point = as_float3(point, "Plane.point")
-        normal = as_float3(normal, "Plane.normal")
-        if normal.length_squared() == 0.0:
-            raise ValueError("Plane.normal must be non-zero")
-        self.normal = normal
+        self.normal = nonzero_vector(normal, "Plane.normal")
 
     def intersect_p(self, ray: Ray) -> bool:
         # TODO a03: Plane.intersect_p

@@ -5,20 +5,14 @@ import math
 
 from ..float3 import Float3, as_float3, dot, normalize
 from ..ray import Ray
-from .shape import Shape
+from .shape import Shape, positive
 
 
 class Sphere(Shape):
     def __init__(self, center, radius: float, color, material=None):
         super().__init__(color, material)
         self.center = as_float3(center, "Sphere.center")
-        try:
-            ok = math.isfinite(radius) and radius > 0
-        except TypeError:
-            ok = False
-        if not ok:
-            raise ValueError("Sphere.radius must be finite and > 0, got %r" % (radius,))
-        self.radius = float(radius)
+        self.radius = positive(radius, "Sphere.radius")
 
     def intersect_p(self, ray: Ray) -> bool:
         # TODO a03: Sphere.intersect_p

@@ -27,6 +27,23 @@ def observe_ortho(rt):
     return _ortho_cases(rt, [(-2.0, 2.0, -1.0, 1.0)])
 
 
+def _origin_image(rt, scene, width, height):
+    """Each pixel's ray origin as a colour: (x, y) mapped from [left, right] x [bottom, top]
+    to red and green. It shows the orthographic camera alone (the lecture 01 scene's shapes
+    need assignment 3's intersections)."""
+    import numpy as np
+
+    camera = scene.camera
+    image = np.zeros((height, width, 3))
+    for iy in range(height):
+        for ix in range(width):
+            ray = camera.gen_ray(2 * (ix + 0.5) / width - 1, 2 * (iy + 0.5) / height - 1)
+            image[height - 1 - iy, ix] = ((ray.origin.x - camera.left) / (camera.right - camera.left),
+                                          (ray.origin.y - camera.bottom) / (camera.top - camera.bottom),
+                                          0.5 + 0.5 * ray.direction.z)
+    return image
+
+
 # ### BEGIN HIDDEN
 def observe_ortho_hidden(rt):
     return _ortho_cases(rt, [(0.0, 4.0, -3.0, 3.0, 0.5, 10.0), (-1.0, 1.0, -1.0, 1.0, 1e-5, 100.0)])
@@ -92,7 +109,8 @@ register("a02_cameras", [
           observe_ortho, hint=hint_ortho, needs=("cameras/orthographic.py",)),
     Check("PinholeCamera.gen_ray: unit directions through the image plane", 3, observe_pinhole,
           hint=hint_pinhole, needs=("cameras/pinhole.py",)),
-    image_check("image: lecture 01 scene through your orthographic camera", 1, "lecture01_flat_colors"),
+    image_check("image: ray origins of the lecture 01 orthographic camera", 1, "lecture01_flat_colors",
+                render=_origin_image, needs=("cameras/orthographic.py",)),
     image_check("image: ray directions of the 02562 default camera", 1, "default_ray_directions"),
     # ### BEGIN HIDDEN
     Check("orthographic cameras with other bounds, hither and yon", 1, observe_ortho_hidden,

@@ -150,6 +150,13 @@ def hint_sphere(inputs, want, got):
         return "you returned the far root; the near one, (-b - sqrt(b^2 - 4ac)) / 2a, comes first when it is in range"
     if isinstance(t, float) and a != 1.0 and any(abs(t - w * a) < 1e-6 * max(1.0, abs(t)) for w in roots):
         return "your t is off by the factor d . d: keep a = d . d in the quadratic (the direction need not be a unit vector)"
+    if isinstance(t, float) and a != 1.0:
+        disc_one = b * b - 4 * c
+        if disc_one >= 0:
+            e = math.sqrt(disc_one)
+            if any(abs(t - w) < 1e-6 * max(1.0, abs(t)) for w in ((-b - e) / 2, (-b + e) / 2)):
+                return ("your t solves t^2 + b t + c = 0, as if a = d . d were 1; here d . d = %.6g: keep a in "
+                        "the quadratic, the direction need not be a unit vector" % a)
     return None
 # ### END STAFF
 
@@ -174,8 +181,19 @@ def observe_triangle(rt):
         _hit_case(rt, cases, label, make, above, to((v[1][0] + 0.3, v[1][1], v[1][2] + 0.05), above))
         _hit_case(rt, cases, label, make, above, to(above, centroid))                      # pointing away
         _hit_case(rt, cases, label, make, above, to(centroid, above), 1e-5, 0.5)            # beyond tmax
-    _hit_case(rt, cases, "the triangle %s" % (TRIANGLE,), lambda: rt.Triangle(
-        F(*TRIANGLE[0]), F(*TRIANGLE[1]), F(*TRIANGLE[2]), F(1, 1, 1)), (0.9, 0.9, 0), (0, 0, -1))
+    def slide_triangle():
+        return rt.Triangle(F(*TRIANGLE[0]), F(*TRIANGLE[1]), F(*TRIANGLE[2]), F(1, 1, 1))
+    label = "the triangle %s" % (TRIANGLE,)
+    _hit_case(rt, cases, label, slide_triangle, (0.9, 0.9, 0), (0, 0, -1))
+    # The boundaries the slides define, with inputs whose arithmetic is exact: a ray in the
+    # triangle's plane (w . n = 0) misses; a point on the edge v1 v2 (beta + gamma = 1
+    # exactly) is inside; a hit at t = tmax is outside [tmin, tmax).
+    _hit_case(rt, cases, label + " (a ray in its plane, parallel to it)", slide_triangle,
+              (-2, -0.5, -3), (1, 0, 0))
+    _hit_case(rt, cases, label + " (through the edge v1 v2, beta + gamma = 1)", slide_triangle,
+              (0.5, 0, 0), (0, 0, -1))
+    _hit_case(rt, cases, label + " (the hit at exactly t = tmax = 3)", slide_triangle,
+              (0, 0, 0), (0, 0, -1), 1e-5, 3.0)
     return cases.result()
 
 
