@@ -12,6 +12,7 @@ OUTPUT_LIMIT = 8000   # characters of message per test
 
 @dataclass
 class TestResult:
+    __test__ = False  # not a pytest test class
     number: str
     name: str
     max_score: float
@@ -50,30 +51,53 @@ class Result:
     def isolation_line(self) -> str:
         return "student code ran isolated by: %s" % (self.isolation or "unknown")
 
+    def visible_output(self) -> str:
+        """The result as a student may see it before grades are published: the visible tests'
+        points only, and that hidden tests exist (not what they scored)."""
+        visible = [t for t in self.tests if t.visibility == "visible"]
+        lines = ["%s: %g / %g points in the visible tests" % (
+            self.assignment, round(sum(t.score for t in visible), 4), round(sum(t.max_score for t in visible), 4))]
+        hidden = len(self.tests) - len(visible)
+        if hidden:
+            lines.append("%d hidden test(s) are shown when the grades are published" % hidden)
+        return "\n".join(lines + self.notes)
+
     def to_gradescope(self) -> dict:
+        # Gradescope's results.json (gradescope-autograders.readthedocs.io, "Autograder
+        # Specifications"): a test's "visibility" is visible, hidden, after_due_date or
+        # after_published. Hidden tests are after_published, shown with their scores once the
+        # staff publish the grades; "hidden" would hide them from the students for good. The
+        # top-level output a student sees at once names only the visible tests' points.
         return {
             "score": self.score,
             "execution_time": round(self.execution_time, 3),
-            "output": self.output(),
+            "output": self.visible_output(),
             "visibility": "visible",
             "stdout_visibility": "hidden",
+            "extra_data": {"isolation": self.isolation},
             "tests": [{"name": t.name, "number": t.number, "score": round(t.score, 4),
                        "max_score": t.max_score, "status": t.status, "output": t.output[:OUTPUT_LIMIT],
-                       "visibility": t.visibility} for t in self.tests],
+                       "visibility": "visible" if t.visibility == "visible" else "after_published"}
+                      for t in self.tests],
         }
 
     def to_prairielearn(self) -> dict:
         tests = []
         for t in self.tests:
+            hidden = t.visibility != "visible"
+            # PrairieLearn shows every test's message to the student: a hidden test's says
+            # only that it is hidden.
             entry = {"name": t.name, "description": "test %s" % t.number, "points": round(t.score, 4),
-                     "max_points": t.max_score, "message": t.output[:OUTPUT_LIMIT], "output": ""}
-            if t.image and Path(t.image).is_file():
+                     "max_points": t.max_score,
+                     "message": "a hidden test" if hidden else t.output[:OUTPUT_LIMIT], "output": ""}
+            if t.image and Path(t.image).is_file() and not hidden:
                 data = base64.b64encode(Path(t.image).read_bytes()).decode()
                 entry["images"] = [{"label": "yours | reference | difference",
                                     "url": "data:image/png;base64," + data}]
             tests.append(entry)
         return {"gradable": True, "score": self.score / self.max_score if self.max_score else 0.0,
-                "message": self.output(), "output": "", "tests": tests}
+                "message": self.visible_output(), "output": "", "tests": tests,
+                "isolation": self.isolation}
 
     def summary(self) -> str:
         width = max([len(t.name) for t in self.tests] + [10])
