@@ -4,7 +4,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: render test venv clean bench montage assignments check grade grade-all autograder-zip
+.PHONY: render test venv clean bench montage assignments check grade grade-all autograder-zip release
 
 # Create the virtual environment and install the package (editable) with its test extras.
 # The stamp depends on setup.cfg, so a second run reinstalls nothing unless it changed.
@@ -72,3 +72,7 @@ grade-all: $(STAMP) $(SANDBOX_STAMP)
 
 autograder-zip: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m rtfgu.grading autograder-zip $(A)
+
+# A student repository without any solution: `make release OUT=DIR [REVEAL=a01,a02]`.
+release: $(STAMP)
+	$(PY) -m rtfgu.grading release $(OUT) $(if $(REVEAL),--reveal $(REVEAL))

@@ -7,6 +7,8 @@ the top (+y), before gamma. The slide's loop counts iy from the bottom (sy = -1)
 """
 from __future__ import annotations
 
+import importlib.util
+
 import numpy as np
 
 from .float3 import Float3
@@ -95,6 +97,9 @@ def render(scene, width: int, height: int, backend: str = "reference",
                              % formula)
         image = render_reference(scene, width, height, progress)
     elif backend == "numba":
+        if importlib.util.find_spec(__package__ + ".kernels") is None:
+            raise ValueError("backend: the numba path is not part of this release of rtfgu (it computes "
+                             "the assignments' functions again); render with backend='reference'")
         from .kernels import render_numba  # numba is imported only when asked for
         image = render_numba(scene, width, height, precision, formula=formula)
     elif backend == "wgpu":

@@ -94,6 +94,9 @@ def main(argv=None) -> int:
     p.add_argument("--out", required=True)
     p.add_argument("--processes", type=int, default=None, help="default: all cores")
     grading_options(p)
+    p = sub.add_parser("release", help="write a student repository (no solution in it) into OUT")
+    p.add_argument("out")
+    p.add_argument("--reveal", default="", help="assignments whose solutions the release carries, e.g. a01,a02")
     p = sub.add_parser("autograder-zip", help="build the Gradescope autograder bundle")
     p.add_argument("assignment")
     p.add_argument("--out", default=None, help="default dist/autograder-<id>.zip")
@@ -162,6 +165,17 @@ def main(argv=None) -> int:
                              require_sandbox=args.require_sandbox,
                              log=lambda line: print(line, flush=True))
             print(path)
+        elif args.command == "release":
+            from .release import write_release
+
+            reveal = tuple(r.strip() for r in args.reveal.split(",") if r.strip())
+            for name in reveal:
+                get_assignment(name)
+            if Path(args.out).exists() and any(Path(args.out).iterdir()):
+                parser.exit(2, "error: %s is not empty\n" % args.out)
+            written = write_release(args.out, reveal)
+            print("wrote a student release (%d files, revealed: %s) into %s"
+                  % (len(written), ", ".join(reveal) or "none", args.out))
         elif args.command == "autograder-zip":
             from .autograder import build_zip
 

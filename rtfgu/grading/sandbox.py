@@ -217,7 +217,8 @@ def prepare(assignment, submission, tmp, package_dir: Path = PACKAGE_DIR, reveal
 
 def find_bwrap() -> str | None:
     candidates = [os.environ.get("RTFGU_BWRAP"), shutil.which("bwrap"),
-                  str(Path(sys.prefix) / "sandbox" / "usr" / "bin" / "bwrap")]
+                  str(Path(sys.prefix) / "sandbox" / "usr" / "bin" / "bwrap"),
+                  str(Path(sys.executable).parent.parent / "sandbox" / "usr" / "bin" / "bwrap")]
     for candidate in candidates:
         if candidate and os.access(candidate, os.X_OK):
             return candidate
@@ -290,7 +291,9 @@ def choose_isolation(require_sandbox: bool = False) -> str:
 
 
 def _site_dirs() -> list:
-    dirs = list(site.getsitepackages()) + [sysconfig.get_paths()["purelib"], sysconfig.get_paths()["platlib"]]
+    """The folders the child imports numpy, Pillow (and wgpu) from: the grader's own."""
+    dirs = [p for p in sys.path if p.rstrip("/").endswith(("site-packages", "dist-packages"))]
+    dirs += list(site.getsitepackages()) + [sysconfig.get_paths()["purelib"], sysconfig.get_paths()["platlib"]]
     out = []
     for d in dirs:
         if d and os.path.isdir(d) and d not in out:

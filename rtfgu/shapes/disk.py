@@ -8,7 +8,7 @@ edges belong to the triangle).
 """
 from __future__ import annotations
 
-from ..float3 import Float3, as_float3, normalize
+from ..float3 import Float3, as_float3
 from ..ray import Ray
 from .plane import Plane
 from .shape import Shape, nonzero_vector, positive
@@ -33,4 +33,4 @@ class Disk(Shape):
         return False
 
     def normal_at(self, position: Float3) -> Float3:
-        return normalize(self.normal)
+        return self._plane.normal_at(position)

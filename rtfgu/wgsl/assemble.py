@@ -139,7 +139,11 @@ SCENE_BUFFER_KINDS = ("uniform", "storage")
 
 
 def read_piece(name: str) -> str:
-    return resources.files(__package__).joinpath(name).read_text(encoding="utf-8")
+    piece = resources.files(__package__).joinpath(name)
+    if not piece.is_file():
+        raise ValueError("rtfgu/wgsl/%s is not part of this release of rtfgu (it computes an assignment's "
+                         "function again); render with backend='reference'" % name)
+    return piece.read_text(encoding="utf-8")
 
 
 def _packed_index(values: np.ndarray) -> np.ndarray:
