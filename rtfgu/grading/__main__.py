@@ -125,10 +125,15 @@ def main(argv=None) -> int:
                 print(path)
         elif args.command == "references":
             from .grader import compute_references
+            from .mistakes import write_known
 
             for name in args.assignments or list(ASSIGNMENTS):
-                for path in compute_references(get_assignment(name)):
+                a = get_assignment(name)
+                for path in compute_references(a):
                     print(path)
+                known = write_known(a)
+                if known is not None:
+                    print(known)
         elif args.command in ("grade", "check"):
             from .grader import grade
 

@@ -24,9 +24,10 @@ import shutil
 from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
-from .generate import PACKAGE_DIR, strip_regions, transform
+from .generate import PACKAGE_DIR, strip_regions, transform  # noqa: F401  (strip_regions: the release's checks)
 
 MARKER = re.compile(r"^\s*(?:#|//)\s*release: solves\s+(?P<ids>[a0-9 ]+?)\s*$")
+MARKER_LINES = 5        # a marker sits on one of a file's first lines
 SKIP_NAMES = {"__pycache__", "__generated__", ".pytest_cache"}
 SKIP_SUFFIXES = (".pyc", ".nbi", ".nbc")
 TEXT_SUFFIXES = (".py", ".wgsl")
@@ -42,12 +43,13 @@ def revealed_numbers(reveal) -> set:
 
 
 def solves(text: str) -> set:
-    """The assignment numbers a file's ``release: solves`` first line names (empty: none)."""
-    first = text.split("\n", 1)[0]
-    m = MARKER.match(first)
-    if not m:
-        return set()
-    return {get_assignment(i).number for i in m.group("ids").split()}
+    """The assignment numbers a file's ``release: solves`` line (among its first
+    MARKER_LINES lines) names (empty: none)."""
+    for line in text.split("\n", MARKER_LINES)[:MARKER_LINES]:
+        m = MARKER.match(line)
+        if m:
+            return {get_assignment(i).number for i in m.group("ids").split()}
+    return set()
 
 
 def _owner(relpath: str) -> str | None:
@@ -117,12 +119,26 @@ def build_package(dest, reveal=(), package_dir: Path = PACKAGE_DIR) -> Path:
 
 
 def probe_files(package_dir: Path = PACKAGE_DIR, keep_hidden: bool = True) -> dict:
-    """relpath (under checks/) -> text of the code that runs next to student code: the check
-    modules without their STAFF regions (and without HIDDEN ones unless ``keep_hidden``)."""
-    folder = Path(package_dir) / "grading" / "checks"
-    tags = ("STAFF",) if keep_hidden else ("STAFF", "HIDDEN")
-    return {p.name: strip_regions(p.read_text(), tags, p.name)
-            for p in sorted(folder.glob("*.py"))}
+    """name -> text of the code that runs next to student code: the modules of
+    rtfgu/grading/probes (without the hidden tests' ``*_hidden.py`` unless ``keep_hidden``)
+    and ``tests.json``, each test's probe by assignment and slug (boot.py's ``check``
+    command reads it). Copied into one folder, they form a package of any name."""
+    from .checks import checks_for
+
+    folder = Path(package_dir) / "grading" / "probes"
+    files = {p.name: p.read_text() for p in sorted(folder.glob("*.py"))
+             if keep_hidden or not is_hidden_probe(p.stem)}
+    table = {}
+    for a in ASSIGNMENTS.values():
+        table[a.id] = {c.slug: list(c.probe) for c in checks_for(a.id)
+                       if keep_hidden or c.visibility == "visible"}
+    files["tests.json"] = json.dumps(table, indent=1, sort_keys=True) + "\n"
+    return files
+
+
+def is_hidden_probe(module: str) -> bool:
+    """Whether probe module ``module`` holds hidden tests' probes (never in a release)."""
+    return module.endswith("_hidden")
 
 
 # --- the student repository ---------------------------------------------------------------

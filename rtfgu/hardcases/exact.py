@@ -1,4 +1,4 @@
-# release: solves a03
+# release: solves a01 a03
 """Exact ground truth: rational arithmetic (``fractions.Fraction``) for every decision, and
 50-digit ``mpmath`` only for the square root of a sphere's hit distance.
 

@@ -1,16 +1,25 @@
-"""The tests of every assignment, as observe / judge pairs.
+"""The tests of every assignment: a probe that runs next to the student's code, and the
+judging and hints that stay in the grader.
 
-A check's ``observe(rt)`` runs in the sandboxed child with ``rt`` the student's copy of the
-package (the submission overlaid on a clean copy); it returns plain JSON data: the inputs
-it tried and what the student's code gave back. ``judge`` runs in the grader, compares
-that with the reference observation (the same ``observe`` run on the solution, stored in
-``rtfgu/grading/reference``) and says in words what differs. Nothing the student's code
-does can reach the comparison: it only ever sees numbers.
+A check's ``probe`` = (module, function, kwargs) names a function of
+``rtfgu.grading.probes`` (rtfgu/grading/probes/): it runs in the sandboxed child with the
+student's copy of the package and returns plain JSON data, the inputs it tried and what the
+student's code gave back. ``judge_cases`` (or the grader's image judge) runs here, compares
+that with the reference observation (the same probe run on the solution, stored in
+``rtfgu/grading/reference``) and says in words what differs; a hint compares numbers only
+(the known mistakes of rtfgu.grading.mistakes arrive precomputed as ``inputs["known"]``).
+Nothing the student's code does can reach the comparison: it only ever sees numbers.
+
+A hidden test is registered between ``# ### BEGIN HIDDEN`` and ``# ### END HIDDEN`` lines,
+after every visible test of its assignment, and its probe lives in ``probes/aNN_hidden.py``:
+a student release leaves both out.
 """
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 
 CHECKS = {}
 
@@ -25,10 +34,10 @@ IMAGE_FRACTION = 0.005
 class Check:
     name: str
     weight: float
-    observe: object                 # observe(rt) -> JSON data (runs in the child)
+    probe: tuple                    # (module of rtfgu.grading.probes, function, kwargs): runs in the child
     visibility: str = "visible"     # "visible" or "hidden"
     kind: str = "cases"             # "cases" or "image"
-    hint: object = None             # hint(inputs, expected, got) -> str | None
+    hint: object = None             # hint(inputs, expected, got) -> str | None (grader side)
     rtol: float = 1e-6
     atol: float = 1e-9
     size: tuple = (48, 48)          # image tests
@@ -38,17 +47,21 @@ class Check:
     fresh: bool = False             # kept for old callers: every test runs in a new interpreter
     memory_mb: int | None = None    # overrides the grader's limit (0: none; llvmpipe reserves much address space)
     needs: tuple = ()               # the student files the test runs (relative to rtfgu/); () : all of them
+    known: str = ""                 # a function of rtfgu.grading.mistakes: the known mistakes per case
     assignment: str = ""
 
-    def hint_function(self):
-        """The hint: a function, or the name of one in the check's module (a hint that
-        computes a solution lives in a STAFF region, which a release leaves out: then none)."""
-        if not isinstance(self.hint, str):
-            return self.hint
-        import importlib
+    def __post_init__(self):
+        if len(self.probe) == 2:
+            self.probe = (self.probe[0], self.probe[1], {})
+        module, function, kwargs = self.probe
+        self.probe = (module, function, dict(kwargs))
 
-        module = importlib.import_module("%s.%s" % (__name__, self.assignment.split("_", 1)[0]))
-        return getattr(module, self.hint, None)
+    def hint_function(self):
+        return self.hint
+
+    @property
+    def probe_module(self) -> str:
+        return self.probe[0]
 
 
 def register(assignment_id: str, checks) -> None:
@@ -116,6 +129,21 @@ def close(got, want, rtol: float, atol: float) -> bool:
     return got == want
 
 
+REFERENCE_DIR = Path(__file__).resolve().parent.parent / "reference"
+
+
+def known_mistakes(check, reference_dir: Path | None = None) -> list:
+    """The known mistakes of every case of ``check`` (one dict per case, in the order of
+    its reference cases), from ``reference/<assignment>/known.json``; [] if none."""
+    path = Path(reference_dir or REFERENCE_DIR) / check.assignment / "known.json"
+    if not check.known or not path.is_file():
+        return []
+    try:
+        return json.loads(path.read_text()).get(check.slug, [])
+    except ValueError:
+        return []
+
+
 def judge_cases(check: Check, got, want):
     """(fraction of cases right, message lines) for a cases check."""
     if "error" in got:
@@ -127,8 +155,9 @@ def judge_cases(check: Check, got, want):
     if len(errors) == 1 and None not in errors:
         return 0.0, ["every one of the %d cases raised %s" % (len(cases_want), errors.pop()),
                      "the first case: " + cases_want[0]["label"]]
+    known = known_mistakes(check) if check.hint is not None else []
     right, lines = 0, []
-    for g, w in zip(cases_got, cases_want):
+    for i, (g, w) in enumerate(zip(cases_got, cases_want)):
         label = w["label"]
         if "error" in g:
             lines.append("- %s: your code raised %s" % (label, g["error"]))
@@ -143,7 +172,8 @@ def judge_cases(check: Check, got, want):
         hint_function = check.hint_function()
         if hint_function is not None:
             try:
-                hint = hint_function(w.get("in", {}), w["out"], g.get("out", {}))
+                inputs = dict(w.get("in", {}), known=known[i] if i < len(known) else {})
+                hint = hint_function(inputs, w["out"], g.get("out", {}))
             except Exception:  # a hint is a courtesy; a malformed observation must not stop grading
                 hint = None
             if hint:
@@ -152,18 +182,27 @@ def judge_cases(check: Check, got, want):
     return right / len(cases_want), lines
 
 
-def image_check(name: str, weight: float, build, size=(48, 48), visibility: str = "visible", render=None,
-                **options) -> Check:
-    """An image test: ``build(rt)`` returns the scene (or a registered scene name), rendered by
-    the lecture layer's pixel loop with the student's code at ``size``."""
+def image_check(name: str, weight: float, scene: str, size=(48, 48), visibility: str = "visible",
+                render: str | None = None, shaders=None, shadows=None, **options) -> Check:
+    """An image test: probes.images.render_scene renders ``scene`` (a registered homework
+    scene, or with ``shaders`` the 02562 default scene with those shader names) at ``size``
+    with the student's code, by the lecture layer's pixel loop or by ``render``
+    ("module.function" of the probes)."""
     width, height = size
+    kwargs = {"scene": scene, "width": width, "height": height}
+    if render is not None:
+        kwargs["render"] = render
+    if shaders is not None:
+        kwargs["shaders"] = list(shaders)
+        kwargs["shadows"] = bool(shadows)
+    return Check(name, weight, ("images", "render_scene", kwargs), visibility=visibility, kind="image",
+                 size=size, **options)
 
-    def observe(rt):
-        from .child import image
 
-        scene = build(rt) if callable(build) else rt.scenes.get_scene(build)()
-        if render is not None:
-            return image(render(rt, scene, width, height))
-        return image(rt.renderer.render_reference(scene, width, height))
+def probe_table() -> dict:
+    """assignment id -> slug -> [module, function, kwargs] of every test (written beside the
+    probes as tests.json, which boot.py reads for ``check ASSIGNMENT SLUG``)."""
+    from ..assignments import ASSIGNMENTS
 
-    return Check(name, weight, observe, visibility=visibility, kind="image", size=size, **options)
+    _load()
+    return {aid: {c.slug: list(c.probe) for c in CHECKS[aid]} for aid in ASSIGNMENTS if aid in CHECKS}

@@ -1,30 +1,17 @@
-"""a04: diffuse shading with a point light (02562: Kepler's inverse square law, Lambert's
-cosine law, "Sampling light in the shader")."""
+"""a04: diffuse shading with a point light (02562: Kepler's inverse square law, Lambert's cosine
+law, "Sampling light in the shader"). The probes are in rtfgu/grading/probes/a04.py (visible)
+and a04_hidden.py; the hints compare with the known mistakes of rtfgu.grading.mistakes."""
 from __future__ import annotations
 
 import math
 
 from . import Check, image_check, register
-from .child import Cases, num, vec
-
-
-def observe_kepler(rt):
-    cases = Cases()
-    F = rt.Float3
-    for p, intensity, x in [((0, 1, 0), (math.pi,) * 3, (0.5, 0, 0.5)), ((2, 3, -1), (10, 5, 1), (0, 0, 0)),
-                            ((0, 1, 0), (1, 1, 1), (0, 0.75, 0))]:
-        def run(p=p, intensity=intensity, x=x):
-            light = rt.PointLight(F(*p), F(*intensity))
-            sample = rt.lights.sample_point_light(light, F(*x))
-            return {"L_i": vec(sample.L_i, "L_i"), "w_i": vec(sample.w_i, "w_i"), "dist": num(sample.dist, "dist")}
-        cases.run("a point light at (%g, %g, %g) with intensity (%g, %g, %g), sampled at (%g, %g, %g)"
-                  % (tuple(p) + tuple(intensity) + tuple(x)), run, p=list(p), intensity=list(intensity), x=list(x))
-    return cases.result()
 
 
 def hint_kepler(inputs, want, got):
-    p, x = inputs["p"], inputs["x"]
-    dist = math.dist(p, x)
+    dist = (inputs.get("known") or {}).get("dist")
+    if dist is None:
+        return None
     if isinstance(got.get("w_i"), list) and all(abs(g + w) < 1e-9 for g, w in zip(got["w_i"], want["w_i"])):
         return "w_i points away from the light: it is (p - x) / |p - x|, from the surface toward the light"
     if isinstance(got.get("L_i"), list) and abs(got["L_i"][0] - want["L_i"][0] * dist) < 1e-9 * max(1, abs(got["L_i"][0])):
@@ -34,83 +21,14 @@ def hint_kepler(inputs, want, got):
     return None
 
 
-def _shading_scene(rt, lights, shadows=False):
-    F = rt.Float3
-    scene = rt.Scene(None)
-    scene.shadows = shadows
-    for position, intensity in lights:
-        scene.lights.append(rt.PointLight(F(*position), F(*intensity)))
-    return scene
-
-
-def _hit(rt, position, normal, color, emission=(0, 0, 0), material=None):
-    F = rt.Float3
-    hit = rt.HitInfo()
-    hit.has_hit = True
-    hit.position = F(*position)
-    hit.normal = rt.float3.normalize(F(*normal))
-    m = material or rt.Material(rt.LAMBERTIAN, emission=F(*emission))
-    hit.set_material(F(*color), m)
-    return hit
-
-
-def _lambert_cases(rt, setups):
-    cases = Cases()
-    F = rt.Float3
-    for lights, position, normal, color, emission in setups:
-        def run(lights=lights, position=position, normal=normal, color=color, emission=emission):
-            scene = _shading_scene(rt, lights)
-            hit = _hit(rt, position, normal, color, emission)
-            r = rt.Ray(F(position[0], position[1] + 1, position[2] + 1), F(0, -0.70710678, -0.70710678))
-            return {"L_o": vec(rt.shading.lambertian(scene, r, hit), "lambertian's result")}
-        n = [c / math.sqrt(sum(v * v for v in normal)) for c in normal]
-        cos = []
-        for lp, _ in lights:
-            w = [lp[i] - position[i] for i in range(3)]
-            length = math.sqrt(sum(v * v for v in w))
-            cos.append(sum(n[i] * w[i] / length for i in range(3)))
-        label = "lambertian at (%g, %g, %g), normal (%g, %g, %g), colour (%g, %g, %g), lights %s" % (
-            tuple(position) + tuple(normal) + tuple(color) + (lights,))
-        cases.run(label, run, color=list(color), emission=list(emission), cos=cos)
-    return cases.result()
-
-
-PI3 = (math.pi,) * 3
-
-
-def observe_lambert(rt):
-    return _lambert_cases(rt, [
-        ([((0, 1, 0), PI3)], (0, 0, 0), (0, 1, 0), (0.1, 0.7, 0), (0, 0, 0)),
-        ([((0, 1, 0), PI3)], (0.5, 0, 0.5), (0, 1, 0), (0.1, 0.7, 0), (0, 0, 0)),
-        ([((0, 1, 0), PI3)], (1, 0, 0), (0, 1, 0), (0.4, 0.3, 0.2), (0, 0, 0)),
-        ([((2, 2, 0), (4, 4, 4))], (0, 0, 0), (0, 1, 0), (1, 1, 1), (0, 0, 0)),
-        ([((0, 1, 0), PI3)], (0.2, 0.1, 0.4), (0, 2, 0), (0.4, 0.3, 0.2), (0, 0, 0)),
-    ])
-
-
-def observe_lambert_below(rt):
-    return _lambert_cases(rt, [
-        ([((0, -1, 0), PI3)], (0, 0, 0), (0, 1, 0), (0.1, 0.7, 0), (0, 0, 0)),
-        ([((3, -0.5, 0), (5, 5, 5))], (0, 0, 0), (0, 1, 0), (0.5, 0.5, 0.5), (0, 0, 0)),
-    ])
-
-
-# ### BEGIN HIDDEN
-def observe_lambert_more(rt):
-    return _lambert_cases(rt, [
-        ([((0, 1, 0), PI3), ((2, 1, 0), (1, 2, 3))], (0.5, 0, 0), (0, 1, 0), (0.8, 0.6, 0.4), (0, 0, 0)),
-        ([((0, 1, 0), PI3)], (0, 0, 0), (0, 1, 0), (0.2, 0.2, 0.2), (0.5, 0.25, 0)),
-        ([((1, 1, 1), (2, 2, 2)), ((-1, 1, 1), (2, 0, 2)), ((0, -1, 0), (9, 9, 9))], (0, 0, 0),
-         (0, 1, 1), (0.3, 0.6, 0.9), (0, 0, 0)),
-    ])
-# ### END HIDDEN
-
-
 def hint_lambert(inputs, want, got):
     L = got.get("L_o")
     if not isinstance(L, list):
         return None
-    color, emission, cos = inputs["color"], inputs["emission"], inputs["cos"]
+    color, emission = inputs["color"], inputs["emission"]
+    cos = (inputs.get("known") or {}).get("cos")
+    if cos is None:
+        return None
     base = [emission[i] + 0.1 * color[i] for i in range(3)]
     d_want = [want["L_o"][i] - base[i] for i in range(3)]
     d_got = [L[i] - base[i] for i in range(3)]
@@ -132,13 +50,15 @@ def hint_lambert(inputs, want, got):
 
 register("a04_diffuse", [
     Check("sample_point_light: Kepler's inverse square law and the direction to the light", 2,
-          observe_kepler, hint=hint_kepler),
-    Check("lambertian: one point light, Lambert's cosine law and ambient", 3, observe_lambert, hint=hint_lambert),
-    Check("lambertian: a light below the surface adds nothing", 1, observe_lambert_below, hint=hint_lambert),
-    image_check("image: 02562 default scene, Lambertian, no shadows", 2,
-                lambda rt: rt.scenes.default_scene.default_scene(rt.LAMBERTIAN, rt.LAMBERTIAN, shadows=False)),
+          ("a04", "observe_kepler"), hint=hint_kepler, known="kepler"),
+    Check("lambertian: one point light, Lambert's cosine law and ambient", 3, ("a04", "observe_lambert"),
+          hint=hint_lambert, known="lambert"),
+    Check("lambertian: a light below the surface adds nothing", 1, ("a04", "observe_lambert_below"),
+          hint=hint_lambert, known="lambert"),
+    image_check("image: 02562 default scene, Lambertian, no shadows", 2, "default_scene",
+                shaders=("LAMBERTIAN", "LAMBERTIAN"), shadows=False),
     # ### BEGIN HIDDEN
-    Check("lambertian: several lights and emission", 2, observe_lambert_more, visibility="hidden",
-          hint=hint_lambert),
+    Check("lambertian: several lights and emission", 2, ("a04_hidden", "observe_lambert_more"), visibility="hidden",
+          hint=hint_lambert, known="lambert"),
     # ### END HIDDEN
 ])

@@ -1,72 +1,8 @@
-"""a05: shadow rays, Phong, mirror and refraction (02562 weeks 2-3)."""
+"""a05: shadow rays, Phong, mirror and refraction (02562 weeks 2-3). The probes are in
+rtfgu/grading/probes/a05.py (visible) and a05_hidden.py."""
 from __future__ import annotations
 
-import math
-
 from . import Check, image_check, register
-from .a04 import _hit
-from .child import Cases, boolean, num, vec
-
-LIGHT = (0.0, 1.0, 0.0)
-
-
-def _toward(p, light):
-    w = [light[i] - p[i] for i in range(3)]
-    dist = math.sqrt(sum(v * v for v in w))
-    return [v / dist for v in w], dist
-
-
-def _default_shapes(rt):
-    F = rt.Float3
-    return [rt.Plane(F(0, 0, 0), F(0, 1, 0), F(0.1, 0.7, 0)),
-            rt.Triangle(F(-0.2, 0.1, 0.9), F(0.2, 0.1, 0.9), F(-0.2, 0.1, -0.1), F(0.4, 0.3, 0.2)),
-            rt.Sphere(F(0, 0.5, 0), 0.3, F(0, 0, 0))]
-
-
-def _shadow_case(rt, cases, label, shapes, point, light):
-    def run():
-        F = rt.Float3
-        scene = rt.Scene(None)
-        scene.shapes.extend(shapes())
-        w, dist = _toward(point, light)
-        return {"in shadow": boolean(rt.shading.in_shadow(scene, F(*point), F(*w), dist), "in_shadow's result")}
-    cases.run(label, run, point=list(point), light=list(light))
-
-
-def observe_occluders(rt):
-    cases = Cases()
-    shapes = lambda: _default_shapes(rt)
-    for point, light, what in [((0, 0.05, 0), LIGHT, "below the sphere"),
-                               ((1.0, 0.05, -1.0), LIGHT, "beside the sphere"),
-                               ((0, 2, 0), (0, 3, 0), "above everything, light above it"),
-                               ((0, 0.05, 0), (0, 0.15, 0), "below the sphere, light between it and the sphere"),
-                               ((0, 0.05, 0.5), LIGHT, "under the triangle")]:
-        _shadow_case(rt, cases, "in_shadow from (%g, %g, %g) (%s) toward the light at (%g, %g, %g)"
-                     % (tuple(point) + (what,) + tuple(light)), shapes, point, light)
-    return cases.result()
-
-
-def observe_self_shadow(rt):
-    """Points on the surfaces, found by intersecting eye rays as the renderer does, must not
-    shadow themselves: the shadow ray leaves the surface."""
-    cases = Cases()
-    F = rt.Float3
-    eye = (2.0, 1.5, 2.0)
-    for target in [(1.0, 0.0, -1.0), (-1.2, 0.0, 0.7), (0.7, 0.0, 0.9), (-0.5, 0.0, -1.3), (1.3, 0.0, 0.2),
-                   (0.1, 0.1, 0.6), (-0.1, 0.1, 0.5), (0.12, 0.72, 0.1), (0.0, 0.8, 0.05)]:
-        def run(target=target):
-            scene = rt.Scene(None)
-            scene.shapes.extend(_default_shapes(rt))
-            d = rt.float3.normalize(F(*target) - F(*eye))
-            hit = rt.HitInfo()
-            if not scene.intersect(rt.Ray(F(*eye), d), hit):
-                return {"in shadow": "no surface hit"}
-            p = [hit.position.x, hit.position.y, hit.position.z]
-            w, dist = _toward(p, LIGHT)
-            return {"in shadow": boolean(rt.shading.in_shadow(scene, hit.position, F(*w), dist), "in_shadow's result")}
-        cases.run("in_shadow from the surface point the eye ray toward (%g, %g, %g) hits, toward the light at (0, 1, 0)"
-                  % target, run)
-    return cases.result()
 
 
 def hint_shadow(inputs, want, got):
@@ -81,51 +17,6 @@ def hint_shadow(inputs, want, got):
     return None
 
 
-def _phong_cases(rt, setups):
-    cases = Cases()
-    F = rt.Float3
-    for position, normal, eye, light, color, specular, shininess in setups:
-        def run(position=position, normal=normal, eye=eye, light=light, color=color, specular=specular,
-                shininess=shininess):
-            scene = rt.Scene(None)
-            scene.shadows = False
-            scene.lights.append(rt.PointLight(F(*light), F(math.pi, math.pi, math.pi)))
-            material = rt.Material(rt.PHONG, specular=F(*specular), shininess=shininess)
-            hit = _hit(rt, position, normal, color, material=material)
-            r = rt.Ray(F(*eye), rt.float3.normalize(F(*position) - F(*eye)))
-            return {"L_o": vec(rt.shading.phong(scene, r, hit), "phong's result")}
-        cases.run("phong at (%g, %g, %g), normal (%g, %g, %g), seen from (%g, %g, %g), light at (%g, %g, %g), "
-                  "rho_s %g, s %g" % (tuple(position) + tuple(normal) + tuple(eye) + tuple(light)
-                                      + (specular[0], shininess)), run)
-    return cases.result()
-
-
-def observe_phong(rt):
-    top = (0.0, 0.8, 0.0)
-    return _phong_cases(rt, [
-        (top, (0, 1, 0), (0.0, 1.5, 0.3), LIGHT, (0, 0, 0), (0.1, 0.1, 0.1), 42.0),
-        ((0.1, 0.78, 0.1), (0.1, 0.28, 0.1), (2.0, 1.5, 2.0), LIGHT, (0, 0, 0), (0.1, 0.1, 0.1), 42.0),
-        ((0.5, 0.0, 0.5), (0, 1, 0), (-0.5, 1.0, -0.5), LIGHT, (0.1, 0.7, 0), (0.5, 0.5, 0.5), 10.0),
-        ((0.5, 0.0, 0.5), (0, 1, 0), (2.0, 1.5, 2.0), LIGHT, (0.1, 0.7, 0), (0.3, 0.3, 0.3), 5.0),
-    ])
-
-
-def observe_mirror(rt):
-    cases = Cases()
-    F = rt.Float3
-    for position, normal, origin in [((0, 0, 0), (0, 1, 0), (1, 1, 0)), ((0, 0.8, 0), (0, 1, 0), (2, 1.5, 2)),
-                                     ((0.3, 0.5, 0), (1, 0, 0), (2, 1.5, 2))]:
-        def run(position=position, normal=normal, origin=origin):
-            hit = _hit(rt, position, normal, (0, 0, 0), material=rt.Material(rt.MIRROR))
-            r = rt.Ray(F(*origin), rt.float3.normalize(F(*position) - F(*origin)), 1e-5, 7.0)
-            result = vec(rt.shading.mirror(rt.Scene(None), r, hit), "mirror's result")
-            return {"returned": result, "r.origin": vec(r.origin, "r.origin"), "r.direction": vec(r.direction, "r.direction"),
-                    "r.tmax": num(r.tmax, "r.tmax"), "hit.has_hit": boolean(hit.has_hit, "hit.has_hit")}
-        cases.run("mirror at (%g, %g, %g) with normal (%g, %g, %g), ray from (%g, %g, %g)"
-                  % (tuple(position) + tuple(normal) + tuple(origin)), run)
-    return cases.result()
-
-
 def hint_path(inputs, want, got):
     if got.get("r.tmax") is not None and got.get("r.tmax") != want.get("r.tmax"):
         return "the next ray of the path starts with a fresh interval: tmax = infinity (use _continue_path)"
@@ -138,71 +29,35 @@ def hint_path(inputs, want, got):
     return None
 
 
-def observe_refraction(rt):
-    cases = Cases()
-    F = rt.Float3
-    for position, normal, origin, ior, what in [
-            ((0, 0.8, 0), (0, 1, 0), (1, 1.5, 0), 1.5, "entering glass"),
-            ((0, 0.2, 0), (0, -1, 0), (0, 0.8, 0.2), 1.5, "leaving glass"),
-            ((0.25, 0.5, 0), (0.8333333, 0, 0.5527708), (0, 0.5, 0.2), 1.5, "leaving glass beyond the critical angle: total internal reflection"),
-            ((0, 0, 0), (0, 1, 0), (1, 1, 0), 1.33, "entering water")]:
-        def run(position=position, normal=normal, origin=origin, ior=ior):
-            hit = _hit(rt, position, normal, (0, 0, 0), material=rt.Material(rt.TRANSPARENT, ior=ior))
-            r = rt.Ray(F(*origin), rt.float3.normalize(F(*position) - F(*origin)), 1e-5, 7.0)
-            vec(rt.shading.transparent(rt.Scene(None), r, hit), "transparent's result")
-            return {"r.origin": vec(r.origin, "r.origin"), "r.direction": vec(r.direction, "r.direction"),
-                    "r.tmax": num(r.tmax, "r.tmax"), "hit.has_hit": boolean(hit.has_hit, "hit.has_hit")}
-        cases.run("transparent (%s, ior %g) at (%g, %g, %g) with normal (%g, %g, %g), ray from (%g, %g, %g)"
-                  % ((what, ior) + tuple(position) + tuple(normal) + tuple(origin)), run)
-    return cases.result()
-
-
 def hint_refraction(inputs, want, got):
     return hint_path(inputs, want, got) or (
         "check eta: entering (d . n < 0) eta = 1 / ior; leaving, eta = ior with the normal flipped; "
         "and mirror the ray when eta^2 (1 - cos_i^2) > 1 (total internal reflection)")
 
 
-def _shaded(sphere_shader_name, shadows):
-    def build(rt):
-        return rt.scenes.default_scene.default_scene(getattr(rt, sphere_shader_name), rt.LAMBERTIAN, shadows=shadows)
-    return build
-
-
-# ### BEGIN HIDDEN
-def observe_occluders_more(rt):
-    cases = Cases()
-    F = rt.Float3
-
-    def shapes():
-        return [rt.Sphere(F(0, 1, 0), 0.5, F(1, 1, 1)), rt.Sphere(F(2, 1, 0), 0.5, F(1, 1, 1)),
-                rt.Triangle(F(-1, 2, -1), F(1, 2, -1), F(0, 2, 1), F(1, 1, 1)), rt.Plane(F(0, -1, 0), F(0, 1, 0), F(1, 1, 1))]
-
-    for point, light in [((0, 0, 0), (0, 3, 0)), ((2, 0, 0), (2, 3, 0)), ((1, 0, 0), (1, 3, 0)),
-                         ((0, 0, 0), (0, 1.8, 0)), ((0, 0, 0), (0, 0.4, 0)), ((3, 0, 0), (0, 3, 0)),
-                         ((-2, 0, 0), (0, 3, 0))]:
-        _shadow_case(rt, cases, "in_shadow from (%g, %g, %g) toward a light at (%g, %g, %g) among two spheres, "
-                     "a triangle and a plane" % (tuple(point) + tuple(light)), shapes, point, light)
-    return cases.result()
-# ### END HIDDEN
+def _shaded(name, weight, sphere_shader, shadows, **options):
+    """An image test of the 02562 default scene with ``sphere_shader`` on the sphere."""
+    return image_check(name, weight, "default_scene", shaders=(sphere_shader, "LAMBERTIAN"), shadows=shadows,
+                       **options)
 
 
 register("a05_shadows_phong_mirror_refraction", [
-    Check("in_shadow: occluders between the point and the light", 2, observe_occluders, hint=hint_shadow),
-    Check("in_shadow: a lit surface point does not shadow itself (no shadow acne)", 2, observe_self_shadow,
-          hint=hint_shadow),
-    Check("phong: the normalised Phong lobe plus the diffuse term", 2, observe_phong, rtol=1e-5),
-    Check("mirror: the reflected ray continues the path", 1, observe_mirror, hint=hint_path),
-    Check("transparent: refraction by Snell's law and total internal reflection", 2, observe_refraction,
+    Check("in_shadow: occluders between the point and the light", 2, ("a05", "observe_occluders"), hint=hint_shadow),
+    Check("in_shadow: a lit surface point does not shadow itself (no shadow acne)", 2,
+          ("a05", "observe_self_shadow"), hint=hint_shadow),
+    Check("phong: the normalised Phong lobe plus the diffuse term", 2, ("a05", "observe_phong"), rtol=1e-5),
+    Check("mirror: the reflected ray continues the path", 1, ("a05", "observe_mirror"), hint=hint_path),
+    Check("transparent: refraction by Snell's law and total internal reflection", 2, ("a05", "observe_refraction"),
           hint=hint_refraction),
-    image_check("image: 02562 default scene with shadows", 2, _shaded("LAMBERTIAN", True)),
-    image_check("image: Phong sphere (no shadows)", 1, _shaded("PHONG", False)),
-    image_check("image: mirror sphere (no shadows)", 1, _shaded("MIRROR", False)),
-    image_check("image: refractive sphere (no shadows)", 1, _shaded("TRANSPARENT", False)),
+    _shaded("image: 02562 default scene with shadows", 2, "LAMBERTIAN", True),
+    _shaded("image: Phong sphere (no shadows)", 1, "PHONG", False),
+    _shaded("image: mirror sphere (no shadows)", 1, "MIRROR", False),
+    _shaded("image: refractive sphere (no shadows)", 1, "TRANSPARENT", False),
     # ### BEGIN HIDDEN
-    image_check("image: glossy sphere (no shadows)", 1, _shaded("GLOSSY", False), visibility="hidden"),
+    _shaded("image: glossy sphere (no shadows)", 1, "GLOSSY", False, visibility="hidden"),
     # ### END HIDDEN
     # ### BEGIN HIDDEN
-    Check("in_shadow among several shapes", 1, observe_occluders_more, visibility="hidden", hint=hint_shadow),
+    Check("in_shadow among several shapes", 1, ("a05_hidden", "observe_occluders_more"), visibility="hidden",
+          hint=hint_shadow),
     # ### END HIDDEN
 ])

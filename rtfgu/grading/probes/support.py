@@ -53,7 +53,7 @@ def describe_exception(error: BaseException) -> str:
     where = ""
     for frame in reversed(traceback.extract_tb(error.__traceback__)):
         short = _short(frame.filename)
-        if short is not None and "grading" not in frame.filename:
+        if short is not None and "grading" not in frame.filename and "probes" not in frame.filename:
             where = " (in %s, line %d, in %s: %s)" % (short, frame.lineno, frame.name, (frame.line or "").strip())
             break
     return "%s: %s%s" % (type(error).__name__, error, where)
