@@ -2,14 +2,21 @@
 hidden reference is in it, and its checker fails on the stubs and passes on a solution."""
 from __future__ import annotations
 
+import json
+import os
 import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
-from rtfgu.grading.assignments import block_table
-from rtfgu.grading.generate import PACKAGE_DIR, find_blocks, source_text
-from rtfgu.grading.release import build_package, probe_files, solves
+from rtfgu.grading.assignments import ASSIGNMENTS, block_table
+from rtfgu.grading.checks import checks_for
+from rtfgu.grading.generate import PACKAGE_DIR, find_blocks, solution_files, source_text, write_files
+from rtfgu.grading.release import build_package, probe_files, solves, write_release
+
+from planted import apply_replacements, describe
 
 ROOT = Path(__file__).resolve().parent.parent
 TRIVIAL = re.compile(r"^(return|return (True|False|result|None|hit)|return (true|false);|else:|else \{|\}|\{|pass|"
@@ -149,3 +156,121 @@ def test_a_twin_without_its_marker_or_with_the_wrong_one_is_found():
     assert [p[1] for p in unmarked_twins({"wgsl/phong.wgsl": wrong})] == ["brdf_phong"]
     # the student's own file: the function around its solution block ships stubbed
     assert unmarked_twins({"wgsl/intersect_sphere.wgsl": files["wgsl/intersect_sphere.wgsl"]}) == []
+
+
+# --- the student repository -------------------------------------------------------------------
+
+REVEALED = ("a01", "a02")
+
+
+@pytest.fixture(scope="module")
+def release(tmp_path_factory):
+    out = tmp_path_factory.mktemp("release")
+    write_release(out, reveal=REVEALED)
+    return out
+
+
+def _env(release) -> dict:
+    """The release first, then the site-packages read without their .pth files (-S): the
+    editable install of this checkout must not fill in what the release leaves out."""
+    import site
+
+    return dict(os.environ, PYTHONPATH=os.pathsep.join([str(release)] + site.getsitepackages()))
+
+
+def _run(release, *args, timeout=300):
+    """The release's own checker (python -S -m rtfgu_checker ...) with our interpreter."""
+    return subprocess.run([sys.executable, "-S", "-m", "rtfgu_checker"] + list(args), cwd=release,
+                          env=_env(release), capture_output=True, text=True, timeout=timeout)
+
+
+def test_no_solution_line_is_anywhere_in_the_release(release):
+    assert solution_lines_in(release, REVEALED) == []
+    assert solution_lines_in(release / "rtfgu", ()) != []   # the revealed a01, a02 are there
+
+
+def test_no_twin_no_hidden_probe_no_hidden_reference_and_no_solving_hint_in_the_release(release):
+    names = {p.relative_to(release).as_posix() for p in release.rglob("*") if p.is_file()}
+    assert not [n for n in names if n.startswith(("rtfgu/kernels/", "rtfgu/hardcases/", "rtfgu/grading/"))]
+    assert "rtfgu/robust.py" not in names
+    assert not [n for n in names if "hidden" in n or "mistakes" in n or "sandbox" in n or "grader" in n]
+    checker = release / "rtfgu_checker"
+    code = "\n".join(p.read_text() for p in checker.rglob("*.py"))
+    assert not re.search(r"^\s*# ### BEGIN HIDDEN\s*$", code, re.M) and 'visibility="hidden"' not in code
+    hints = "\n".join(p.read_text() for p in (checker / "checks").glob("*.py"))
+    assert "b * b" not in hints and "math.sqrt" not in hints   # no quadratic, no root in any hint
+    for a in ASSIGNMENTS.values():
+        hidden = [c for c in checks_for(a.id) if c.visibility != "visible"]
+        visible = [c for c in checks_for(a.id) if c.visibility == "visible"]
+        folder = checker / "reference" / a.id
+        stored = json.loads((folder / "observations.json").read_text())
+        assert set(stored) == {c.slug for c in visible if c.kind == "cases"}
+        for c in hidden:
+            assert not (folder / (c.slug + ".png")).exists()
+            assert c.name not in code
+            if (folder / "known.json").exists():
+                assert c.slug not in (folder / "known.json").read_text()
+    for n in ("Makefile", "README.md", "setup.cfg", "pyproject.toml", "assignments/a03_intersections/README.md",
+              "tests/test_visible.py"):
+        assert n in names, n
+    setup = (release / "setup.cfg").read_text()
+    assert "pytest" in setup and "mpmath" not in setup and "numba" not in setup   # numba: its path is left out
+    makefile = (release / "Makefile").read_text()
+    for target in ("check:", "render:", "test:"):
+        assert target in makefile
+
+
+def test_make_check_fails_on_the_stubs_and_passes_once_a_solution_is_written(release, tmp_path):
+    done = _run(release, "check", "a03")
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "this part is not written yet" in done.stdout
+    assert "hidden" not in done.stdout.lower()
+    write_files(solution_files("a03"), release / "rtfgu")
+    done = _run(release, "check", "a03")
+    assert done.returncode == 0, done.stdout + done.stderr
+    visible = sum(c.weight for c in checks_for("a03") if c.visibility == "visible")
+    assert "total %g / %g" % (visible, visible) in done.stdout
+    diffs = release / "check-results" / "a03" / "diffs"
+    assert sorted(p.name for p in diffs.iterdir()) == sorted(
+        c.slug + ".png" for c in checks_for("a03") if c.kind == "image" and c.visibility == "visible")
+    assert str(diffs) in done.stdout or "check-results/a03/diffs" in done.stdout
+
+
+def test_the_release_checker_gives_the_a_is_one_hint(release):
+    spec = describe("a03_sphere_a_is_one")
+    write_files(apply_replacements(solution_files("a03"), spec["REPLACE"], "a03_sphere_a_is_one"),
+                release / "rtfgu")
+    try:
+        done = _run(release, "check", "a03")
+        assert done.returncode == 1
+        assert "as if a = d . d were 1" in done.stdout, done.stdout
+    finally:
+        write_files(solution_files("a03"), release / "rtfgu")
+
+
+def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_render_fails(release):
+    done = _run(release, "render", "a01")
+    assert done.returncode == 0 and "has no images to render" in done.stdout
+    done = _run(release, "render", "a04", "--width", "8", "--height", "8")
+    assert done.returncode == 1
+    assert "the render failed" in done.stdout and "a04: " in done.stdout and "failed to render" in done.stdout
+
+
+def test_running_a_student_file_directly_says_how_to_run_it(release):
+    # a04's file: the a03 tests above replace the a03 files with the solution
+    done = subprocess.run([sys.executable, "rtfgu/lights.py"], cwd=release, capture_output=True,
+                          text=True, timeout=60)
+    assert done.returncode != 0
+    assert "make check A=a04" in done.stderr and "relative import" not in done.stderr
+
+
+def test_the_release_renders_with_the_reference_and_says_the_other_paths_are_not_in_it(release):
+    script = ("import rtfgu\nfrom rtfgu.scenes import SCENES\n"
+              "for backend in ('numba', 'wgpu'):\n"
+              "    try:\n        rtfgu.render(SCENES['default_lambertian'](), 4, 4, backend=backend)\n"
+              "    except Exception as e:\n        print(backend, e)\n"
+              "print(rtfgu.render(SCENES['default_ray_directions'](), 4, 4).shape)\n")
+    done = subprocess.run([sys.executable, "-S", "-c", script], cwd=release, capture_output=True, text=True,
+                          timeout=120, env=_env(release))
+    assert done.stdout.count("not part of this release") == 2, done.stdout + done.stderr
+    assert "(4, 4, 3)" in done.stdout

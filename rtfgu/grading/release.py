@@ -6,15 +6,16 @@ that computes one a second time.
 * every ``### BEGIN SOLUTION`` block of an assignment not in ``reveal`` is replaced by its
   stub (rtfgu.grading.generate.transform), the blocks of revealed assignments keep their
   solution without the markers;
-* a file whose first line says ``# release: solves a03 a04`` (``// release: ...`` in WGSL)
+* a file with a line ``# release: solves a03 a04`` (``// release: ...`` in WGSL) among its
+  first MARKER_LINES lines
   computes those assignments' functions again (a numba or WGSL twin, a robust variant, a
   hard-case evaluator) and is left out unless every one of them is revealed; a package whose
   ``__init__.py`` is left out is left out whole;
 * ``rtfgu/grading`` is left out: the package a submission runs in holds nothing of the grader.
 
-``write_release(out, reveal)`` writes a whole student repository: that package, plus the
-student checker (rtfgu/grading with the hidden tests, the staff-only hint code and the
-hidden references left out), the assignments' READMEs, a Makefile and a README.
+``write_release(out, reveal)`` writes a whole student repository: that package, the student
+checker ``rtfgu_checker/`` (the visible tests only: their checks and hints, probes and
+references, run by rtfgu.grading.local), the assignments' READMEs, a Makefile and a README.
 """
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ import shutil
 from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
-from .generate import PACKAGE_DIR, strip_regions, transform  # noqa: F401  (strip_regions: the release's checks)
+from .generate import PACKAGE_DIR, strip_regions, transform
 
 MARKER = re.compile(r"^\s*(?:#|//)\s*release: solves\s+(?P<ids>[a0-9 ]+?)\s*$")
 MARKER_LINES = 5        # a marker sits on one of a file's first lines
@@ -143,29 +144,38 @@ def is_hidden_probe(module: str) -> bool:
 
 # --- the student repository ---------------------------------------------------------------
 
-def _checker_files(package_dir: Path) -> dict:
-    """relpath (under rtfgu/grading/) -> bytes: the grading package as a student checker."""
+CHECKER = "rtfgu_checker"              # the student checker's package in a release
+CHECKER_MODULES = ("assignments.py", "results.py", "local.py")
+
+
+def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:
+    """relpath (under rtfgu_checker/) -> bytes: the student checker. It holds the visible
+    tests only: their checks and hints (rtfgu/grading/checks without the HIDDEN regions),
+    their probes (no ``*_hidden.py``), their reference observations, known mistakes and
+    images; rtfgu.grading.local runs them."""
     from .checks import checks_for
 
     grading = Path(package_dir) / "grading"
-    files = {}
-    for path in sorted(grading.rglob("*")):
-        rel = path.relative_to(grading)
-        if not path.is_file() or _skipped(rel) or rel.parts[0] in ("reference", "checks"):
-            continue
-        files[rel.as_posix()] = path.read_bytes()
+    files = {
+        "__init__.py": b'"""The student checker: the visible tests of every assignment, run on your rtfgu\n'
+                       b'(python -m rtfgu_checker check a03, or make check A=a03)."""\n',
+        "__main__.py": b"import sys\n\nfrom .local import main\n\nsys.exit(main())\n",
+    }
+    for name in CHECKER_MODULES:
+        files[name] = (grading / name).read_bytes()
+    for path in sorted((grading / "checks").glob("*.py")):
+        files["checks/" + path.name] = strip_regions(path.read_text(), ("HIDDEN", "STAFF"), path.name).encode()
     for name, text in probe_files(package_dir, keep_hidden=False).items():
-        files["checks/" + name] = text.encode()
+        if name.endswith(".py"):
+            files["probes/" + name] = text.encode()
     for a in ASSIGNMENTS.values():
         folder = grading / "reference" / a.id
-        observations_path = folder / "observations.json"
-        if not observations_path.is_file():
-            continue
-        observations = json.loads(observations_path.read_text())
         visible = [c for c in checks_for(a.id) if c.visibility == "visible"]
-        kept = {c.slug: observations[c.slug] for c in visible if c.slug in observations}
-        files["reference/%s/observations.json" % a.id] = (
-            json.dumps(kept, indent=1, sort_keys=True) + "\n").encode()
+        for name in ("observations.json", "known.json"):
+            if (folder / name).is_file():
+                data = json.loads((folder / name).read_text())
+                kept = {c.slug: data[c.slug] for c in visible if c.slug in data}
+                files["reference/%s/%s" % (a.id, name)] = (json.dumps(kept, indent=1, sort_keys=True) + "\n").encode()
         for c in visible:
             png = folder / (c.slug + ".png")
             if c.kind == "image" and png.is_file():
@@ -174,7 +184,10 @@ def _checker_files(package_dir: Path) -> dict:
 
 
 STUDENT_MAKEFILE = """\
-# The student's copy of rtfgu: `make check A=a03` runs the visible tests on your code.
+# Your copy of rtfgu. A is an assignment (a03 or a03_intersections).
+#   make check A=a03    the assignment's visible tests on your code (diff images in check-results/a03/diffs/)
+#   make render A=a03   the assignment's images rendered with your code, into renders/a03/
+#   make test           every assignment's visible tests, through pytest
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -191,10 +204,10 @@ $(STAMP): setup.cfg pyproject.toml
 venv: $(STAMP)
 
 check: $(STAMP)
-\t$(PY) -m rtfgu.grading check $(A) rtfgu --out check-results/$(A)
+\t$(PY) -m rtfgu_checker check $(A)
 
 render: $(STAMP)
-\t$(PY) -m rtfgu.grading render $(A) rtfgu
+\t$(PY) -m rtfgu_checker render $(A)
 
 test: $(STAMP)
 \t$(PY) -m pytest
@@ -203,74 +216,126 @@ clean:
 \trm -rf $(VENV) renders check-results
 """
 
-STUDENT_TEST = '''"""The visible tests of every assignment, one pytest test each, on your own code."""
+STUDENT_TEST = '''"""Every assignment's visible tests on your code, one pytest test each (make test)."""
 import pytest
 
-from rtfgu.grading.assignments import ASSIGNMENTS
-from rtfgu.grading.checks import checks_for
-from rtfgu.grading.grader import grade
+from rtfgu_checker.assignments import ASSIGNMENTS
+from rtfgu_checker.checks import checks_for
+from rtfgu_checker.local import check
 
-CASES = [(a.id, c.slug) for a in ASSIGNMENTS.values() for c in checks_for(a.id)
-         if c.visibility == "visible"]
+CASES = [(a.short, c.slug) for a in ASSIGNMENTS.values() for c in checks_for(a.id) if c.visibility == "visible"]
 
 
-@pytest.mark.parametrize("assignment,slug", CASES)
-def test_visible(assignment, slug, tmp_path):
-    result = grade(assignment, "rtfgu", tmp_path, visible_only=True, only=(slug,))
-    test = result.tests[0]
-    assert test.score == test.max_score, test.output
+@pytest.mark.parametrize("assignment,test", CASES)
+def test_visible(assignment, test):
+    result = check(assignment, ".", only=(test,))
+    assert result.tests and result.tests[0].status == "passed", result.tests[0].output
 '''
 
+STUDENT_SETUP = """\
+[metadata]
+name = rtfgu
+version = 0.1.0
+description = Your copy of rtfgu, a teaching ray tracer after Suffern's Ray Tracing from the Ground Up
 
-def _student_readme(reveal) -> str:
-    ids = ", ".join(sorted(reveal)) or "none"
+[options]
+packages = find:
+python_requires = >=3.10
+include_package_data = True
+install_requires =
+%(requires)s
+
+[options.packages.find]
+include = rtfgu, rtfgu.*, rtfgu_checker, rtfgu_checker.*
+
+[options.package_data]
+rtfgu = wgsl/*.wgsl
+rtfgu_checker = reference/*/*
+
+[options.extras_require]
+test =
+    pytest>=7
+
+[tool:pytest]
+testpaths = tests
+addopts = -ra
+"""
+
+
+def _student_readme(reveal, assignments) -> str:
+    ids = ", ".join(sorted(get_assignment(r).short for r in reveal)) or "none"
     lines = [
         "# rtfgu: your copy",
         "",
-        "A teaching ray tracer after Suffern's *Ray Tracing from the Ground Up*. Every function",
-        "you write is in the package itself: open the file an assignment names (for example",
-        "`rtfgu/shapes/sphere.py`) and replace the `raise NotImplementedError` under each",
-        "`# TODO` with your code.",
+        "A teaching ray tracer after Suffern's *Ray Tracing from the Ground Up*. Every function an",
+        "assignment asks for is in the package itself: open the file its README names (for",
+        "example `rtfgu/shapes/sphere.py` for a03) and replace each `raise NotImplementedError`",
+        "under a `# TODO` with your code. Change nothing else in the file: the grader runs your",
+        "file inside this same package.",
         "",
         "```",
-        "make check A=a03     # the visible tests on your code; diff images in check-results/a03/diffs/",
-        "make render A=a03    # the assignment's images, rendered with your code, into renders/a03/",
-        "make test            # every assignment's visible tests",
+        "make check A=a03     # a03's visible tests on your code",
+        "make render A=a03    # a03's images rendered with your code, into renders/a03/",
+        "make test            # every assignment's visible tests (pytest)",
         "```",
         "",
-        "The first `make` creates `.venv` and installs the package (Python 3.10 or newer).",
-        "Each assignment's README is in `assignments/`. Solutions revealed in this copy: %s." % ids,
+        "The first `make` creates `.venv` and installs the package and pytest (Python 3.10 or",
+        "newer). `make check` prints each test's points and, for a test that fails, what your",
+        "code gave back and what it should have, often with a hint. It writes",
+        "`check-results/<aNN>/summary.txt`, and for every image test a diff image",
+        "`check-results/<aNN>/diffs/<test>.png`: your render | the reference | the pixels that",
+        "differ, in red. The grader runs these tests and hidden ones like them.",
         "",
-        "The numba and WGSL paths of the full renderer compute the same functions again, so",
-        "they are not part of this copy; `rtfgu.render(..., backend=\"reference\")` is yours.",
+        "A file of the package is not a program: `python rtfgu/shapes/sphere.py` only tells you",
+        "to run `make check`. To try your code yourself, `.venv/bin/python -c 'import rtfgu; ...'`",
+        "from this folder; `rtfgu.render(scene, w, h)` renders with the lecture layer.",
+        "",
+        "## Assignments",
+        "",
+    ]
+    for a in assignments:
+        lines.append("- `%s`: %s, in %s (README: `assignments/%s/README.md`)"
+                     % (a.short, a.title, ", ".join("`rtfgu/%s`" % f for f in a.files), a.id))
+    lines += [
+        "",
+        "Solutions revealed in this copy (their functions are written for you): %s." % ids,
+        "",
+        "The numba and WGSL paths of the full renderer compute the assignments' functions again,",
+        "so they are not part of this copy: `rtfgu.render(..., backend=\"numba\")` says so.",
     ]
     return "\n".join(lines) + "\n"
 
 
 def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
-    """Write a student repository into ``out``; the files written."""
+    """Write a student repository into ``out``: the package (build_package), the student
+    checker (checker_files) as rtfgu_checker/, the assignments' READMEs, a Makefile, a
+    setup.cfg with the runtime dependencies and pytest, a pytest file and a README.
+    Returns the files written."""
     from .readme import assignment_readme, index_readme
 
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    written = [build_package(out, reveal, package_dir)]
-    for rel, data in _checker_files(package_dir).items():
-        target = out / "rtfgu" / "grading" / rel
+    package = build_package(out, reveal, package_dir)
+    written = [p for p in sorted(package.rglob("*")) if p.is_file()]
+    for rel, data in checker_files(package_dir).items():
+        target = out / CHECKER / rel
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
         written.append(target)
+    requires = ["numpy>=1.24", "Pillow>=10", "wgpu>=0.19"]
+    if (package / "kernels").is_dir():
+        requires.insert(1, "numba>=0.59")
     extra = {
-        "README.md": _student_readme(reveal),
+        "README.md": _student_readme(reveal, list(ASSIGNMENTS.values())),
         "Makefile": STUDENT_MAKEFILE,
+        "setup.cfg": STUDENT_SETUP % {"requires": "\n".join("    " + r for r in requires)},
+        "pyproject.toml": (Path(package_dir).parent / "pyproject.toml").read_text(),
         "tests/test_visible.py": STUDENT_TEST,
         "assignments/README.md": index_readme(),
         ".gitignore": ".venv/\nrenders/\ncheck-results/\n__pycache__/\n*.pyc\n*.egg-info/\n",
     }
     for a in ASSIGNMENTS.values():
         extra["assignments/%s/README.md" % a.id] = assignment_readme(a)
-    root = Path(package_dir).parent
-    for name in ("pyproject.toml", "setup.cfg"):
-        extra[name] = (root / name).read_text()
     for rel, text in extra.items():
         target = out / rel
         target.parent.mkdir(parents=True, exist_ok=True)

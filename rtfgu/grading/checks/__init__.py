@@ -80,7 +80,11 @@ def _slug(name: str) -> str:
 
 
 def checks_for(assignment_id: str):
+    """The checks of an assignment (its id, "a03_intersections", or short id, "a03")."""
+    from ..assignments import get_assignment
+
     _load()
+    assignment_id = get_assignment(assignment_id).id
     if assignment_id not in CHECKS:
         raise ValueError("assignment %r has no checks" % (assignment_id,))
     return CHECKS[assignment_id]

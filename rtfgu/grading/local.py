@@ -1,0 +1,193 @@
+"""The student checker: an assignment's visible tests on the student's own copy of the
+package, without a sandbox (it is the student's own code, on the student's machine).
+
+A student release ships this module with ``assignments``, ``results``, the ``checks`` (the
+visible tests and their hints), the visible ``probes`` and the visible references, as the
+package ``rtfgu_checker`` beside the student's ``rtfgu``; ``python -m rtfgu_checker check
+a03`` is ``make check A=a03``. Each test's probe runs in a new interpreter
+(``probes/boot.py``) with the folder holding the student's ``rtfgu`` first on its path; its
+answer comes back through a pipe and is judged here, as the grader does. Image tests write
+``<out>/diffs/<test>.png`` (yours | reference | differences in red).
+"""
+from __future__ import annotations
+
+import json
+import os
+import select
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from .assignments import ASSIGNMENTS, get_assignment
+from .checks import REFERENCE_DIR, checks_for, judge_cases
+from .checks.images import judge_image, load_png, write_png
+from .results import Result, TestResult
+
+PROBES = Path(__file__).resolve().parent / "probes"
+ANSWER_LIMIT = 64 * 1024 * 1024
+
+
+def run_probe(root: Path, probe: tuple, time_limit: float):
+    """(data or None, what the code printed, why it failed or None): ``probe`` run by a new
+    interpreter with ``root`` (the folder holding the student's rtfgu) first on its path."""
+    module, function, kwargs = probe
+    read_fd, write_fd = os.pipe()
+    with tempfile.TemporaryFile() as printed:
+        process = subprocess.Popen(
+            [sys.executable] + (["-S"] if sys.flags.no_site else []) + [str(PROBES / "boot.py"), str(root), str(PROBES.parent), "", str(write_fd),
+             "probe", module, function, json.dumps(kwargs)],
+            stdin=subprocess.DEVNULL, stdout=printed, stderr=subprocess.STDOUT, pass_fds=(write_fd,),
+            cwd=str(root), start_new_session=True)
+        os.close(write_fd)
+        chunks, size, failure = [], 0, None
+        deadline = time.monotonic() + time_limit
+        try:
+            while True:
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    failure = "stopped after the time limit of %g s: your code did not finish" % time_limit
+                    break
+                ready, _, _ = select.select([read_fd], [], [], left)
+                if not ready:
+                    continue
+                chunk = os.read(read_fd, 1 << 16)
+                if not chunk:
+                    break
+                chunks.append(chunk)
+                size += len(chunk)
+                if size > ANSWER_LIMIT:
+                    failure = "the test's answer was larger than %d bytes" % ANSWER_LIMIT
+                    break
+        finally:
+            os.close(read_fd)
+            try:
+                os.killpg(process.pid, signal.SIGKILL)
+            except (ProcessLookupError, PermissionError):
+                pass
+            process.wait()
+        printed.seek(0)
+        output = printed.read(4000).decode("utf-8", "replace")
+    if failure is None and not chunks:
+        failure = "the test process exited (code %s) before it answered" % process.returncode
+    if failure is not None:
+        return None, output, failure
+    try:
+        return json.loads(b"".join(chunks)), output, None
+    except ValueError:
+        return None, output, "the test's answer was not readable"
+
+
+def load_reference(check, reference_dir: Path = REFERENCE_DIR):
+    folder = Path(reference_dir) / check.assignment
+    if check.kind == "image":
+        return load_png(folder / (check.slug + ".png"))
+    observations = json.loads((folder / "observations.json").read_text())
+    return observations[check.slug]
+
+
+def check(assignment, root=".", out_dir=None, time_limit: float | None = None, log=None, only=None) -> Result:
+    """The visible tests of ``assignment`` on the rtfgu package in ``root``; with ``out_dir``,
+    summary.txt, results.json and diffs/ are written there."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    root = Path(root).resolve()
+    time_limit = a.time_limit if time_limit is None else time_limit
+    out_dir = Path(out_dir) if out_dir is not None else None
+    start = time.monotonic()
+    result = Result(a.id, str(root / "rtfgu"), isolation="none (your own code, on your machine)")
+    for c in checks_for(a.id):
+        if c.visibility != "visible" or (only is not None and c.slug not in only):
+            continue
+        t0 = time.monotonic()
+        data, output, failure = run_probe(root, c.probe, time_limit * 6 if c.kind == "image" else time_limit)
+        reference = load_reference(c)
+        image = None
+        if failure is not None:
+            fraction, lines = 0.0, [failure]
+        elif c.kind == "image":
+            diff = out_dir / "diffs" / (c.slug + ".png") if out_dir is not None else None
+            fraction, lines, image = judge_image(c, data, reference, diff)
+        else:
+            fraction, lines = judge_cases(c, data, reference)
+        if output.strip() and fraction < 1.0:
+            lines.append("What your code printed:\n" + output)
+        message = "\n".join(lines) if lines else "all cases right"
+        if fraction >= 1.0 and c.kind != "image":
+            message = "all %d cases right" % len(reference.get("cases", []))
+        test = TestResult(c.number, c.name, float(c.weight), round(c.weight * fraction, 4), c.visibility,
+                          message, str(image) if image else None)
+        result.tests.append(test)
+        if log:
+            log("%-5s %-70s %5.2f / %g  (%.1f s)" % (test.number, test.name[:70], test.score, test.max_score,
+                                                    time.monotonic() - t0))
+    result.execution_time = time.monotonic() - start
+    if out_dir is not None:
+        result.write(out_dir)
+    return result
+
+
+def render(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, log=print) -> int:
+    """Render the assignment's homework images with the student's code into ``out_dir``
+    (default renders/<aNN>); 0 if every image rendered (or there is none), 1 otherwise."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    root = Path(root).resolve()
+    if not a.images:
+        log("%s has no images to render: its tests are `make check A=%s`" % (a.id, a.short))
+        return 0
+    out = Path(out_dir) if out_dir is not None else root / "renders" / a.short
+    out.mkdir(parents=True, exist_ok=True)
+    failed = 0
+    for name in a.images:
+        data, output, failure = run_probe(root, ("images", "render_homework",
+                                                 {"scene": name, "width": width, "height": height}), 3600)
+        if failure is None and "error" in data:
+            failure = data["error"]
+        if failure is not None:
+            log("%s: the render failed: %s%s" % (name, failure, ("\n" + output) if output.strip() else ""))
+            failed += 1
+            continue
+        path = out / (name + ".png")
+        write_png(data["image"], path)
+        log(str(path))
+    if failed:
+        log("%d of %d images of %s failed to render" % (failed, len(a.images), a.id))
+    return 1 if failed else 0
+
+
+def main(argv=None) -> int:
+    import argparse
+
+    parser = argparse.ArgumentParser(prog="python -m rtfgu_checker",
+                                     description="the visible tests and the images of an assignment, on your code")
+    sub = parser.add_subparsers(dest="command", required=True)
+    sub.add_parser("list", help="the assignments")
+    p = sub.add_parser("check", help="the visible tests of an assignment (make check A=a03)")
+    p.add_argument("assignment")
+    p.add_argument("--root", default=".", help="the folder holding your rtfgu/ (default: here)")
+    p.add_argument("--out", default=None, help="default check-results/<aNN>")
+    p.add_argument("--time-limit", type=float, default=None, help="seconds per test")
+    p = sub.add_parser("render", help="the assignment's images, rendered with your code (make render A=a03)")
+    p.add_argument("assignment")
+    p.add_argument("--root", default=".")
+    p.add_argument("--out", default=None, help="default renders/<aNN>")
+    p.add_argument("--width", type=int, default=0)
+    p.add_argument("--height", type=int, default=0)
+    args = parser.parse_args(argv)
+    try:
+        if args.command == "list":
+            for a in ASSIGNMENTS.values():
+                print("%-40s %s" % (a.id, a.title))
+            return 0
+        a = get_assignment(args.assignment)
+        if args.command == "render":
+            return render(a, args.root, args.out, args.width, args.height)
+        out = args.out or str(Path(args.root) / "check-results" / a.short)
+        result = check(a, args.root, out, args.time_limit, log=lambda line: print(line, flush=True))
+        print(result.summary())
+        if any(t.image for t in result.tests):
+            print("diff images (yours | reference | differences in red): %s" % (Path(out) / "diffs"))
+        return 0 if result.score >= result.max_score - 1e-9 else 1
+    except ValueError as error:
+        parser.exit(2, "error: %s\n" % error)
