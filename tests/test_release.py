@@ -77,6 +77,7 @@ def test_the_probes_hold_no_hint_and_import_nothing_of_the_grader():
     visible = probe_files(keep_hidden=False)
     assert "a03_hidden.py" in files and "a03.py" in files and "boot.py" in files
     assert not [name for name in visible if "hidden" in name]
+    assert solution_lines_in(PACKAGE_DIR / "grading" / "probes") == []
     for name, text in files.items():
         if name.endswith(".py"):
             assert "def hint" not in text, name
