@@ -1,4 +1,4 @@
-"""The command line: ``python -m rtfgu list | render NAME | render-all | info | export-wgsl NAME``.
+"""The command line: ``python -m rtfgu list | render NAME | render-all | info | export-wgsl NAME | debug-pixel NAME X Y``.
 
 Errors in what the user typed (unknown scene, bad size, bad backend) exit with code 2 and a
 message naming the parameter, as argparse does for its own errors.
@@ -49,6 +49,35 @@ def _render_one(name, width, height, backend, precision, out, show_progress):
     return time.perf_counter() - start, width, height
 
 
+def _debug_pixel(args) -> None:
+    """Trace one pixel on every path and print them side by side (rtfgu/debug.py)."""
+    from .debug import PATHS, TOLERANCES, report, trace_pixel
+
+    fn = get_scene(args.name)
+    width = fn.size[0] if args.width is None else args.width
+    height = fn.size[1] if args.height is None else args.height
+    render_module.check_size(width, height)
+    scene = fn()
+    if isinstance(scene.camera, PinholeCamera) and (width, height) != tuple(fn.size):
+        scene.camera.aspect = width / height  # as render does for another size
+    traces, tolerances, notes = {}, {}, []
+    for label, backend, precision in PATHS:
+        formula = None if backend == "reference" else args.formula
+        try:
+            traces[label] = trace_pixel(scene, args.x, args.y, width, height, backend, precision, formula)
+        except NoAdapterError as error:
+            notes.append("%s: skipped, %s" % (label, error))
+            continue
+        tolerances[label] = TOLERANCES[precision]
+    formulas = ", ".join("%s %s" % (label, "slide" if backend == "reference" else
+                                    args.formula or render_module.DEFAULT_FORMULAS[backend])
+                         for label, backend, _ in PATHS if label in traces)
+    print(report("%s: pixel (%d, %d) of %dx%d; sphere formula: %s"
+                 % (args.name, args.x, args.y, width, height, formulas), traces, tolerances))
+    for note in notes:
+        print(note)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(prog="python -m rtfgu", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
@@ -78,6 +107,15 @@ def main(argv=None) -> int:
     p.add_argument("name")
     p.add_argument("-o", "--output", default=None, help="file path (default: standard output)")
 
+    p = sub.add_parser("debug-pixel", help="trace one pixel through every path, bounce by bounce")
+    p.add_argument("name")
+    p.add_argument("x", metavar="X", type=int, help="column, 0 at the left")
+    p.add_argument("y", metavar="Y", type=int, help="row, 0 at the top")
+    p.add_argument("--width", type=int, default=None)
+    p.add_argument("--height", type=int, default=None)
+    p.add_argument("--formula", default=None, choices=render_module.FORMULAS,
+                   help="the numba and wgpu sphere test (default: each backend's own)")
+
     args = parser.parse_args(argv)
     try:
         if args.command == "list":
@@ -99,6 +137,8 @@ def main(argv=None) -> int:
             from .wgsl import adapter_description
             print("wgpu adapter: %s" % adapter_description())
             print("backends: %s" % ", ".join(render_module.BACKENDS))
+        elif args.command == "debug-pixel":
+            _debug_pixel(args)
         elif args.command == "export-wgsl":
             from .layout import compile_scene
             from .wgsl import assemble

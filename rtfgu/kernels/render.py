@@ -37,6 +37,10 @@ PRIMARY = 0
 SHADOW = 1
 SECONDARY = 2
 
+# A row of record_bounce: [origin (3), direction (3), t, scene index, kind, shader,
+# normal (3), colour added (3)].
+RECORD_FIELDS = 16
+
 
 @njit(cache=True, error_model="numpy")
 def eye_candidates(eye, camera, tile_box, size, candidates):
@@ -65,13 +69,36 @@ def _typed_eye_terms(eye):
     return lambda eye: eye[0]
 
 
+def record_bounce(record, i, ray, hit, shader, normal, color):
+    """Bounce ``i`` of a path into ``record`` for the pixel debugger (rtfgu.kernels.debug
+    reads it); nothing at all when ``record`` is None, as in a render (typed by the
+    overload below)."""
+    return as_python(_typed_record_bounce, record, i, ray, hit, shader, normal, color)
+
+
+@overload(record_bounce, inline="always")
+def _typed_record_bounce(record, i, ray, hit, shader, normal, color):
+    if isinstance(record, types.NoneType):
+        return lambda record, i, ray, hit, shader, normal, color: None
+
+    def write(record, i, ray, hit, shader, normal, color):
+        row = record[i]
+        row[0], row[1], row[2] = ray[0]
+        row[3], row[4], row[5] = ray[1]
+        row[6], row[7], row[8], row[9] = hit[0], hit[1], hit[2], shader
+        row[10], row[11], row[12] = normal
+        row[13], row[14], row[15] = color
+    return write
+
+
 @njit(cache=True, error_model="numpy", inline="always")
-def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces):
+def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, record=None):
     """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
     path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
     Primary rays from a pinhole eye test the from-eye kind's ``candidates[:n_candidates]``
-    with its per-frame ``terms`` (n_candidates -1: no such eye). Returns (radiance, shadow
-    rays, secondary rays)."""
+    with its per-frame ``terms`` (n_candidates -1: no such eye). ``record``: None, or an
+    array that receives every bounce (record_bounce). Returns (radiance, shadow rays,
+    secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene
     shadows, show_ray_direction, formula = settings
@@ -87,6 +114,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
                                             origin, direction, tmin, tmax, formula)
         if idx < 0:
             result = add(result, load3(background, 0))
+            record_bounce(record, i, (origin, direction), (t, idx, kind), -1, direction, load3(background, 0))
             break
         # HitInfo: position = ray(t) = o + d t, the normal of the shape hit, its material.
         position = add(origin, scale(direction, t))
@@ -99,6 +127,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
             shader, materials[idx], direction, (position, normal), lights, shapes, shadows,
             bounces, formula)
         result = add(result, color)
+        record_bounce(record, i, (origin, direction), (t, idx, kind), shader, normal, color)
         n_shadow += shadow_rays
         if has_hit:
             break

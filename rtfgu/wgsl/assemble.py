@@ -327,7 +327,7 @@ def _header(flat, features, bindings) -> str:
 
 
 def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
-             formula: str | None = None) -> Program:
+             formula: str | None = None, entry: str = "main.wgsl") -> Program:
     """The WGSL program for the FlatScene ``flat`` (float32 layout).
 
     scene_buffer: "uniform" or "storage", the address space of the scene arrays (an array
@@ -335,7 +335,9 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
     overrides: {file name: WGSL text} used instead of the package's file, e.g. a student's
     own lambertian.wgsl.
     formula: the intersection formula, "slide" or "robust" (None: DEFAULT_SPHERE_FORMULA),
-    for every shape kind that has it."""
+    for every shape kind that has it.
+    entry: the piece with ``fn main``: main.wgsl (the image) or debug_main.wgsl (the
+    pixel debugger's records, rtfgu/wgsl/debug.py), which adds the feature "debug"."""
     formula = check_formula(formula)
     overrides = dict(overrides or {})
     unknown = set(overrides) - set(piece_names())
@@ -343,6 +345,8 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
         raise ValueError("overrides: unknown WGSL file(s) %s; known: %s"
                          % (", ".join(sorted(unknown)), ", ".join(piece_names())))
     features = scene_features(flat)
+    if entry != "main.wgsl":
+        features |= {"debug"}
     bindings = _bindings(flat, features, scene_buffer)
     each = each_kinds(flat, features, formula)
     lines, origin, used = [], [], []
@@ -350,6 +354,8 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
         lines.append(line)
         origin.append((GENERATED, number))
     for name, source in pieces(features, formula):
+        if name == "main.wgsl":
+            source = entry
         if name in overrides:
             source = name
         used.append(source)

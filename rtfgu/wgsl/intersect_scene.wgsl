@@ -28,6 +28,12 @@ fn next_up(x: f32) -> f32
     return bitcast<f32>(bitcast<u32>(x) + 1u);
 }
 
+// #if debug
+// For the pixel debugger (debug_main.wgsl): the place in Scene.shapes of the shape the
+// last intersect_scene hit, -1 for none.
+var<private> hit_shape: i32;
+// #endif
+
 fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
 {
     var shape = -1;  // place in Scene.shapes of the nearest shape hit so far
@@ -48,6 +54,9 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
         }
     }
     // #end
+    // #if debug
+    hit_shape = shape;
+    // #endif
     // #if shapes
     if (shape >= 0) {
         set_material(hit, u32(shape));
