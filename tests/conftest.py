@@ -39,3 +39,40 @@ def reference_images_dir() -> Path:
 def output_dir() -> Path:
     """Where a failing image test writes its images; created only when something is written."""
     return OUTPUT_DIR
+
+
+# Every path a scene can be rendered on: (label, backend, precision).
+PATHS = (("reference", "reference", "float64"), ("numba-float64", "numba", "float64"),
+         ("numba-float32", "numba", "float32"), ("wgpu-float32", "wgpu", "float32"))
+
+
+class RenderPath:
+    """One path as a contract test sees it: ``trace(scene, rays)`` runs the given rays
+    (origin, direction, tmin, tmax) through ``scene`` on this path in one call and returns
+    each ray's bounces (rtfgu.debug.trace_rays); ``label`` names it in a failure."""
+
+    def __init__(self, label, backend, precision):
+        self.label, self.backend, self.precision = label, backend, precision
+
+    def trace(self, scene, rays):
+        from rtfgu.debug import trace_rays
+
+        return trace_rays(scene, rays, self.backend, self.precision)
+
+    def __repr__(self):
+        return self.label
+
+
+@pytest.fixture(params=PATHS, ids=[label for label, _, _ in PATHS])
+def path(request) -> RenderPath:
+    """Each path in turn; the WGSL one is skipped only where no adapter exists, with the
+    package to install in the reason (rtfgu.wgsl.device)."""
+    label, backend, precision = request.param
+    if backend == "wgpu":
+        from rtfgu.wgsl.device import NoAdapterError, get_device
+
+        try:
+            get_device()
+        except NoAdapterError as error:
+            pytest.skip(str(error))
+    return RenderPath(label, backend, precision)

@@ -10,12 +10,12 @@
 // uniforms.tile_origin (column, row with row 0 at the top), as main.wgsl does.
 const DEBUG_STRIDE = 2u + 4u * u32(max_depth);
 
-fn record_bounce(base: u32, origin: vec3f, direction: vec3f, hit: HitInfo, shape: i32,
-                 color: vec3f, what: f32)
+fn record_bounce(base: u32, origin: vec3f, direction: vec3f, t: f32, shader: i32, normal: vec3f,
+                 shape: i32, color: vec3f, what: f32)
 {
-    image[base] = vec4f(origin, hit.dist);
-    image[base + 1u] = vec4f(direction, f32(hit.shader));
-    image[base + 2u] = vec4f(hit.normal, f32(shape));
+    image[base] = vec4f(origin, t);
+    image[base + 1u] = vec4f(direction, f32(shader));
+    image[base + 2u] = vec4f(normal, f32(shape));
     image[base + 3u] = vec4f(color, what);
 }
 
@@ -40,19 +40,21 @@ fn main(@builtin(global_invocation_id) id: vec3u)
     for (var k = 2u; k < DEBUG_STRIDE; k++) {
         image[start + k] = vec4f(0.0);
     }
-    var hit = empty_hit();
     // #if ray_direction
-    record_bounce(start + 2u, r.origin, r.direction, hit, -1, r.direction * 0.5 + vec3f(0.5), 3.0);
+    record_bounce(start + 2u, r.origin, r.direction, 0.0, -1, vec3f(0.0), -1,
+                  r.direction * 0.5 + vec3f(0.5), 3.0);
     // #else
+    var hit = empty_hit();
     for (var i = 0; i < max_depth; i++) {
         let base = start + 2u + 4u * u32(i);
         let origin = r.origin;
         let direction = r.direction;
         if (intersect_scene(&r, &hit)) {
             let found = hit;  // before shade moves the ray on
-            record_bounce(base, origin, direction, found, hit_shape, shade(&r, &hit), 1.0);
+            record_bounce(base, origin, direction, found.dist, found.shader, found.normal, hit_shape,
+                          shade(&r, &hit), 1.0);
         } else {
-            record_bounce(base, origin, direction, hit, -1, uniforms.background, 2.0);
+            record_bounce(base, origin, direction, 0.0, -1, vec3f(0.0), -1, uniforms.background, 2.0);
             break;
         }
         if (hit.has_hit) {

@@ -1,0 +1,345 @@
+"""Contract tests: every shape kind, every shader and the tie rule on every path (the
+``path`` fixture of conftest.py: reference, numba float64 and float32, WGSL), as Mitsuba
+3's variant fixtures run one test on every variant. A case traces given rays through a
+small scene (rtfgu.debug.trace_rays) and checks the first bounce, so a failure reads
+"numba-float32 triangle: hit at tmax", not "N pixels off".
+
+Shape kinds come from rtfgu.registry.SHAPES: each registered kind needs an entry in
+SHAPE_CASES (its shape, its rays, an exact oracle in fractions, and a shape for the tie
+cases), or test_every_shape_kind_has_cases fails. Expected values are exact: the inputs
+are small dyadic numbers, so the hit distances and normals are exact in both precisions.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+import pytest
+
+from rtfgu import Disk, Float3, OrthographicCamera, Plane, Scene, Sphere, Triangle
+from rtfgu.lights import PointLight
+from rtfgu.material import LAMBERTIAN, Material
+from rtfgu.registry import SHADERS, SHAPES, shape_kind_of
+from rtfgu.shading import AMBIENT_FRACTION, DIFFUSE_FRACTION, SPAWN_EPSILON
+
+INF = math.inf
+# How close a path's number must be to the exact one: a float64 path's to the last few
+# bits, a float32 path's to a few float32 roundings.
+CLOSE = {"float64": 1e-14, "float32": 1e-6}
+GREY = (0.5, 0.25, 1.0)
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    origin: tuple
+    direction: tuple
+    tmin: float = 0.0
+    tmax: float = INF
+    hits: bool = True  # what the case is about; test_cases_say_what_they_test checks it
+
+    @property
+    def ray(self):
+        return self.origin, self.direction, self.tmin, self.tmax
+
+
+def F(v) -> tuple:
+    """A vector (a Float3 or a tuple) in fractions."""
+    if isinstance(v, Float3):
+        v = (v.x, v.y, v.z)
+    return tuple(Fraction(c) for c in v)
+
+
+def dot(a, b):
+    return sum(x * y for x, y in zip(a, b))
+
+
+def sub(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+def cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def exact_sqrt(q: Fraction) -> Fraction:
+    n, d = math.isqrt(q.numerator), math.isqrt(q.denominator)
+    assert n * n == q.numerator and d * d == q.denominator, "the test's inputs must keep %s a square" % q
+    return Fraction(n, d)
+
+
+def unit(v) -> tuple:
+    length = exact_sqrt(dot(v, v))
+    return tuple(c / length for c in v)
+
+
+def in_range(t, case) -> bool:
+    """The slides' interval [tmin, tmax)."""
+    return t >= Fraction(case.tmin) and (case.tmax == INF or t < Fraction(case.tmax))
+
+
+# The oracles: the slide formulas in fractions. (t, unit normal) or None for a miss.
+def exact_plane(shape, case):
+    o, d, p, n = F(case.origin), F(case.direction), F(shape.point), F(shape.normal)
+    if dot(d, n) == 0:
+        return None
+    t = dot(sub(p, o), n) / dot(d, n)
+    return (t, unit(n)) if in_range(t, case) else None
+
+
+def exact_disk(shape, case):
+    hit = exact_plane(Plane(shape.center, shape.normal, GREY), case)
+    if hit is None:
+        return None
+    to_hit = sub(tuple(o + hit[0] * d for o, d in zip(F(case.origin), F(case.direction))),
+                 F(shape.center))
+    return hit if dot(to_hit, to_hit) <= Fraction(shape.radius) ** 2 else None
+
+
+def exact_triangle(shape, case):
+    o, d = F(case.origin), F(case.direction)
+    v0, e0, e1 = F(shape.v0), F(shape.e0), F(shape.e1)
+    n = cross(e0, e1)
+    if dot(d, n) == 0:
+        return None
+    a = sub(v0, o)
+    t = dot(a, n) / dot(d, n)
+    c = cross(a, d)
+    beta, gamma = dot(c, e1) / dot(d, n), -dot(c, e0) / dot(d, n)
+    if in_range(t, case) and beta >= 0 and gamma >= 0 and beta + gamma <= 1:
+        return t, unit(n)
+    return None
+
+
+def exact_sphere(shape, case):
+    o, d, c = F(case.origin), F(case.direction), F(shape.center)
+    r = Fraction(shape.radius)
+    temp = sub(o, c)
+    a, b, cc = dot(d, d), 2 * dot(temp, d), dot(temp, temp) - r * r
+    disc = b * b - 4 * a * cc
+    if disc < 0:
+        return None
+    for t in sorted(((-b - exact_sqrt(disc)) / (2 * a), (-b + exact_sqrt(disc)) / (2 * a))):
+        if in_range(t, case):
+            return t, tuple((oc + t * dc - cc_) / r for oc, dc, cc_ in zip(o, d, c))
+    return None
+
+
+@dataclass(frozen=True)
+class KindCases:
+    shape: object        # a function of the material: the kind's shape for `cases`
+    cases: tuple
+    exact: object        # (shape, case) -> (t, normal) or None
+    coincident: object   # a function of the material: a shape whose first hit by TIE_RAY is at t = 2
+
+
+# Every tie shape is first hit by this ray at (0.25, 0.25, 0), t = 2.
+TIE_RAY = ((0.25, 0.25, 2.0), (0.0, 0.0, -1.0), 0.0, INF)
+
+SHAPE_CASES = {
+    "plane": KindCases(
+        lambda m: Plane((0.0, 0.0, 0.0), (0.0, 0.0, 2.0), GREY, m),
+        (Case("hit", (0.25, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (1.0, 2.0, 4.0), (1.0, 1.0, -2.0)),
+         Case("hit from below", (0.5, 0.5, -1.5), (0.0, 0.0, 1.0)),
+         Case("hit at tmin", (0.0, 0.0, 3.0), (0.0, 0.0, -1.0), tmin=3.0),
+         Case("miss behind the ray", (0.0, 0.0, 3.0), (0.0, 0.0, 1.0), hits=False),
+         Case("ray parallel to the plane", (0.0, 0.0, 1.0), (1.0, 0.5, 0.0), hits=False),
+         Case("ray in the plane", (0.0, 0.0, 0.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.0, 0.0, 3.0), (0.0, 0.0, -1.0), tmax=3.0, hits=False)),
+        exact_plane,
+        lambda m: Plane((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), GREY, m)),
+    "triangle": KindCases(
+        lambda m: Triangle((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), GREY, m),
+        (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 1.0), (0.5, 0.25, -1.0)),
+         Case("hit on the edge beta + gamma = 1", (1.0, 1.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the edge gamma = 0", (1.0, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on a vertex", (0.0, 2.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("miss beyond the edge", (1.25, 1.0, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beside the triangle", (-0.25, 0.5, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the triangle", (0.5, 0.25, 1.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_triangle,
+        lambda m: Triangle((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m)),
+    "sphere": KindCases(
+        lambda m: Sphere((0.0, 0.0, 0.0), 1.0, GREY, m),
+        (Case("hit", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("hit along an axis", (-4.0, 0.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("hit from inside (the far root)", (0.0, 0.0, 0.0), (0.0, 0.0, -1.0)),
+         Case("tangent ray (the rim)", (1.0, 0.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("miss beside the sphere", (2.0, 0.0, 5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss behind the ray", (0.0, 0.0, -5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("hit at tmax (the far root beyond it)", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0), tmax=4.0,
+              hits=False)),
+        exact_sphere,
+        lambda m: Sphere((0.25, 0.25, -1.0), 1.0, GREY, m)),
+    "disk": KindCases(
+        lambda m: Disk((0.0, 0.0, 0.0), (0.0, 0.0, 2.0), 1.0, GREY, m),
+        (Case("hit", (0.5, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 2.0), (0.25, 0.25, -1.0)),
+         Case("hit on the rim", (1.0, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("miss beyond the rim", (1.0, 0.25, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the disk", (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.5, 0.0, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_disk,
+        lambda m: Disk((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 1.0, GREY, m)),
+}
+
+SHAPE_NAMES = [kind.name for kind in SHAPES]
+SHAPE_CASE_IDS = [(kind, case.name) for kind in SHAPE_NAMES
+                  for case in (SHAPE_CASES[kind].cases if kind in SHAPE_CASES else ())]
+
+
+def _scene(shapes, lights=(), background=(0.0, 0.0, 0.0)):
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))  # the rays are given: no pixel is traced
+    scene.shapes = list(shapes)
+    scene.lights = list(lights)
+    scene.background = Float3(*background)
+    return scene
+
+
+_RUNS = {}
+
+
+def _shape_runs(path, kind):
+    """The shape of ``kind`` and the bounces of every case of it on ``path``, all traced in
+    one call of the path (one WGSL dispatch)."""
+    if (path.label, kind) not in _RUNS:
+        entry = SHAPE_CASES[kind]
+        scene = _scene([entry.shape(Material(LAMBERTIAN))])
+        _RUNS[path.label, kind] = (scene.shapes[0], dict(zip(
+            (c.name for c in entry.cases), path.trace(scene, [c.ray for c in entry.cases]))))
+    return _RUNS[path.label, kind]
+
+
+def _close(got, exact, precision) -> bool:
+    tolerance = CLOSE[precision]
+    return all(abs(g - float(e)) <= tolerance * max(1.0, abs(float(e)))
+               for g, e in zip(got if isinstance(got, tuple) else (got,),
+                               exact if isinstance(exact, tuple) else (exact,)))
+
+
+def test_every_shape_kind_has_cases():
+    missing = [name for name in SHAPE_NAMES if name not in SHAPE_CASES]
+    assert not missing, ("registered shape kinds without contract cases in tests/test_contract.py "
+                         "SHAPE_CASES: %s" % ", ".join(missing))
+
+
+@pytest.mark.parametrize("kind,case", SHAPE_CASE_IDS, ids=["%s: %s" % k for k in SHAPE_CASE_IDS])
+def test_cases_say_what_they_test(kind, case):
+    """The oracle agrees with each case's name: a "hit" hits, a miss (parallel, at tmax,
+    beyond the rim) misses."""
+    entry = SHAPE_CASES[kind]
+    c = next(c for c in entry.cases if c.name == case)
+    assert (entry.exact(entry.shape(Material(LAMBERTIAN)), c) is not None) == c.hits
+
+
+@pytest.mark.parametrize("kind,case", SHAPE_CASE_IDS, ids=["%s: %s" % k for k in SHAPE_CASE_IDS])
+def test_shape_contract(path, kind, case):
+    shape, runs = _shape_runs(path, kind)
+    c = next(c for c in SHAPE_CASES[kind].cases if c.name == case)
+    exact = SHAPE_CASES[kind].exact(shape, c)
+    first = runs[case][0]
+    where = "%s %s: %s" % (path.label, kind, case)
+    if exact is None:
+        assert first.shape is None, "%s: expected a miss, got shape %s at t = %r" % (where, first.shape, first.t)
+        return
+    t, normal = exact
+    assert first.shape == 0 and first.kind == kind, "%s: expected a hit on the %s, got %r" % (where, kind, first)
+    assert _close(first.t, t, path.precision), "%s: t = %r, exactly %s" % (where, first.t, t)
+    assert _close(first.normal, normal, path.precision), (
+        "%s: normal %r, exactly %s" % (where, first.normal, tuple(map(str, normal))))
+
+
+# Shaders: one hit on the plane z = 0 at the origin by a ray at 3-4-5 angles, one point light
+# at (3, 0, 4): w_i = (0.6, 0, 0.8), n . w_i = 0.8, L_i = I / 25 = (1, 2, 3) (Kepler), and
+# the light's mirror direction w_r = w_o, so the Phong lobe is at its peak (cos^s = 1).
+SHADER_RAY = ((-1.5, 0.0, 2.0), (0.6, 0.0, -0.8), 0.0, INF)
+LIGHT = PointLight((3.0, 0.0, 4.0), (25.0, 50.0, 75.0))
+L_I, COS_THETA = (1.0, 2.0, 3.0), 0.8
+SPECULAR, SHININESS, IOR, EMISSION = (0.25, 0.5, 0.75), 4.0, 1.5, (0.125, 0.25, 0.0625)
+BACKGROUND = (0.1, 0.3, 0.6)
+
+
+def lambertian_color():
+    # 02562 "Sampling light in the shader": L_e + rho_d / pi L_i (n . w_i) + L_a
+    return tuple(e + AMBIENT_FRACTION * c + DIFFUSE_FRACTION * c / math.pi * L * COS_THETA
+                 for e, c, L in zip(EMISSION, GREY, L_I))
+
+
+def phong_color():
+    # 02562 worksheet 3: (rho_d / pi + rho_s (s + 2) / (2 pi) (w_o . w_r)^s) L_i (n . w_i) + L_a
+    return tuple(e + AMBIENT_FRACTION * c
+                 + (DIFFUSE_FRACTION * c / math.pi + s * (SHININESS + 2) / (2 * math.pi)) * L * COS_THETA
+                 for e, c, s, L in zip(EMISSION, GREY, SPECULAR, L_I))
+
+
+def refracted():
+    # Snell's law entering with eta = 1 / ior: d eta + n (eta cos_i - cos_t)
+    d, eta, cos_i = SHADER_RAY[1], 1 / IOR, 0.8
+    cos_t = math.sqrt(1 - eta * eta * (1 - cos_i * cos_i))
+    return (d[0] * eta, 0.0, d[2] * eta + (eta * cos_i - cos_t))
+
+
+# Per registered shader: (the colour its first bounce adds, the next ray's direction or
+# None when the shader ends the path).
+SHADER_CASES = {
+    "base_color": (lambda: GREY, None),
+    "lambertian": (lambertian_color, None),
+    "phong": (phong_color, None),
+    "mirror": (lambda: EMISSION, lambda: (0.6, 0.0, 0.8)),
+    "transparent": (lambda: EMISSION, refracted),
+    "glossy": (phong_color, refracted),
+}
+SHADER_NAMES = [kind.name for kind in SHADERS]
+
+
+def test_every_shader_has_a_case():
+    missing = [name for name in SHADER_NAMES if name not in SHADER_CASES]
+    assert not missing, "registered shaders without a contract case in SHADER_CASES: %s" % ", ".join(missing)
+
+
+@pytest.mark.parametrize("shader", SHADER_NAMES)
+def test_shader_contract(path, shader):
+    kind = next(k for k in SHADERS if k.name == shader)
+    material = Material(kind.id, specular=SPECULAR, shininess=SHININESS, ior=IOR, emission=EMISSION)
+    scene = _scene([Plane((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), GREY, material)], [LIGHT], BACKGROUND)
+    bounces = path.trace(scene, [SHADER_RAY])[0]
+    color, next_direction = SHADER_CASES[shader]
+    where = "%s %s: one hit, one light" % (path.label, shader)
+    first = bounces[0]
+    assert first.shape == 0 and first.shader == shader, "%s: %r" % (where, first)
+    assert _close(first.color, color(), path.precision), (
+        "%s: colour %r, the lecture's formula gives %r" % (where, first.color, color()))
+    if next_direction is None:
+        assert len(bounces) == 1, "%s: the shader ends the path, got %d bounces" % (where, len(bounces))
+        return
+    assert len(bounces) == 2, "%s: the next ray leaves the scene, got %d bounces" % (where, len(bounces))
+    assert _close(bounces[1].direction, next_direction(), path.precision), (
+        "%s: next direction %r, expected %r" % (where, bounces[1].direction, next_direction()))
+    assert bounces[1].shape is None and _close(bounces[1].color, BACKGROUND, path.precision)
+    assert abs(bounces[1].origin[2]) <= CLOSE[path.precision] < SPAWN_EPSILON
+
+
+# Ties: two shapes of different kinds first hit by TIE_RAY at exactly the same t: the one
+# earlier in Scene.shapes wins, on every path, in both orders.
+TIE_PAIRS = [(a, b) for i, a in enumerate(SHAPE_NAMES) for b in SHAPE_NAMES[i + 1:]]
+TIE_CASES = [(a, b) for a, b in TIE_PAIRS] + [(b, a) for a, b in TIE_PAIRS]
+
+
+@pytest.mark.parametrize("first,second", TIE_CASES, ids=["%s before %s" % c for c in TIE_CASES])
+def test_tie_earlier_shape_wins(path, first, second):
+    for name in (first, second):
+        if name not in SHAPE_CASES:
+            pytest.fail("registered shape kind %s has no coincident shape in SHAPE_CASES" % name)
+    shapes = [SHAPE_CASES[name].coincident(Material(LAMBERTIAN)) for name in (first, second)]
+    for shape in shapes:  # the case itself: each shape alone is hit at exactly t = 2
+        alone = SHAPE_CASES[shape_kind_of(shape)[1].name].exact(shape, Case("tie", *TIE_RAY))
+        assert alone is not None and alone[0] == 2
+    hit = path.trace(_scene(shapes), [TIE_RAY])[0][0]
+    assert (hit.shape, hit.kind) == (0, first), (
+        "%s tie, %s before %s in Scene.shapes: the %s (Scene.shapes[%s]) won at t = %r"
+        % (path.label, first, second, hit.kind, hit.shape, hit.t))
+    assert hit.t == 2.0
