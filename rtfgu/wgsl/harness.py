@@ -24,7 +24,7 @@ import numpy as np
 from . import structs
 from .assemble import GENERATED, Program, read_piece, select_lines
 from .device import get_device
-from .runner import _PIPELINES, _compile_error
+from .runner import _PIPELINES, WGSLCompileError, _compile_error  # noqa: F401 (WGSLCompileError: what a failing compile raises)
 
 WORKGROUP = 64
 

@@ -50,39 +50,21 @@ CALLS = {
 def _run_on_gpu(rt, function: str, rows):
     """rows: one list of 24 floats per case; returns (returned, has_hit, dist, position, normal) per case."""
     import numpy as np
-    import wgpu
 
-    structs = importlib.import_module("rtfgu.wgsl.structs")
-    device_module = importlib.import_module("rtfgu.wgsl.device")
+    harness = importlib.import_module("rtfgu.wgsl.harness")
     folder = Path(rt.__file__).parent / "wgsl"
-    pieces = [structs.constants_wgsl(), (folder / "ray.wgsl").read_text(), (folder / "hitinfo.wgsl").read_text(),
-              (folder / (function + ".wgsl")).read_text(), KERNEL % {"call": CALLS[function]}]
-    source = "\n".join(pieces)
-    _, device = device_module.get_device()
+    names = ["ray.wgsl", "hitinfo.wgsl", function + ".wgsl"]
+    overrides = {name: (folder / name).read_text() for name in names}
+    overrides["a06_kernel.wgsl"] = KERNEL % {"call": CALLS[function]}
+    program = harness.batch_program(names + ["a06_kernel.wgsl"], overrides=overrides)
     try:
-        module = device.create_shader_module(code=source)
-        pipeline = device.create_compute_pipeline(layout="auto", compute={"module": module, "entry_point": "main"})
-    except Exception as error:
+        out = harness.run_batch(program, [np.asarray(rows, dtype=np.float32)], len(rows), vec4s=3).astype(float)
+    except harness.WGSLCompileError as error:
         text = str(error)
         if "TODO_a06_" in text:
             raise StudentError("%s is not written yet: its stub names TODO_a06_%s, so the shader does not compile"
                                % (function, function)) from None
         raise StudentError("your %s.wgsl does not compile: %s" % (function, text.strip()[:1500])) from None
-    data = np.asarray(rows, dtype=np.float32).reshape(-1)
-    n = len(rows)
-    cases = device.create_buffer_with_data(data=data.tobytes(), usage=wgpu.BufferUsage.STORAGE)
-    results = device.create_buffer(size=n * 48, usage=wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.COPY_SRC)
-    group = device.create_bind_group(layout=pipeline.get_bind_group_layout(0), entries=[
-        {"binding": 0, "resource": {"buffer": cases, "offset": 0, "size": cases.size}},
-        {"binding": 1, "resource": {"buffer": results, "offset": 0, "size": results.size}}])
-    encoder = device.create_command_encoder()
-    compute = encoder.begin_compute_pass()
-    compute.set_pipeline(pipeline)
-    compute.set_bind_group(0, group)
-    compute.dispatch_workgroups((n + 63) // 64)
-    compute.end()
-    device.queue.submit([encoder.finish()])
-    out = np.frombuffer(device.queue.read_buffer(results), dtype=np.float32).reshape(n, 3, 4).astype(float)
     return [(bool(o[0, 0] > 0.5), bool(o[0, 1] > 0.5), float(o[0, 2]), o[1, :3].tolist(), o[2, :3].tolist())
             for o in out]
 
