@@ -1,0 +1,120 @@
+"""The pixel debugger (rtfgu/debug.py, ``python -m rtfgu debug-pixel``): where float32 and
+float64 part, it names the bounce and the field; where they agree, it says so.
+
+The scene where they part: an orthographic view of a mirror, which sends every ray up
+to a sphere of radius 0.5 at distance 10^4. In float32 the lecture's quadratic loses
+r^2 = 0.25 next to c = |o - center|^2 = 10^8 (float32 keeps 24 bits, steps of 8 there), so
+the float32 slide formula hits the sphere where float64 sees the background; the robust
+formula (Ray Tracing Gems ch. 7) keeps it.
+"""
+from __future__ import annotations
+
+import pytest
+
+from rtfgu import Float3, OrthographicCamera, Plane, Scene, Sphere
+from rtfgu.__main__ import main
+from rtfgu.debug import TOLERANCES, Bounce, first_difference, trace_pixel
+from rtfgu.material import LAMBERTIAN, MIRROR, Material
+from rtfgu.scenes import get_scene
+from wgsl_support import wgpu_device  # noqa: F401  (fixture)
+
+SIZE = 8
+BESIDE_THE_SPHERE = (0, 0)  # the mirrored ray passes the far sphere by 0.7 radii
+
+
+def far_sphere_in_a_mirror():
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes = [Plane((0.0, 0.0, -1.0), (0.0, 0.0, 1.0), (1.0, 1.0, 1.0), Material(MIRROR)),
+                    Sphere((0.0, 0.0, 1.0e4), 0.5, (1.0, 0.0, 0.0), Material(LAMBERTIAN))]
+    scene.background = Float3(0.1, 0.3, 0.6)
+    return scene
+
+
+far_sphere_in_a_mirror.size = (SIZE, SIZE)
+
+
+def test_float32_slide_formula_differs_at_the_second_bounce_shape():
+    scene = far_sphere_in_a_mirror()
+    reference = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE)
+    f32 = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE, "numba", "float32", "slide")
+    assert [b.shader for b in reference] == ["mirror", "background"]
+    difference = first_difference(reference, f32, TOLERANCES["float32"])
+    assert difference is not None
+    assert (difference.bounce, difference.field) == (1, "shape")
+    assert (difference.first, difference.second) == (None, 1)
+
+
+def test_float64_agrees_with_the_reference_bit_for_bit():
+    scene = far_sphere_in_a_mirror()
+    for x, y in (BESIDE_THE_SPHERE, (3, 3)):
+        reference = trace_pixel(scene, x, y, SIZE, SIZE)
+        assert first_difference(reference, trace_pixel(scene, x, y, SIZE, SIZE, "numba", "float64"), 0.0) is None
+
+
+def test_float32_robust_formula_agrees():
+    scene = far_sphere_in_a_mirror()
+    reference = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE)
+    f32 = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE, "numba", "float32", "robust")
+    assert first_difference(reference, f32, TOLERANCES["float32"]) is None
+
+
+def test_refraction_drifts_within_the_float32_tolerance():
+    """Three bounces through the refractive sphere: the float32 path's directions drift
+    from float64's, but stay within the tolerance, so nothing is reported."""
+    scene = get_scene("default_refractive_sphere")()
+    reference = trace_pixel(scene, 16, 18, 32, 32)
+    f32 = trace_pixel(scene, 16, 18, 32, 32, "numba", "float32")
+    assert [b.shader for b in reference] == ["transparent", "transparent", "background"]
+    assert reference[1].direction != f32[1].direction
+    assert first_difference(reference, f32, TOLERANCES["float32"]) is None
+
+
+def test_wgpu_slide_formula_differs_where_numba_float32_does(wgpu_device):
+    scene = far_sphere_in_a_mirror()
+    reference = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE)
+    wgpu = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE, "wgpu", formula="slide")
+    difference = first_difference(reference, wgpu, TOLERANCES["float32"])
+    assert difference is not None and (difference.bounce, difference.field) == (1, "shape")
+    robust = trace_pixel(scene, *BESIDE_THE_SPHERE, SIZE, SIZE, "wgpu", formula="robust")
+    assert first_difference(reference, robust, TOLERANCES["float32"]) is None
+
+
+def test_first_difference_order_and_lengths():
+    hit = Bounce((0.0, 0.0, 0.0), (0.0, 0.0, -1.0), 0, "plane", 1.0, (0.0, 0.0, 1.0), "lambertian",
+                 (0.5, 0.5, 0.5))
+    moved = Bounce((0.0, 0.0, 0.0), (0.0, 0.0, -1.0), 0, "plane", 1.0 + 1e-6, (0.0, 0.0, 1.0),
+                   "lambertian", (0.25, 0.5, 0.5))
+    assert first_difference([hit], [hit]) is None
+    assert first_difference([hit], [moved], 1e-4).field == "color"   # t within, colour not
+    assert first_difference([hit], [moved], 0.0).field == "t"        # t comes before colour
+    assert first_difference([hit], [hit, hit]) == (1, "bounces", 1, 2)
+
+
+def test_cli_prints_the_paths_and_marks_the_first_difference(monkeypatch, capsys):
+    monkeypatch.setattr("rtfgu.__main__.get_scene", lambda name: far_sphere_in_a_mirror)
+    assert main(["debug-pixel", "far_sphere", "0", "0", "--formula", "slide"]) == 0
+    out = capsys.readouterr().out
+    assert "reference" in out and "numba-float64" in out and "numba-float32" in out
+    assert "1 shape" in out and "<< first" in out
+    assert "numba-float64 agrees with reference (exact)" in out
+    assert "numba-float32 first differs from reference at bounce 1, shape: 1 against None" in out
+
+
+def test_cli_agreeing_pixel(capsys):
+    assert main(["debug-pixel", "default_refractive_sphere", "16", "18", "--width", "32",
+                 "--height", "32"]) == 0
+    out = capsys.readouterr().out
+    assert "0 shader" in out and "transparent" in out and "2 color" in out
+    assert "numba-float32 agrees with reference" in out and "<< first" not in out
+
+
+@pytest.mark.parametrize("argv,name", [
+    (["default_lambertian", "32", "0", "--width", "32", "--height", "32"], "X"),
+    (["default_lambertian", "0", "-1", "--width", "32", "--height", "32"], "Y"),
+    (["default_lambertian", "0", "0", "--width", "0"], "width"),
+])
+def test_cli_bad_pixel_exits_2(argv, name, capsys):
+    with pytest.raises(SystemExit) as exit_info:
+        main(["debug-pixel"] + argv)
+    assert exit_info.value.code == 2
+    assert "%s must be" % name in capsys.readouterr().err
