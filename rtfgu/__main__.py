@@ -51,7 +51,7 @@ def _render_one(name, width, height, backend, precision, out, show_progress):
 
 def _debug_pixel(args) -> None:
     """Trace one pixel on every path and print them side by side (rtfgu/debug.py)."""
-    from .debug import PATHS, TOLERANCES, report, trace_pixel
+    from .debug import PATHS, TOLERANCES, PathNotInRelease, report, trace_pixel
 
     fn = get_scene(args.name)
     width = fn.size[0] if args.width is None else args.width
@@ -65,7 +65,7 @@ def _debug_pixel(args) -> None:
         formula = None if backend == "reference" else args.formula
         try:
             traces[label] = trace_pixel(scene, args.x, args.y, width, height, backend, precision, formula)
-        except NoAdapterError as error:
+        except (NoAdapterError, PathNotInRelease) as error:
             notes.append("%s: skipped, %s" % (label, error))
             continue
         tolerances[label] = TOLERANCES[precision]

@@ -21,6 +21,7 @@ operations in its order), a float32 path within FLOAT32_TOLERANCE.
 from __future__ import annotations
 
 import copy
+import importlib.util
 import math
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -61,6 +62,12 @@ class Bounce:
     normal: tuple | None
     shader: str
     color: tuple             # the radiance this bounce added
+
+
+class PathNotInRelease(ValueError):
+    """A path this copy of rtfgu leaves out: a student release has neither the numba
+    kernels nor the WGSL pieces of the assignments it does not reveal
+    (rtfgu.grading.release); the debugger then traces the paths it has."""
 
 
 class Difference(NamedTuple):
@@ -196,6 +203,9 @@ def _trace(scene, backend, precision, formula, pixel=None, rays=None) -> list:
     if pixel is None:
         rays = [tuple(o) + tuple(d) + (tmin, tmax) for o, d, tmin, tmax in rays]
     if backend == "numba":
+        if importlib.util.find_spec(__package__ + ".kernels") is None:
+            raise PathNotInRelease("the numba path is not part of this release of rtfgu (it computes "
+                                   "the assignments' functions again)")
         from .kernels.debug import numba_records
         from .layout import compile_scene
 
@@ -205,9 +215,14 @@ def _trace(scene, backend, precision, formula, pixel=None, rays=None) -> list:
         records = numba_records(compile_scene(scene, precision), formula, pixel, rays)
         miss = "ray direction" if scene.show_ray_direction else "background"
         return [_from_numba(r, miss) for r in records]
+    from .wgsl.assemble import PieceNotInRelease
     from .wgsl.debug import wgpu_records
 
-    return [_from_wgpu(scene, r) for r in wgpu_records(scene, formula, pixel, rays)]
+    try:
+        records = wgpu_records(scene, formula, pixel, rays)
+    except PieceNotInRelease as error:
+        raise PathNotInRelease(str(error)) from None
+    return [_from_wgpu(scene, r) for r in records]
 
 
 def _check_pixel(x, y, width, height) -> None:

@@ -118,3 +118,27 @@ def test_cli_bad_pixel_exits_2(argv, name, capsys):
         main(["debug-pixel"] + argv)
     assert exit_info.value.code == 2
     assert "%s must be" % name in capsys.readouterr().err
+
+
+def test_cli_traces_the_paths_a_release_has(monkeypatch, capsys):
+    """A student release has neither the numba kernels nor the WGSL pieces of the
+    assignments it does not reveal (rtfgu.grading.release): the debugger still traces the
+    lecture layer, the student's own code, and names each path it skips."""
+    import importlib
+    import importlib.util
+
+    assemble = importlib.import_module("rtfgu.wgsl.assemble")  # the module, not its function
+    find_spec = importlib.util.find_spec
+
+    def read_piece(name):
+        raise assemble.PieceNotInRelease("rtfgu/wgsl/%s is not part of this release of rtfgu" % name)
+
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *rest: None if name == "rtfgu.kernels" else find_spec(name, *rest))
+    monkeypatch.setattr(assemble, "read_piece", read_piece)
+    assert main(["debug-pixel", "default_flat_colors", "100", "100"]) == 0
+    out = capsys.readouterr().out
+    assert "0 shape" in out and "plane" in out and "<< first" not in out
+    skipped = [line for line in out.splitlines() if ": skipped, " in line]
+    assert [line.split(":")[0] for line in skipped] == ["numba-float64", "numba-float32", "wgpu-float32"]
+    assert all("not part of this release" in line or "adapter" in line for line in skipped), skipped

@@ -138,10 +138,15 @@ MAX_UNIFORM_BYTES = 65536
 SCENE_BUFFER_KINDS = ("uniform", "storage")
 
 
+class PieceNotInRelease(ValueError):
+    """A WGSL piece this copy of rtfgu leaves out: a student release has no piece that
+    computes an assignment's function again (rtfgu.grading.release)."""
+
+
 def read_piece(name: str) -> str:
     piece = resources.files(__package__).joinpath(name)
     if not piece.is_file():
-        raise ValueError("rtfgu/wgsl/%s is not part of this release of rtfgu (it computes an assignment's "
+        raise PieceNotInRelease("rtfgu/wgsl/%s is not part of this release of rtfgu (it computes an assignment's "
                          "function again); render with backend='reference'" % name)
     return piece.read_text(encoding="utf-8")
 
