@@ -47,17 +47,18 @@ PATHS = (("reference", "reference", "float64"), ("numba-float64", "numba", "floa
 
 
 class RenderPath:
-    """One path as a contract test sees it: ``trace(scene, rays)`` runs the given rays
-    (origin, direction, tmin, tmax) through ``scene`` on this path in one call and returns
-    each ray's bounces (rtfgu.debug.trace_rays); ``label`` names it in a failure."""
+    """One path as a contract test sees it: ``trace(scene, rays, formula=None)`` runs the
+    given rays (origin, direction, tmin, tmax) through ``scene`` on this path in one call
+    (with the path's default formula where None) and returns each ray's bounces
+    (rtfgu.debug.trace_rays); ``label`` names it in a failure."""
 
     def __init__(self, label, backend, precision):
         self.label, self.backend, self.precision = label, backend, precision
 
-    def trace(self, scene, rays):
+    def trace(self, scene, rays, formula=None):
         from rtfgu.debug import trace_rays
 
-        return trace_rays(scene, rays, self.backend, self.precision)
+        return trace_rays(scene, rays, self.backend, self.precision, formula)
 
     def __repr__(self):
         return self.label
