@@ -258,11 +258,23 @@ def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_rende
 
 
 def test_running_a_student_file_directly_says_how_to_run_it(release):
-    # a04's file: the a03 tests above replace the a03 files with the solution
+    # a04's and a01's files: the a03 tests above replace the a03 files with the solution
     done = subprocess.run([sys.executable, "rtfgu/lights.py"], cwd=release, capture_output=True,
                           text=True, timeout=60)
     assert done.returncode != 0
-    assert "make check A=a04" in done.stderr and "relative import" not in done.stderr
+    assert "make check A=a04" in done.stderr and "make render A=a04" in done.stderr
+    assert "relative import" not in done.stderr
+    done = subprocess.run([sys.executable, "rtfgu/float3.py"], cwd=release, capture_output=True,
+                          text=True, timeout=60)
+    assert "make check A=a01" in done.stderr and "render" not in done.stderr   # a01 has no images
+
+
+def test_make_test_runs_the_visible_tests_of_one_assignment_on_the_students_code(release):
+    assert "-m pytest $(if $(A),-k $(A))" in (release / "Makefile").read_text()
+    done = subprocess.run([sys.executable, "-S", "-m", "pytest", "-q", "-p", "no:cacheprovider", "-k", "a01"],
+                          cwd=release, env=_env(release), capture_output=True, text=True, timeout=300)
+    visible = [c for c in checks_for("a01") if c.visibility == "visible"]
+    assert done.returncode == 0 and "%d passed" % len(visible) in done.stdout, done.stdout + done.stderr
 
 
 def test_the_release_renders_with_the_reference_and_says_the_other_paths_are_not_in_it(release):

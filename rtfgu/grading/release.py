@@ -34,8 +34,8 @@ SKIP_SUFFIXES = (".pyc", ".nbi", ".nbc")
 TEXT_SUFFIXES = (".py", ".wgsl")
 # Shown when a student runs a file of the package directly (python rtfgu/shapes/sphere.py).
 RUN_GUARD = ('if __name__ == "__main__" and not __package__:\n'
-             '    raise SystemExit("%s is part of the rtfgu package and is not run on its own: "\n'
-             '                     "test it with `make check A=%s`, render with `make render A=%s`")\n')
+             '    raise SystemExit("rtfgu/%s is part of the rtfgu package and is not run on its own: "\n'
+             '                     "%s")\n')
 
 
 def revealed_numbers(reveal) -> set:
@@ -53,12 +53,24 @@ def solves(text: str) -> set:
     return set()
 
 
-def _owner(relpath: str) -> str | None:
-    """The assignment (short id) whose student file ``relpath`` is, if any."""
-    for a in ASSIGNMENTS.values():
-        if relpath in a.files:
-            return a.short
-    return None
+def _owners(relpath: str) -> list:
+    """The assignments whose student file ``relpath`` is (shading.py: a04 and a05)."""
+    return [a for a in ASSIGNMENTS.values() if relpath in a.files]
+
+
+def how_to_run(assignments) -> str:
+    """What a student runs instead of a file of ``assignments``: their tests, and their
+    images when they have any."""
+    from .checks import checks_for
+
+    def command(target, shorts):
+        return "`make %s A=%s`" % (target, shorts[0]) + "".join(" (or A=%s)" % s for s in shorts[1:])
+
+    text = "test it with " + command("check", [a.short for a in assignments])
+    rendered = [a.short for a in assignments if any(c.kind == "image" for c in checks_for(a.id))]
+    if rendered:
+        text += ", render it with " + command("render", rendered)
+    return text
 
 
 def _skipped(path: Path) -> bool:
@@ -87,19 +99,19 @@ def package_files(reveal=(), package_dir: Path = PACKAGE_DIR) -> dict:
                              if Path(k).parts[:len(rel.parent.parts)] != rel.parent.parts}
                 continue
             text = transform(text, rel.as_posix(), None, revealed=revealed)
-            owner = _owner(rel.as_posix())
-            if owner and path.suffix == ".py":
-                text = _with_run_guard(text, rel.as_posix(), owner)
+            owners = _owners(rel.as_posix())
+            if owners and path.suffix == ".py":
+                text = _with_run_guard(text, rel.as_posix(), owners)
             files[rel.as_posix()] = text.encode()
         else:
             files[rel.as_posix()] = path.read_bytes()
     return files
 
 
-def _with_run_guard(text: str, relpath: str, owner: str) -> str:
+def _with_run_guard(text: str, relpath: str, owners: list) -> str:
     """The student file with a guard before its imports: run on its own, it says how to
     test it instead of failing on a relative import."""
-    guard = RUN_GUARD % (relpath, owner, owner)
+    guard = RUN_GUARD % (relpath, how_to_run(owners))
     lines = text.split("\n")
     for i, line in enumerate(lines):
         if line.startswith(("from .", "import ", "from ")) and not line.startswith("from __future__"):
@@ -187,7 +199,7 @@ STUDENT_MAKEFILE = """\
 # Your copy of rtfgu. A is an assignment (a03 or a03_intersections).
 #   make check A=a03    the assignment's visible tests on your code (diff images in check-results/a03/diffs/)
 #   make render A=a03   the assignment's images rendered with your code, into renders/a03/
-#   make test           every assignment's visible tests, through pytest
+#   make test [A=a03]   every assignment's (or one's) visible tests, through pytest
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
@@ -210,7 +222,7 @@ render: $(STAMP)
 \t$(PY) -m rtfgu_checker render $(A)
 
 test: $(STAMP)
-\t$(PY) -m pytest
+\t$(PY) -m pytest $(if $(A),-k $(A))
 
 clean:
 \trm -rf $(VENV) renders check-results
@@ -223,7 +235,8 @@ from rtfgu_checker.assignments import ASSIGNMENTS
 from rtfgu_checker.checks import checks_for
 from rtfgu_checker.local import check
 
-CASES = [(a.short, c.slug) for a in ASSIGNMENTS.values() for c in checks_for(a.id) if c.visibility == "visible"]
+# A test's id starts with its assignment's id (a03_intersections-...): `pytest -k a03` selects a03's.
+CASES = [(a.id, c.slug) for a in ASSIGNMENTS.values() for c in checks_for(a.id) if c.visibility == "visible"]
 
 
 @pytest.mark.parametrize("assignment,test", CASES)
@@ -276,7 +289,7 @@ def _student_readme(reveal, assignments) -> str:
         "```",
         "make check A=a03     # a03's visible tests on your code",
         "make render A=a03    # a03's images rendered with your code, into renders/a03/",
-        "make test            # every assignment's visible tests (pytest)",
+        "make test            # every assignment's visible tests (pytest); make test A=a03: a03's only",
         "```",
         "",
         "The first `make` creates `.venv` and installs the package and pytest (Python 3.10 or",
