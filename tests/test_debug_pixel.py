@@ -142,3 +142,26 @@ def test_cli_traces_the_paths_a_release_has(monkeypatch, capsys):
     skipped = [line for line in out.splitlines() if ": skipped, " in line]
     assert [line.split(":")[0] for line in skipped] == ["numba-float64", "numba-float32", "wgpu-float32"]
     assert all("not part of this release" in line or "adapter" in line for line in skipped), skipped
+
+
+@pytest.mark.parametrize("name", ["default_lambertian_shadows", "default_glossy_sphere", "suffern_disks"])
+def test_the_bounces_add_up_to_the_rendered_pixel(path, name):
+    """The debugger shows what the render computes: on every path the colours its bounces
+    add, summed in the path's precision in bounce order as the path loop sums them, are the
+    rendered pixel bit for bit."""
+    import numpy as np
+
+    import rtfgu
+    from rtfgu.cameras import PinholeCamera
+
+    size = 16
+    scene = get_scene(name)()
+    if isinstance(scene.camera, PinholeCamera):
+        scene.camera.aspect = 1.0  # as render does for a square image of a wide scene
+    image = rtfgu.render(scene, size, size, backend=path.backend, precision=path.precision)
+    for x, y in ((2, 3), (8, 8), (13, 10)):
+        total = np.zeros(3, dtype=path.precision)
+        for bounce in trace_pixel(scene, x, y, size, size, path.backend, path.precision):
+            total = total + np.asarray(bounce.color, dtype=path.precision)
+        assert np.array_equal(total, image[y, x]), "%s %s pixel (%d, %d): bounces add up to %r, render %r" % (
+            path.label, name, x, y, total, image[y, x])
