@@ -25,7 +25,7 @@ import shutil
 from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
-from .generate import PACKAGE_DIR, strip_regions, transform
+from .generate import PACKAGE_DIR, strip_regions, transform, write_files
 
 MARKER = re.compile(r"^\s*(?:#|//)\s*release: solves\s+(?P<ids>[a0-9 ]+?)\s*$")
 MARKER_LINES = 5        # a marker sits on one of a file's first lines
@@ -349,9 +349,5 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
     }
     for a in ASSIGNMENTS.values():
         extra["assignments/%s/README.md" % a.id] = assignment_readme(a)
-    for rel, text in extra.items():
-        target = out / rel
-        target.parent.mkdir(parents=True, exist_ok=True)
-        target.write_text(text)
-        written.append(target)
+    written += write_files(extra, out)
     return written
