@@ -1,16 +1,24 @@
-"""Hostile a03 submissions: each puts an attack into Sphere.intersect_p and then gives up as
-the unsolved stub does, beside an honest plane and triangle. Each must score exactly what
-its honest part scores, test by test, and change nothing outside its scratch folder: the
-checkout stays clean, no process survives, no connection is made.
+"""Hostile submissions: each puts a dishonest part into a student file beside an honest part
+(a03: solved plane and triangle, and a sphere whose intersect_p attacks and then gives up
+as the stub does). Each must score exactly what its honest part scores alone, test by test,
+leak nothing into the test messages, and change nothing outside its scratch folder: the
+checkout stays as it was, a canary outside stays untouched, no process survives, no
+connection is made.
 
-Run under bubblewrap (skipped, naming the Debian package, where it cannot run) and, for
-the attacks a weaker isolation also stops, under the fallback."""
+An attack that gets what it is after says so: it returns the right answer (the score rises)
+or raises ``LEAKED ...`` (the message shows it). Every attack runs under bubblewrap (skipped,
+naming the Debian package, where it cannot run) and the important ones also under the
+fallback this machine allows as root (an unprivileged user).
+"""
 from __future__ import annotations
 
 import os
 import socket
+import stat
 import subprocess
 import sys
+import tempfile
+import textwrap
 import threading
 import time
 import zipfile
@@ -18,134 +26,343 @@ from pathlib import Path
 
 import pytest
 
+from rtfgu.grading.archive import unpack_submission
+from rtfgu.grading.assignments import get_assignment
 from rtfgu.grading.generate import PACKAGE_DIR, solution_files, student_files, write_files
-from rtfgu.grading.grader import grade
-from rtfgu.grading.sandbox import bwrap_works, find_bwrap
+from rtfgu.grading.grader import REFERENCE_DIR, grade
+from rtfgu.grading.release import solves
+from rtfgu.grading.sandbox import bwrap_works, find_bwrap, prepare
 
 ROOT = Path(__file__).resolve().parent.parent
 SPHERE = "shapes/sphere.py"
-HEAD = "    def intersect_p(self, ray: Ray) -> bool:\n"
-STUB = "        raise NotImplementedError('a03: Sphere.intersect_p')\n"
+STUB_LINE = "        raise NotImplementedError('a03: Sphere.intersect_p')\n"
+STAFF_SPHERE = PACKAGE_DIR / SPHERE
+OBSERVATIONS = REFERENCE_DIR / "a03_intersections" / "observations.json"
+# A plane test, two sphere tests (one hidden) and the triangle test: enough to see that the
+# attack costs nothing beyond its own file and that the rest still scores.
+ONLY = ("01_plane_intersect_p_hits_misses_and_the_ray_interv", "02_sphere_intersect_p_rays_that_hit",
+        "05_triangle_intersect_p_inside_outside_and_the_ray_",
+        "10_sphere_intersect_p_with_directions_that_are_not_")
+FALLBACK = "user"
 
 
-def _bwrap():
-    bwrap = find_bwrap()
-    if bwrap is None or not bwrap_works(bwrap):
-        pytest.skip("bubblewrap is not installed or cannot run here (Debian package bubblewrap; "
-                    "`make venv` fetches it)")
+def _skip_without(isolation: str) -> None:
+    if isolation == "bwrap":
+        if not bwrap_works(find_bwrap()):
+            pytest.skip("bubblewrap is not installed or cannot run here (Debian package bubblewrap; "
+                        "`make venv` fetches it)")
+    elif isolation == "user" and os.geteuid() != 0:
+        pytest.skip("the unprivileged-user fallback needs the grader to run as root")
+
+
+@pytest.fixture(params=["bwrap", FALLBACK])
+def isolation(request, monkeypatch):
+    _skip_without(request.param)
+    monkeypatch.setenv("RTFGU_ISOLATION", request.param)
+    return request.param
 
 
 @pytest.fixture
 def bwrap(monkeypatch):
-    _bwrap()
+    _skip_without("bwrap")
     monkeypatch.setenv("RTFGU_ISOLATION", "bwrap")
+    return "bwrap"
+
+
+def _sphere_with(attack: str) -> str:
+    """The stub sphere.py with ``attack`` run at the start of intersect_p."""
+    stub = student_files("a03")[SPHERE]
+    assert STUB_LINE in stub
+    return stub.replace(STUB_LINE, textwrap.indent(textwrap.dedent(attack).strip("\n"), " " * 8) + "\n" + STUB_LINE)
 
 
 def _submission(folder: Path, attack: str = "") -> Path:
-    """Solved plane and triangle; a sphere whose intersect_p runs ``attack`` and then raises
-    as the stub does."""
+    """Solved plane and triangle (the honest part); the sphere carries the attack."""
     files = dict(solution_files("a03"))
-    stub = student_files("a03")[SPHERE]
-    start = stub.index(HEAD) + len(HEAD)
-    body = "".join("        " + line + "\n" for line in attack.strip("\n").split("\n")) if attack else ""
-    files[SPHERE] = stub[:start] + body + stub[start:]
+    files[SPHERE] = _sphere_with(attack) if attack else student_files("a03")[SPHERE]
     write_files(files, folder)
     return folder
+
+
+_HONEST = {}
+
+
+def honest_scores(isolation: str) -> dict:
+    """What the honest part alone scores, test by test, under ``isolation``."""
+    if isolation not in _HONEST:
+        with tempfile.TemporaryDirectory() as tmp:
+            result = grade("a03", _submission(Path(tmp) / "sub"), None, only=ONLY)
+        scores = _scores(result)
+        assert set(scores) == {"3.1", "3.2", "3.5", "3.10"}
+        assert scores["3.1"] > 0 and scores["3.5"] > 0 and scores["3.2"] == scores["3.10"] == 0
+        _HONEST[isolation] = scores
+    return _HONEST[isolation]
 
 
 def _scores(result) -> dict:
     return {t.number: t.score for t in result.tests}
 
 
-@pytest.fixture(scope="module")
-def honest(tmp_path_factory):
-    _bwrap()
-    folder = tmp_path_factory.mktemp("honest")
-    os.environ["RTFGU_ISOLATION"] = "bwrap"
-    try:
-        result = grade("a03", _submission(folder / "sub"), folder / "out")
-    finally:
-        del os.environ["RTFGU_ISOLATION"]
-    scores = _scores(result)
-    assert 0 < sum(scores.values()) < result.max_score  # the honest part earns some, not all
-    return scores
-
-
 def _git_status() -> str:
     return subprocess.run(["git", "status", "--porcelain"], cwd=ROOT, capture_output=True, text=True).stdout
 
 
+def _staff_digest() -> dict:
+    """The files a submission would most like to change: the grader, the references, the solution."""
+    paths = [PACKAGE_DIR / "grading" / "grader.py", PACKAGE_DIR / "grading" / "sandbox.py", STAFF_SPHERE]
+    paths += sorted(OBSERVATIONS.parent.iterdir())
+    return {p: p.read_bytes() for p in paths}
+
+
+def _grade_attack(tmp_path: Path, isolation: str, attack: str, only=ONLY):
+    before, staff = _git_status(), _staff_digest()
+    result = grade("a03", _submission(tmp_path / "sub", attack), tmp_path / "out", only=only)
+    assert result.isolation == {"bwrap": "bwrap", "user": "unprivileged user"}[isolation]
+    assert _staff_digest() == staff
+    assert _git_status() == before
+    for test in result.tests:
+        assert "LEAKED" not in test.output, test.output
+    return result
+
+
+# A fragment of the reference file as it is stored (indented JSON): it is in the grader's
+# memory, never in a child's (whose answers are compact JSON).
+NEEDLE = OBSERVATIONS.read_bytes()[40:120]
+
 ATTACKS = {
-    "delegates to the robust twin": "import rtfgu.robust as r\nreturn r.intersect_sphere_robust(ray, self.center, self.radius)",
-    "delegates to the numba kernels": "from rtfgu.kernels import intersect\nreturn bool(intersect)",
-    "execs the solved source from the checkout":
-        "src = open(%r).read()\nns = {}\nexec(src, ns)" % str(PACKAGE_DIR / SPHERE),
-    "reads the references": "import glob\nfor p in glob.glob('/**/observations.json', recursive=True):\n"
-                            "    raise RuntimeError(open(p).read()[:100])",
-    "reads the grader's memory and environment":
-        "import os\nfor pid in (os.getppid(), 1):\n    for name in ('environ', 'cmdline', 'maps'):\n"
-        "        try:\n            open('/proc/%d/%s' % (pid, name)).read()\n        except OSError:\n            pass",
-    "writes a fake answer into every pipe":
-        "import os\nfor fd in range(3, 64):\n    try:\n        os.write(fd, b'{\"cases\": [{\"out\": {}}]}')\n"
-        "    except OSError:\n        pass",
-    "floods the grader's stdout through /proc":
-        "import os\nfor path in ('/proc/%d/fd/1' % os.getppid(), '/proc/1/fd/1'):\n    try:\n"
-        "        with open(path, 'w') as f:\n            f.write('x' * (64 << 20))\n    except OSError:\n        pass",
+    "delegates to the robust twin": """
+        import rtfgu.robust as r
+        return r.intersect_sphere_robust(ray, self.center, self.radius)
+        """,
+    "delegates to the numba kernels": """
+        from rtfgu.kernels import intersect
+        raise RuntimeError("LEAKED the numba kernels are importable: %r" % intersect)
+        """,
+    "delegates to the WGSL twin": """
+        import os, rtfgu.wgsl
+        folder = os.path.dirname(rtfgu.wgsl.__file__)
+        for name in ("intersect_sphere.wgsl", "intersect_plane.wgsl", "intersect_triangle.wgsl"):
+            if "TODO_a06" not in open(os.path.join(folder, name)).read():
+                raise RuntimeError("LEAKED the solved WGSL twin %s" % name)
+        """,
+    "execs the solved source found on sys.path or in the editable install": """
+        import glob, os, re, sys
+        places = [os.path.join(p, "rtfgu", "shapes", "sphere.py") for p in sys.path] + [%(staff)r]
+        for finder in [f for p in sys.path for f in glob.glob(os.path.join(p, "__editable__*"))]:
+            try:
+                places += [os.path.join(m, "shapes", "sphere.py") for m in re.findall(r"'(/[^']*rtfgu)'", open(finder).read())]
+            except OSError:
+                pass
+        for place in places:
+            try:
+                source = open(place).read()
+            except OSError:
+                continue
+            if "raise NotImplementedError('a03: Sphere.intersect_p')" not in source:
+                namespace = {"__name__": "rtfgu.shapes.solved", "__package__": "rtfgu.shapes"}
+                exec(compile(source, place, "exec"), namespace)
+                return namespace["Sphere"].intersect_p(self, ray)
+        """ % {"staff": str(STAFF_SPHERE)},
+    "reads the references and the reference images": """
+        import glob, os
+        places = [%(obs)r] + glob.glob(%(folder)r + "/*.png")
+        for root in (%(checkout)r, "/autograder/source"):
+            places += glob.glob(root + "/rtfgu/grading/reference/*/observations.json")
+        for place in places:
+            try:
+                raise RuntimeError("LEAKED %%s: %%r" %% (place, open(place, "rb").read(40)))
+            except OSError:
+                pass
+        """ % {"obs": str(OBSERVATIONS), "folder": str(OBSERVATIONS.parent), "checkout": str(ROOT)},
+    "reads the grader's memory, environment and inherited descriptors": """
+        import gc, os, sys
+        needle = %(needle)r
+        if any(m.startswith("rtfgu.grading") for m in sys.modules) or any(
+                type(o).__module__.startswith("rtfgu.grading") for o in gc.get_objects()):
+            raise RuntimeError("LEAKED the grader's objects are in this interpreter")
+        for fd in range(3, 256):
+            try:
+                data = os.pread(fd, 1 << 20, 0)
+            except OSError:
+                continue
+            if needle in data:
+                raise RuntimeError("LEAKED fd %%d holds the references" %% fd)
+        for pid in {os.getppid(), 1, *[int(p) for p in os.listdir("/proc") if p.isdigit()]} - {os.getpid()}:
+            for name in ("environ", "cmdline"):
+                try:
+                    if b"observations" in open("/proc/%%d/%%s" %% (pid, name), "rb").read():
+                        raise RuntimeError("LEAKED /proc/%%d/%%s" %% (pid, name))
+                except OSError:
+                    pass
+            try:
+                maps = open("/proc/%%d/maps" %% pid).read().splitlines()
+                with open("/proc/%%d/mem" %% pid, "rb", buffering=0) as mem:
+                    for line in maps:
+                        span, perms = line.split()[:2]
+                        start, end = (int(x, 16) for x in span.split("-"))
+                        if perms.startswith("rw") and end - start < (256 << 20):
+                            mem.seek(start)
+                            if needle in mem.read(end - start):
+                                raise RuntimeError("LEAKED the references in /proc/%%d/mem" %% pid)
+            except (OSError, ValueError, OverflowError):
+                pass
+        """ % {"needle": NEEDLE},
+    "writes a fake answer into the pipe early, then crashes": """
+        import os, sys
+        fd = int(sys.argv[4])
+        os.write(fd, b'{"cases": [{"out": {"returned": true, "ray.tmax": 1.0}}]}')
+        os._exit(1)
+        """,
+    "writes extra JSON after the answer": """
+        import atexit, os, sys
+        fd = int(sys.argv[4])
+        os.write(fd, b'{"cases": []}')
+        """,
+    "edits and deletes files outside scratch": """
+        import os
+        for place in (%(grader)r, %(obs)r, %(staff)r):
+            try:
+                os.close(os.open(place, os.O_WRONLY | os.O_APPEND))
+                raise RuntimeError("LEAKED %%s is writable" %% place)
+            except OSError:
+                pass
+            try:
+                os.rename(place, place + ".moved")
+                raise RuntimeError("LEAKED %%s could be moved" %% place)
+            except OSError:
+                pass
+        """ % {"grader": str(PACKAGE_DIR / "grading" / "grader.py"), "obs": str(OBSERVATIONS),
+               "staff": str(STAFF_SPHERE)},
 }
 
 
 @pytest.mark.parametrize("name", list(ATTACKS))
-def test_an_attack_scores_what_its_honest_part_scores_and_changes_nothing(bwrap, honest, tmp_path, name):
-    before = _git_status()
-    result = grade("a03", _submission(tmp_path / "sub", ATTACKS[name]), tmp_path / "out")
-    assert result.isolation == "bwrap"
+def test_an_attack_scores_what_its_honest_part_scores_and_changes_nothing(isolation, tmp_path, name):
+    honest = honest_scores(isolation)
+    result = _grade_attack(tmp_path, isolation, ATTACKS[name])
     assert _scores(result) == honest, name
-    assert _git_status() == before
 
 
-def test_no_process_outlives_its_test_and_nothing_outside_scratch_is_written(bwrap, honest, tmp_path):
-    token = "rtfgu-survivor-%d" % os.getpid()
-    canary = tmp_path / "canary.txt"
+def test_the_package_student_code_runs_in_has_no_twin_no_solution_and_no_grader(tmp_path):
+    ws = prepare(get_assignment("a03"), _submission(tmp_path / "sub"), tmp_path / "work")
+    package = ws.package / "rtfgu"
+    for absent in ("robust.py", "kernels", "hardcases", "grading"):
+        assert not (package / absent).exists(), absent
+    solved = solution_files("a03")[SPHERE]
+    body = solved[solved.index("def intersect_p"):solved.index("def normal_at")]
+    stubbed = (package / SPHERE).read_text()
+    assert body not in stubbed and STUB_LINE in stubbed
+    for path in package.rglob("*"):          # a file that solves a03 or later is left out
+        if path.is_file() and path.suffix in (".py", ".wgsl"):
+            assert max(solves(path.read_text()), default=0) < 3, path
+    assert not any(p.name == "observations.json" for p in ws.root.rglob("*"))
+
+
+def test_the_solved_source_and_the_references_are_not_visible_in_the_sandbox(bwrap, tmp_path):
+    # A walk over everything the child can see (minus /proc, /sys, /dev) finds no solved
+    # sphere, no reference file, no twin and nothing of the checkout.
+    attack = """
+        import os, time
+        end = time.monotonic() + 7
+        for root, dirs, files in os.walk("/"):
+            dirs[:] = [d for d in dirs if os.path.join(root, d) not in ("/proc", "/sys", "/dev")]
+            if time.monotonic() > end:
+                raise RuntimeError("the walk did not finish")
+            for name in files:
+                path = os.path.join(root, name)
+                if root.startswith(%(checkout)r) or root.endswith(("/rtfgu/kernels", "/rtfgu/grading")) or \\
+                        name in ("observations.json", "known.json") and "reference" in root:
+                    raise RuntimeError("LEAKED %%s" %% path)
+                if name in ("sphere.py", "robust.py"):
+                    try:
+                        text = open(path).read()
+                    except OSError:
+                        continue
+                    if "def intersect_sphere" + "_robust" in text or "def intersect_p" in text and \\
+                            "NotImplementedError('a03: Sphere.intersect_p')" not in text:
+                        raise RuntimeError("LEAKED the solved sphere at %%s" %% path)
+        raise RuntimeError("walked everything")
+        """ % {"checkout": str(ROOT / "rtfgu")}
+    result = _grade_attack(tmp_path, "bwrap", attack, only=ONLY[1:2])
+    assert "walked everything" in result.tests[0].output
+    assert result.tests[0].score == 0
+
+
+def test_no_process_outlives_its_test_and_nothing_outside_scratch_is_written(isolation, tmp_path):
+    honest = honest_scores(isolation)
+    token = "rtfgu-survivor-%d-%s" % (os.getpid(), isolation)
+    markers = Path(tempfile.mkdtemp(prefix="rtfgu-markers-"))
+    os.chmod(markers, 0o1777)                # any user may add a file here, as in /tmp
+    canary = markers / "canary.txt"
     canary.write_text("untouched")
-    later = "import time; time.sleep(4); open(%r, 'w').write('x')" % str(canary)
-    attack = ("import subprocess, sys\n"
-              "subprocess.Popen([sys.executable, '-c', %r, %r], start_new_session=True)\n"
-              "for path in (%r, %r):\n"
-              "    try:\n        open(path, 'w').write('changed')\n    except OSError:\n        pass"
-              % (later, token, str(canary), str(PACKAGE_DIR / "grading" / "grader.py")))
-    compile(attack, "attack", "exec")
-    before = _git_status()
-    result = grade("a03", _submission(tmp_path / "sub", attack), tmp_path / "out")
-    time.sleep(5)
-    assert _scores(result) == honest
-    assert canary.read_text() == "untouched"
-    assert _git_status() == before
-    alive = subprocess.run(["pgrep", "-f", token], capture_output=True, text=True).stdout.strip()
-    assert alive == "", "a process of the submission survived: %s" % alive
+    attack = """
+        import os, subprocess, sys
+        later = "import os, sys, time; time.sleep(3); open(os.path.join(%(markers)r, str(os.getpid())), 'w').write(sys.argv[1])"
+        subprocess.Popen([sys.executable, "-c", later, %(token)r], start_new_session=True,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if os.fork() == 0:
+            os.setsid()
+            if os.fork() == 0:
+                os.execv(sys.executable, [sys.executable, "-c", later, %(token)r])
+            os._exit(0)
+        for place in (%(canary)r, %(results)r):
+            try:
+                open(place, "w").write("changed")
+            except OSError:
+                pass
+        """ % {"markers": str(markers), "token": token, "canary": str(canary),
+               "results": str(tmp_path / "out" / "results.json")}
+    try:
+        result = _grade_attack(tmp_path, isolation, attack)
+        results_json = (tmp_path / "out" / "results.json").read_text()
+        time.sleep(4)
+        assert _scores(result) == honest
+        assert canary.read_text() == "untouched"
+        assert sorted(p.name for p in markers.iterdir()) == ["canary.txt"]
+        assert (tmp_path / "out" / "results.json").read_text() == results_json
+        alive = subprocess.run(["pgrep", "-f", token], capture_output=True, text=True).stdout.strip()
+        assert alive == "", "a process of the submission survived: %s" % alive
+    finally:
+        for pid in subprocess.run(["pgrep", "-f", token], capture_output=True, text=True).stdout.split():
+            os.kill(int(pid), 9)
+        for p in markers.iterdir():
+            p.unlink()
+        markers.rmdir()
 
 
-def test_no_connection_leaves_the_sandbox(bwrap, honest, tmp_path):
+def test_no_connection_leaves_the_sandbox(isolation, tmp_path):
+    honest = honest_scores(isolation)
     server = socket.socket()
     server.bind(("127.0.0.1", 0))
     server.listen(5)
     server.settimeout(0.2)
     port = server.getsockname()[1]
-    accepted = []
+    accepted, stop = [], threading.Event()
 
     def accept():
-        end = time.time() + 30
-        while time.time() < end and not stop.is_set():
+        while not stop.is_set():
             try:
                 accepted.append(server.accept())
             except OSError:
                 pass
-    stop = threading.Event()
+
     thread = threading.Thread(target=accept)
     thread.start()
-    attack = ("import socket\ns = socket.socket()\ns.settimeout(2)\n"
-              "try:\n    s.connect(('127.0.0.1', %d))\n    s.send(b'answers?')\nexcept OSError:\n    pass" % port)
+    attack = """
+        import socket
+        for host in ("127.0.0.1", "localhost", "10.0.2.2", "1.1.1.1"):
+            s = socket.socket()
+            s.settimeout(1)
+            try:
+                s.connect((host, %d))
+                s.send(b"answers?")
+                raise RuntimeError("LEAKED connected to %%s" %% host)
+            except OSError:
+                pass
+        """ % port
     try:
-        result = grade("a03", _submission(tmp_path / "sub", attack), tmp_path / "out")
+        result = _grade_attack(tmp_path, isolation, attack)
+        time.sleep(0.5)
     finally:
         stop.set()
         thread.join()
@@ -154,71 +371,165 @@ def test_no_connection_leaves_the_sandbox(bwrap, honest, tmp_path):
     assert _scores(result) == honest
 
 
-def test_printing_a_gigabyte_costs_that_test_only_and_the_grader_output_stays_small(bwrap, honest, tmp_path, capfd):
-    attack = "import sys\nfor _ in range(1024):\n    sys.stdout.write('y' * (1 << 20))"
-    result = grade("a03", _submission(tmp_path / "sub", attack), tmp_path / "out")
+def test_a_gigabyte_of_output_costs_that_test_only_and_the_grader_output_stays_small(isolation, tmp_path, capfd):
+    honest = honest_scores(isolation)
+    attack = """
+        import os, sys
+        block = "y" * (64 << 20)
+        for place in ["/proc/%d/fd/1" % os.getppid(), "/proc/%d/fd/2" % os.getppid(), "/proc/1/fd/1"]:
+            try:
+                with open(place, "w") as f:
+                    for _ in range(16):
+                        f.write(block)
+            except OSError:
+                pass
+        for _ in range(16):
+            try:
+                sys.stdout.write(block)
+                sys.stdout.flush()
+            except OSError:
+                pass
+        """
+    result = _grade_attack(tmp_path, isolation, attack)
     assert _scores(result) == honest
     out, err = capfd.readouterr()
     assert len(out) + len(err) < 100_000
     assert all(len(t.output) < 20_000 for t in result.tests)
+    assert (tmp_path / "out" / "results.json").stat().st_size < 200_000
 
 
 def _zip(path: Path, entries) -> Path:
+    """entries: (name, text) or (name, ("link", target)) for a symbolic link entry."""
     with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
         for name, data in entries:
-            if isinstance(data, int):  # a link entry pointing at data's text
+            if isinstance(data, tuple):
                 info = zipfile.ZipInfo(name)
-                info.external_attr = (0o120777 << 16)
-                z.writestr(info, "/etc/passwd")
+                info.external_attr = (stat.S_IFLNK | 0o777) << 16
+                z.writestr(info, data[1])
             else:
                 z.writestr(name, data)
     return path
 
 
-def test_a_zip_bomb_and_escaping_entries_are_not_unpacked(bwrap, honest, tmp_path):
+def test_escaping_and_link_entries_of_a_zip_are_not_unpacked(tmp_path):
+    files = dict(solution_files("a03"))
+    outside = tmp_path / "a" / "outside.txt"
+    absolute = tmp_path / "absolute.txt"
+    archive = _zip(tmp_path / "sub.zip", [("shapes/plane.py", files["shapes/plane.py"]),
+                                          ("../outside.txt", "x"), ("shapes/../../../outside.txt", "x"),
+                                          (str(absolute), "x"),
+                                          ("shapes/sphere.py", ("link", str(STAFF_SPHERE))),
+                                          ("shapes/triangle.py", files["shapes/triangle.py"])])
+    notes = []
+    out = unpack_submission(archive, tmp_path / "a" / "b", notes)
+    found = sorted(p.relative_to(out).as_posix() for p in out.rglob("*") if p.is_file())
+    assert found == ["shapes/plane.py", "shapes/triangle.py"]
+    assert not outside.exists() and not absolute.exists()
+    assert sum("outside the submission folder" in n for n in notes) == 3
+    assert any("shapes/sphere.py is a link" in n for n in notes)
+
+
+def test_links_in_a_submitted_folder_are_not_followed(bwrap, tmp_path):
+    honest = honest_scores("bwrap")
+    folder = _submission(tmp_path / "sub")
+    (folder / "shapes" / "sphere.py").unlink()
+    (folder / "shapes" / "sphere.py").symlink_to(STAFF_SPHERE)        # the solved file, by a link
+    (folder / "solved").symlink_to(STAFF_SPHERE.parent, target_is_directory=True)
+    result = grade("a03", folder, tmp_path / "out", only=ONLY)
+    assert _scores(result) == honest
+    assert any("sphere.py is a link" in n for n in result.notes)
+
+
+def test_a_zip_bomb_costs_no_memory_and_the_rest_is_graded(bwrap, tmp_path):
+    honest = honest_scores("bwrap")
     files = dict(solution_files("a03"))
     files[SPHERE] = student_files("a03")[SPHERE]
-    entries = [("shapes/" + Path(k).name, v) for k, v in files.items()]
-    entries += [("../escaped.txt", "outside"), ("/tmp/%s-absolute.txt" % tmp_path.name, "outside"),
-                ("shapes/link.py", 1)]
-    archive = _zip(tmp_path / "sub.zip", entries)
-    with zipfile.ZipFile(archive, "a", zipfile.ZIP_DEFLATED) as z, z.open("bomb.bin", "w", force_zip64=True) as f:
+    archive = _zip(tmp_path / "sub.zip", [(name, text) for name, text in files.items()])
+    with zipfile.ZipFile(archive, "a", zipfile.ZIP_DEFLATED) as z, \
+            z.open("bomb.bin", "w", force_zip64=True) as f:
         chunk = bytes(1 << 20)
         for _ in range(2048):  # 2 GiB of zeros, about 2 MB compressed
             f.write(chunk)
-    assert archive.stat().st_size < 8 << 20
-    script = ("import resource, sys\nfrom rtfgu.grading.grader import grade\n"
-              "r = grade('a03', sys.argv[1], sys.argv[2])\n"
-              "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)\n"
-              "print(';'.join('%s=%s' % (t.number, t.score) for t in r.tests))\n"
-              "print('|'.join(r.notes))")
-    done = subprocess.run([sys.executable, "-c", script, str(archive), str(tmp_path / "out")],
-                          capture_output=True, text=True, timeout=600,
+    assert archive.stat().st_size < 4 << 20
+    with zipfile.ZipFile(archive) as z:
+        assert z.getinfo("bomb.bin").file_size == 2 << 30
+    script = textwrap.dedent("""
+        import resource, sys
+        from rtfgu.grading.grader import grade
+        r = grade("a03", sys.argv[1], sys.argv[2], only=sys.argv[3].split(","))
+        print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+        print(";".join("%s=%s" % (t.number, t.score) for t in r.tests))
+        print("|".join(r.notes))
+        """)
+    done = subprocess.run([sys.executable, "-c", script, str(archive), str(tmp_path / "out"), ",".join(ONLY)],
+                          capture_output=True, text=True, timeout=600, cwd=tmp_path,
                           env=dict(os.environ, RTFGU_ISOLATION="bwrap"))
     assert done.returncode == 0, done.stderr
     peak_kb, scores, notes = done.stdout.strip().split("\n")[-3:]
-    assert int(peak_kb) < 600 * 1024, "the grader used %s kB" % peak_kb
-    assert dict(item.split("=") for item in scores.split(";")) == {k: str(v) for k, v in honest.items()}
-    assert not (tmp_path / "escaped.txt").exists() and not Path("/tmp/%s-absolute.txt" % tmp_path.name).exists()
-    assert "outside the submission folder" in notes and "link" in notes and "MB" in notes
+    assert int(peak_kb) < 400 * 1024, "the grader used %s kB" % peak_kb
+    assert {k: float(v) for k, v in (item.split("=") for item in scores.split(";"))} == honest
+    assert "unpacks to more than 32 MB (at bomb.bin)" in notes
 
 
-@pytest.mark.parametrize("isolation", ["bwrap", "rlimits"])
-def test_a_syntax_error_costs_only_the_tests_that_need_that_file(isolation, tmp_path, monkeypatch):
-    if isolation == "bwrap":
-        _bwrap()
-    monkeypatch.setenv("RTFGU_ISOLATION", isolation)
+@pytest.mark.parametrize("isolation_name", ["bwrap", FALLBACK])
+def test_a_syntax_error_costs_only_the_tests_that_need_that_file(isolation_name, tmp_path, monkeypatch):
+    _skip_without(isolation_name)
+    monkeypatch.setenv("RTFGU_ISOLATION", isolation_name)
     files = dict(solution_files("a03"))
     files["shapes/triangle.py"] = files["shapes/triangle.py"].replace("        denom = dot(", "        denom = = dot(", 1)
+    assert "= = dot(" in files["shapes/triangle.py"]
     write_files(files, tmp_path / "sub")
     result = grade("a03", tmp_path / "sub", tmp_path / "out")
     by_number = {t.number: t for t in result.tests}
     assert by_number["3.5"].score == 0
     assert "SyntaxError in shapes/triangle.py, line" in by_number["3.5"].output
-    for number in ("3.1", "3.2", "3.3", "3.4"):
+    for number in ("3.1", "3.2", "3.3", "3.4", "3.10"):
         assert by_number[number].score == by_number[number].max_score, by_number[number].output
     line = int(by_number["3.5"].output.split("line ")[1].split(":")[0])
     assert "= = dot(" in files["shapes/triangle.py"].split("\n")[line - 1]
+
+
+def test_an_a01_file_that_execs_the_solution_at_import_scores_what_its_honest_part_scores(isolation, tmp_path):
+    # float3.py solved (honest); ray.py is the stub with an attack at import time.
+    attack = textwrap.dedent("""
+        import os as _os
+        for _place in (%r, _os.path.join(_os.path.dirname(__file__), "..", "..", "..", "rtfgu", "ray.py")):
+            try:
+                exec(compile(open(_place).read(), _place, "exec"))
+                raise RuntimeError("LEAKED the solved ray.py at %%s" %% _place)
+            except OSError:
+                pass
+        """ % str(PACKAGE_DIR / "ray.py"))
+    honest_files = dict(solution_files("a01"))
+    honest_files["ray.py"] = student_files("a01")["ray.py"]
+    write_files(honest_files, tmp_path / "honest")
+    honest = _scores(grade("a01", tmp_path / "honest", None))
+    hostile_files = dict(honest_files)
+    hostile_files["ray.py"] = honest_files["ray.py"].replace("\nclass Ray:", attack + "\n\nclass Ray:", 1)
+    assert attack in hostile_files["ray.py"]
+    write_files(hostile_files, tmp_path / "hostile")
+    before, staff = _git_status(), _staff_digest()
+    result = grade("a01", tmp_path / "hostile", tmp_path / "out")
+    assert _scores(result) == honest and 0 < sum(honest.values())
+    assert all("LEAKED" not in t.output for t in result.tests)
+    assert _git_status() == before and _staff_digest() == staff
+
+
+def test_the_wgsl_assignment_runs_on_the_software_adapter_inside_bwrap(bwrap, tmp_path):
+    probe = subprocess.run([sys.executable, "-c", "from rtfgu.wgsl.device import adapter_description as a; print(a())"],
+                           capture_output=True, text=True, cwd=ROOT)
+    if probe.returncode != 0:
+        pytest.skip("no WebGPU adapter (wgpu, Mesa llvmpipe: Debian packages libgl1-mesa-dri libegl1 "
+                    "mesa-vulkan-drivers): " + probe.stderr.strip().splitlines()[-1])
+    files = dict(solution_files("a06"))
+    stubs = student_files("a06")
+    files["wgsl/intersect_sphere.wgsl"] = stubs["wgsl/intersect_sphere.wgsl"]
+    write_files(files, tmp_path / "sub")
+    result = grade("a06", tmp_path / "sub", tmp_path / "out", time_limit=60)
+    assert result.isolation == "bwrap"
+    assert 0 < result.score < result.max_score
+    assert not any("adapter" in t.output.lower() and t.score == 0 and "sphere" not in t.name.lower()
+                   for t in result.tests), [t.output for t in result.tests]
 
 
 def test_require_sandbox_refuses_to_grade_without_bwrap(tmp_path, monkeypatch):
@@ -229,3 +540,9 @@ def test_require_sandbox_refuses_to_grade_without_bwrap(tmp_path, monkeypatch):
     with pytest.raises(ValueError, match="require-sandbox.*bubblewrap"):
         grade("a03", _submission(tmp_path / "sub"), tmp_path / "out", require_sandbox=True)
     assert not (tmp_path / "out").exists()  # refused before anything ran
+    run = subprocess.run([sys.executable, "-m", "rtfgu.grading", "grade", "a03", str(tmp_path / "sub"),
+                          "--out", str(tmp_path / "out"), "--require-sandbox"],
+                         capture_output=True, text=True, cwd=ROOT,
+                         env=dict(os.environ, RTFGU_BWRAP="none", RTFGU_ISOLATION=""))
+    assert run.returncode == 2 and "Debian package bubblewrap" in run.stderr, run.stderr
+    assert not (tmp_path / "out").exists()

@@ -15,12 +15,10 @@ from .assignments import ASSIGNMENTS, get_assignment
 def _cmd_render(a, folder, out, width, height) -> int:
     """Render the assignment's images with the student's files; 1 if any render failed (0,
     with a message, for an assignment without images)."""
-    import tempfile
-
     import numpy as np
 
     from ..image import write_png
-    from .sandbox import choose_isolation, prepare, run_child
+    from .sandbox import choose_isolation, hidden_from_sandbox_user, prepare, run_child, work_folder
 
     if not a.images:
         print("%s has no images to render: its tests are `make check A=%s`" % (a.id, a.short))
@@ -29,12 +27,12 @@ def _cmd_render(a, folder, out, width, height) -> int:
     out.mkdir(parents=True, exist_ok=True)
     failed = 0
     isolation = choose_isolation()
-    with tempfile.TemporaryDirectory(prefix="rtfgu-render-") as tmp:
-        ws = prepare(a, folder, Path(tmp) / "work")
+    with hidden_from_sandbox_user(isolation), work_folder("rtfgu-render-") as tmp:
+        ws = prepare(a, folder, tmp / "work")
         for note in ws.notes + list(ws.broken.values()):
             print("note:", note)
         for name in a.images:
-            child = run_child(ws, Path(tmp) / "scratch" / name, ["render", name, width or 0, height or 0],
+            child = run_child(ws, tmp / "scratch" / name, ["render", name, width or 0, height or 0],
                               isolation=isolation, time_limit=3600, memory_mb=4096,
                               output_limit=16 * 1024 * 1024)
             if child.status != "ok" or "error" in child.data:

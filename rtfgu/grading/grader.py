@@ -12,9 +12,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
-import stat
-import tempfile
 import time
 from pathlib import Path
 
@@ -24,7 +21,7 @@ from ..image import read_png, to_8bit
 from .assignments import get_assignment
 from .checks import IMAGE_FRACTION, IMAGE_LEVELS, checks_for, fmt, judge_cases
 from .results import Result, TestResult
-from .sandbox import choose_isolation, prepare, run_child
+from .sandbox import choose_isolation, hidden_from_sandbox_user, prepare, run_child, work_folder
 
 REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
 
@@ -43,10 +40,10 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
     folder.mkdir(parents=True, exist_ok=True)
     observations, written = {}, []
     isolation = choose_isolation()
-    with tempfile.TemporaryDirectory(prefix="rtfgu-ref-") as tmp:
-        ws = prepare(a, None, Path(tmp) / "work")
+    with hidden_from_sandbox_user(isolation), work_folder("rtfgu-ref-") as tmp:
+        ws = prepare(a, None, tmp / "work")
         for check in checks_for(a.id):
-            child = run_child(ws, Path(tmp) / "scratch" / check.slug, ["check", a.id, check.slug],
+            child = run_child(ws, tmp / "scratch" / check.slug, ["check", a.id, check.slug],
                               isolation=isolation, time_limit=time_limit, memory_mb=0)
             if child.status != "ok" or "error" in child.data or any("error" in c for c in child.data.get("cases", [])):
                 raise RuntimeError("the solution fails %s (%s): %s %s %s" % (
@@ -188,25 +185,16 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     digest = _digest(ref_files)
     result = Result(a.id, str(submission), isolation=isolation)
     out_dir = Path(out_dir) if out_dir is not None else None
-    folder = reference_paths(a)[0]
-    hidden_refs = isolation == "unprivileged user"
-    if hidden_refs:  # the sandbox user may not read them; the grader holds them in memory
-        old_mode = folder.stat().st_mode
-        os.chmod(folder, 0o700)
-    try:
-        with tempfile.TemporaryDirectory(prefix="rtfgu-grade-") as tmp:
-            ws = prepare(a, submission, Path(tmp) / "work")
-            result.notes.extend(ws.notes)
-            for check in checks_for(a.id):
-                if visible_only and check.visibility != "visible":
-                    continue
-                if only is not None and check.slug not in only:
-                    continue
-                result.tests.append(_run_check(a, check, ws, Path(tmp), refs, out_dir, isolation,
-                                               time_limit, memory_mb, output_limit, log))
-    finally:
-        if hidden_refs:
-            os.chmod(folder, stat.S_IMODE(old_mode))
+    with hidden_from_sandbox_user(isolation), work_folder() as tmp:
+        ws = prepare(a, submission, tmp / "work")
+        result.notes.extend(ws.notes)
+        for check in checks_for(a.id):
+            if visible_only and check.visibility != "visible":
+                continue
+            if only is not None and check.slug not in only:
+                continue
+            result.tests.append(_run_check(a, check, ws, tmp, refs, out_dir, isolation,
+                                           time_limit, memory_mb, output_limit, log))
     now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
     if now != digest:
         for path, data in ref_files.items():

@@ -27,130 +27,35 @@ RTFGU_ISOLATION=bwrap|user|rlimits forces one (tests use it to check the fallbac
 from __future__ import annotations
 
 import ctypes
+import fcntl
+import hashlib
 import json
 import os
 import resource
 import select
 import shutil
 import signal
-import site
 import stat
+import site
 import subprocess
 import sys
 import sysconfig
+import tempfile
 import time
-import zipfile
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .archive import find_files, unpack_submission
 from .generate import PACKAGE_DIR, student_files
 from .release import build_package, probe_files
 
 RESULT_LIMIT = 64 * 1024 * 1024        # bytes of JSON a child may send back
-ARCHIVE_FILES = 500                    # entries of a submitted archive that are read at most
-ARCHIVE_BYTES = 32 * 1024 * 1024       # decompressed bytes of a submitted archive at most
-FILE_BYTES = 4 * 1024 * 1024           # bytes of one submitted file at most
 SANDBOX_UID = int(os.environ.get("RTFGU_SANDBOX_UID", "64055"))
 ISOLATIONS = ("bwrap", "unprivileged user", "rlimits only")
 INSIDE = Path("/sandbox")              # where the package, probes and scratch appear under bwrap
-BOOT = "rtfgu_checks/boot.py"
-
-
-# --- the submission ----------------------------------------------------------------------
-
-def unpack_submission(submission, tmp: Path, notes: list) -> Path:
-    """A folder with the submission's regular files: a copy of the folder (links not
-    followed), a zip extracted safely, or a single file."""
-    submission = Path(submission)
-    out = Path(tmp) / "submission"
-    out.mkdir(parents=True, exist_ok=True)
-    if submission.is_dir():
-        _copy_folder(submission, out, notes)
-    elif submission.is_file() and zipfile.is_zipfile(submission):
-        _extract_zip(submission, out, notes)
-    elif submission.is_file():
-        shutil.copyfile(submission, out / submission.name)
-    else:
-        raise ValueError("submission: %s is neither a folder, a zip file nor a file" % submission)
-    return out
-
-
-def _copy_folder(folder: Path, out: Path, notes: list) -> None:
-    total, count = 0, 0
-    for root, dirs, files in os.walk(folder, followlinks=False):
-        dirs[:] = [d for d in dirs if not os.path.islink(os.path.join(root, d)) and d != "__pycache__"]
-        for name in files:
-            path = Path(root) / name
-            if path.is_symlink() or not path.is_file():
-                notes.append("%s is a link; it was ignored" % path.relative_to(folder))
-                continue
-            count += 1
-            size = path.stat().st_size
-            if count > ARCHIVE_FILES or total + size > ARCHIVE_BYTES or size > FILE_BYTES:
-                notes.append("the submission has more files or bytes than the grader reads; %s and "
-                             "later files were ignored" % path.relative_to(folder))
-                return
-            total += size
-            target = out / path.relative_to(folder)
-            target.parent.mkdir(parents=True, exist_ok=True)
-            shutil.copyfile(path, target)
-
-
-def _extract_zip(archive: Path, out: Path, notes: list) -> None:
-    """Entries checked one by one: a path that leaves ``out`` once resolved, a link, the
-    entries past ARCHIVE_FILES and the bytes past ARCHIVE_BYTES (counted while reading: an
-    entry's declared size may lie) are not extracted."""
-    root = out.resolve()
-    total = 0
-    with zipfile.ZipFile(archive) as z:
-        for count, info in enumerate(z.infolist(), start=1):
-            if count > ARCHIVE_FILES:
-                notes.append("the archive has more than %d entries; the rest were ignored" % ARCHIVE_FILES)
-                return
-            mode = info.external_attr >> 16
-            if info.is_dir():
-                continue
-            if stat.S_ISLNK(mode):
-                notes.append("%s is a link; it was ignored" % info.filename)
-                continue
-            target = (root / info.filename).resolve()
-            try:
-                target.relative_to(root)
-            except ValueError:
-                notes.append("%s points outside the submission folder; it was ignored" % info.filename)
-                continue
-            target.parent.mkdir(parents=True, exist_ok=True)
-            written = 0
-            with z.open(info) as source, open(target, "wb") as sink:
-                while True:
-                    chunk = source.read(1 << 16)
-                    if not chunk:
-                        break
-                    written += len(chunk)
-                    total += len(chunk)
-                    if written > FILE_BYTES or total > ARCHIVE_BYTES:
-                        break
-                    sink.write(chunk)
-            if written > FILE_BYTES or total > ARCHIVE_BYTES:
-                target.unlink()
-                notes.append("the archive unpacks to more than %d MB (at %s); the rest was ignored"
-                             % (ARCHIVE_BYTES // (1024 * 1024), info.filename))
-                return
-
-
-def find_files(assignment, folder: Path) -> dict:
-    """relpath -> path of each of the assignment's files found in ``folder``: by its path in
-    the package (shapes/sphere.py, also under rtfgu/), else by its file name anywhere."""
-    found = {}
-    candidates = [p for p in sorted(folder.rglob("*")) if p.is_file() and not p.is_symlink()
-                  and "__pycache__" not in p.parts and "__MACOSX" not in p.parts]
-    for relpath in assignment.files:
-        by_path = [p for p in candidates if p.relative_to(folder).as_posix().endswith(relpath)]
-        by_name = [p for p in candidates if p.name == Path(relpath).name]
-        pick = (by_path or by_name or [None])[0]
-        if pick is not None:
-            found[relpath] = pick
-    return found
+PROBES = "rtfgu_probes"                # the probe package's name in the sandbox
+BOOT = PROBES + "/boot.py"
 
 
 # --- the folder a submission runs in ---------------------------------------------------------
@@ -159,7 +64,7 @@ def find_files(assignment, folder: Path) -> dict:
 class Workspace:
     root: Path
     package: Path                          # the folder holding rtfgu/ (first on the child's path)
-    probes: Path                           # the folder holding rtfgu_checks/
+    probes: Path                           # the folder holding rtfgu_probes/
     notes: list = field(default_factory=list)
     broken: dict = field(default_factory=dict)   # relpath -> why the file was not used
 
@@ -182,7 +87,7 @@ def prepare(assignment, submission, tmp, package_dir: Path = PACKAGE_DIR, reveal
     elif reveal is None:
         reveal = earlier(assignment)
     build_package(package, reveal, package_dir)
-    probes = root / "probes" / "rtfgu_checks"
+    probes = root / "probes" / PROBES
     probes.mkdir(parents=True)
     for name, text in probe_files(package_dir).items():
         (probes / name).write_text(text)
@@ -215,56 +120,67 @@ def prepare(assignment, submission, tmp, package_dir: Path = PACKAGE_DIR, reveal
 
 # --- isolation -------------------------------------------------------------------------------
 
+BWRAP_ID = 65534                       # the uid and gid the child has inside bwrap (nobody)
+SCRATCH_BYTES = 64 * 1024 * 1024       # the writable tmpfs (/tmp) inside bwrap
+SHM_BYTES = 16 * 1024 * 1024           # /dev/shm inside bwrap
+SYSTEM_DIRS = ("/usr", "/lib", "/lib64", "/lib32", "/libx32", "/bin", "/sbin")
+# What the dynamic linker, the interpreter and Mesa's Vulkan loader read from /etc.
+ETC_ENTRIES = ("ld.so.cache", "ld.so.conf", "ld.so.conf.d", "nsswitch.conf", "passwd", "group",
+               "localtime", "alternatives", "vulkan", "drirc", "glvnd", "OpenCL")
+# The CPU count (numpy, llvmpipe's threads) and the cgroup limits are read from /sys.
+SYS_DIRS = ("/sys/devices/system/cpu", "/sys/fs/cgroup")
+
+
 def find_bwrap() -> str | None:
+    """RTFGU_BWRAP, then bwrap on PATH, then the copy `make venv` unpacks into .venv/sandbox
+    (RTFGU_BWRAP=none: no bwrap, as on a machine without it)."""
+    if os.environ.get("RTFGU_BWRAP") == "none":
+        return None
     candidates = [os.environ.get("RTFGU_BWRAP"), shutil.which("bwrap"),
                   str(Path(sys.prefix) / "sandbox" / "usr" / "bin" / "bwrap"),
-                  str(Path(sys.executable).parent.parent / "sandbox" / "usr" / "bin" / "bwrap")]
+                  str(PACKAGE_DIR.parent / ".venv" / "sandbox" / "usr" / "bin" / "bwrap")]
     for candidate in candidates:
-        if candidate and os.access(candidate, os.X_OK):
+        if candidate and os.path.isfile(candidate) and os.access(candidate, os.X_OK):
             return candidate
     return None
 
 
+# bwrap's namespace options: the child is an unprivileged user inside its own user namespace
+# where that is allowed, else keeps the caller's uid in the other namespaces.
+BWRAP_NAMESPACES = (["--unshare-all", "--unshare-user", "--uid", str(BWRAP_ID), "--gid", str(BWRAP_ID)],
+                    ["--unshare-all"])
 _BWRAP_WORKS = {}
 
 
-def bwrap_works(bwrap: str) -> bool:
-    """Whether bwrap can make its namespaces here (a container may forbid user namespaces)."""
+def _bwrap_namespaces(bwrap: str):
+    """The first of BWRAP_NAMESPACES this machine allows, or None (a container may forbid
+    user namespaces)."""
     if bwrap not in _BWRAP_WORKS:
-        try:
-            done = subprocess.run([bwrap, "--unshare-all", "--ro-bind", "/", "/", "--proc", "/proc",
-                                   "--dev", "/dev", "true"], capture_output=True, timeout=20)
-            _BWRAP_WORKS[bwrap] = done.returncode == 0
-        except (OSError, subprocess.SubprocessError):
-            _BWRAP_WORKS[bwrap] = False
+        _BWRAP_WORKS[bwrap] = None
+        for flags in BWRAP_NAMESPACES:
+            try:
+                done = subprocess.run([bwrap] + flags + ["--die-with-parent", "--new-session",
+                                                         "--ro-bind", "/", "/", "--proc", "/proc",
+                                                         "--dev", "/dev", "true"],
+                                      capture_output=True, timeout=20)
+            except (OSError, subprocess.SubprocessError):
+                break
+            if done.returncode == 0:
+                _BWRAP_WORKS[bwrap] = flags
+                break
     return _BWRAP_WORKS[bwrap]
 
 
-_USER_WORKS = {}
-
-
-def user_works() -> bool:
-    """Whether the sandbox user can start this interpreter (it may live in a folder only root
-    can enter, as pyenv's under /root)."""
-    if "ok" not in _USER_WORKS:
-        def drop():
-            os.setgroups([])
-            os.setgid(SANDBOX_UID)
-            os.setuid(SANDBOX_UID)
-        try:
-            done = subprocess.run([os.path.realpath(sys.executable), "-I", "-S", "-c", "pass"],
-                                  preexec_fn=drop, capture_output=True, timeout=20, cwd="/")
-            _USER_WORKS["ok"] = done.returncode == 0
-        except (OSError, subprocess.SubprocessError):
-            _USER_WORKS["ok"] = False
-    return _USER_WORKS["ok"]
+def bwrap_works(bwrap: str) -> bool:
+    """Whether bwrap can make its namespaces here."""
+    return bwrap is not None and _bwrap_namespaces(bwrap) is not None
 
 
 def choose_isolation(require_sandbox: bool = False) -> str:
     """The isolation this machine allows (RTFGU_ISOLATION=bwrap|user|rlimits forces one)."""
     forced = os.environ.get("RTFGU_ISOLATION")
     bwrap = find_bwrap()
-    have_bwrap = bwrap is not None and bwrap_works(bwrap)
+    have_bwrap = bwrap_works(bwrap)
     if forced:
         wanted = {"bwrap": "bwrap", "user": "unprivileged user", "rlimits": "rlimits only"}.get(forced)
         if wanted is None:
@@ -272,13 +188,12 @@ def choose_isolation(require_sandbox: bool = False) -> str:
         if wanted == "bwrap" and not have_bwrap:
             raise ValueError("RTFGU_ISOLATION=bwrap, but bwrap is not installed or cannot run here "
                              "(Debian package bubblewrap)")
-        if wanted == "unprivileged user" and (os.geteuid() != 0 or not user_works()):
-            raise ValueError("RTFGU_ISOLATION=user needs the grader to run as root, with an interpreter "
-                             "the user %d can run" % SANDBOX_UID)
+        if wanted == "unprivileged user" and os.geteuid() != 0:
+            raise ValueError("RTFGU_ISOLATION=user needs the grader to run as root")
         choice = wanted
     elif have_bwrap:
         choice = "bwrap"
-    elif os.geteuid() == 0 and user_works():
+    elif os.geteuid() == 0:
         choice = "unprivileged user"
     else:
         choice = "rlimits only"
@@ -301,38 +216,228 @@ def _site_dirs() -> list:
     return out
 
 
-def _bwrap_command(bwrap: str, ws: Workspace, scratch: Path, python: str, args: list) -> list:
-    cmd = [bwrap, "--unshare-all", "--die-with-parent", "--new-session", "--clearenv",
-           "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp"]
-    for path in ("/usr", "/lib", "/lib64", "/lib32", "/bin", "/sbin", "/etc"):
+def _inside(path, folder) -> bool:
+    try:
+        Path(path).resolve().relative_to(Path(folder).resolve())
+        return True
+    except ValueError:
+        return False
+
+
+def _bwrap_command(bwrap: str, ws: Workspace, python: str, args: list, memory_mb: int) -> list:
+    """The read-only view: the system folders, a few /etc and /sys entries, the interpreter's
+    installation, its site-packages (with the staff package hidden should it be installed
+    there), the student package and the probes; the only writable folder is a small tmpfs."""
+    cmd = [bwrap] + _bwrap_namespaces(bwrap) + ["--die-with-parent", "--new-session", "--clearenv"]
+    for path in SYSTEM_DIRS:
+        if os.path.islink(path):
+            cmd += ["--symlink", os.readlink(path), path]
+        elif os.path.isdir(path):
+            cmd += ["--ro-bind", path, path]
+    for name in ETC_ENTRIES:
+        path = os.path.join("/etc", name)
+        if os.path.lexists(path):
+            cmd += ["--ro-bind-try", path, path]
+    for path in SYS_DIRS:
         if os.path.exists(path):
             cmd += ["--ro-bind", path, path]
-    for path in ("/sys/devices/system/cpu", "/sys/fs/cgroup"):
-        if os.path.exists(path):
+    cmd += ["--proc", "/proc", "--dev", "/dev", "--size", str(SHM_BYTES), "--tmpfs", "/dev/shm",
+            "--remount-ro", "/dev", "--size", str(SCRATCH_BYTES), "--tmpfs", "/tmp"]
+    shown = []
+    for path in [sys.base_prefix, os.path.dirname(os.path.dirname(python))] + _site_dirs():
+        if os.path.isdir(path) and path not in shown and not any(_inside(path, d) for d in SYSTEM_DIRS):
+            shown.append(path)
             cmd += ["--ro-bind", path, path]
-    prefixes = {sys.base_prefix, os.path.dirname(os.path.dirname(python))}
-    for path in sorted(prefixes) + _site_dirs():
-        if os.path.exists(path) and not path.startswith(("/usr", "/lib")):
-            cmd += ["--ro-bind", path, path]
+    if any(_inside(PACKAGE_DIR, d) for d in shown + list(SYSTEM_DIRS)):
+        cmd += ["--tmpfs", str(PACKAGE_DIR), "--remount-ro", str(PACKAGE_DIR)]
     cmd += ["--ro-bind", str(ws.package), str(INSIDE / "package"),
-            "--ro-bind", str(ws.probes), str(INSIDE / "probes"),
-            "--bind", str(scratch), str(INSIDE / "scratch"),
-            "--chdir", str(INSIDE / "scratch")]
-    for key, value in _child_env(INSIDE / "scratch").items():
+            "--ro-bind", str(ws.probes), str(INSIDE / "probes"), "--chdir", "/tmp"]
+    for key, value in _child_env(Path("/tmp"), memory_mb).items():
         cmd += ["--setenv", key, value]
     return cmd + ["--", python, "-I", "-S", str(INSIDE / "probes" / BOOT)] + args
 
 
 def _child_env(scratch: Path, memory_mb: int = 0) -> dict:
     return {"PATH": "/usr/bin:/bin", "HOME": str(scratch), "TMPDIR": str(scratch),
+            "XDG_CACHE_HOME": str(scratch), "MESA_SHADER_CACHE_DISABLE": "true",
             "LANG": "C.UTF-8", "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1",
             "NUMBA_NUM_THREADS": "1", "RTFGU_MEMORY_MB": str(memory_mb)}
 
 
+# --- the unprivileged-user fallback -------------------------------------------------------
+
+def staff_folder() -> Path:
+    """What the sandbox user may not read while it runs: the folder holding the staff package
+    (the checkout, or the autograder's source folder), or the package alone where that folder
+    is shared (a site-packages, a system folder)."""
+    parent = PACKAGE_DIR.parent.resolve()
+    shared = [Path(d).resolve() for d in _site_dirs() + [sys.base_prefix]] + [Path("/")]
+    if parent in shared or any(_inside(parent, d) for d in SYSTEM_DIRS):
+        return PACKAGE_DIR
+    return parent
+
+
+def _reachable_by_others(path) -> bool:
+    """Whether a user other than the owner can reach ``path`` (every folder above it
+    searchable, itself readable)."""
+    path = Path(path).resolve()
+    try:
+        if any(not os.stat(p).st_mode & stat.S_IXOTH for p in path.parents):
+            return False
+        return bool(os.stat(path).st_mode & stat.S_IROTH)
+    except OSError:
+        return False
+
+
+def _link_tree(src: Path, dst: Path, skip=()) -> None:
+    """``dst`` as hard links to ``src``'s files (copies where a link cannot be made or the
+    file is not readable by others), without the folders named in ``skip`` and without links
+    that lead out of ``src``."""
+    src = Path(src)
+    for root, dirs, files in os.walk(src):
+        here = Path(root)
+        dirs[:] = [d for d in dirs if d not in skip and str(here / d) not in skip and d != "__editable__"
+                   and not os.path.islink(here / d)]
+        out = dst / here.relative_to(src)
+        out.mkdir(parents=True, exist_ok=True)
+        os.chmod(out, 0o755)
+        for name in files:
+            source, target = here / name, out / name
+            if os.path.islink(source):
+                link = os.readlink(source)
+                if not os.path.isabs(link) and _inside(source.parent / link, src):
+                    os.symlink(link, target)
+                continue
+            mode = os.stat(source).st_mode
+            if mode & stat.S_IROTH:
+                try:
+                    os.link(source, target)
+                    continue
+                except OSError:
+                    pass
+            shutil.copyfile(source, target)
+            os.chmod(target, 0o755 if mode & stat.S_IXUSR else 0o644)
+
+
+STDLIB_SKIP = ("site-packages", "dist-packages", "test", "idlelib", "tkinter", "turtledemo", "ensurepip")
+
+
+def _owned_and_closed(path: Path) -> bool:
+    try:
+        st = os.lstat(path)
+    except OSError:
+        return False
+    return stat.S_ISDIR(st.st_mode) and st.st_uid == os.getuid() and not st.st_mode & 0o022
+
+
+def user_runtime():
+    """(interpreter, site folders, environment) the sandbox user can run with the staff folder
+    hidden: the grader's own where that user can reach them, else a cached tree of hard links
+    to them (the interpreter, its libpython and standard library, the site-packages without
+    the staff package) in the temporary folder, owned by the grader's user."""
+    python, sites = os.path.realpath(sys.executable), _site_dirs()
+    stdlib = sysconfig.get_paths()["stdlib"]
+    hidden = staff_folder()
+    if all(_reachable_by_others(p) and not _inside(p, hidden) for p in [python, stdlib] + sites):
+        return python, sites, {}
+    libdir = sysconfig.get_config_var("LIBDIR") or os.path.join(sys.base_prefix, "lib")
+    key = repr((python, stdlib, sites, [os.stat(p).st_mtime_ns for p in [python, stdlib] + sites]))
+    root = Path(tempfile.gettempdir()) / ("rtfgu-runtime-%d-%s" % (os.getuid(), hashlib.sha256(key.encode()).hexdigest()[:16]))
+    version = "python%d.%d" % sys.version_info[:2]
+    runtime_python = root / "bin" / os.path.basename(python)
+    runtime_sites = [root / ("site%d" % i) for i in range(len(sites))]
+    env = {"LD_LIBRARY_PATH": str(root / "lib")}
+    if _owned_and_closed(root) and (root / ".complete").exists():
+        return str(runtime_python), [str(s) for s in runtime_sites], env
+    build = Path(tempfile.mkdtemp(prefix=root.name + "-build-"))
+    os.chmod(build, 0o755)
+    (build / "bin").mkdir()
+    shutil.copyfile(python, build / "bin" / os.path.basename(python))
+    os.chmod(build / "bin" / os.path.basename(python), 0o755)
+    (build / "lib").mkdir()
+    for lib in Path(libdir).glob("libpython*"):
+        if lib.is_file():
+            shutil.copyfile(lib, build / "lib" / lib.name)
+            os.chmod(build / "lib" / lib.name, 0o755)
+    _link_tree(Path(stdlib), build / "lib" / version, STDLIB_SKIP)
+    for folder, target in zip(sites, runtime_sites):
+        _link_tree(Path(folder), build / target.name, (str(PACKAGE_DIR),))
+    (build / ".complete").write_text("")
+    try:
+        os.rename(build, root)
+    except OSError:  # another grader built it first, or a stale folder is in the way
+        if not (_owned_and_closed(root) and (root / ".complete").exists()):
+            root, runtime_python = build, build / "bin" / os.path.basename(python)
+            runtime_sites = [build / s.name for s in runtime_sites]
+            env = {"LD_LIBRARY_PATH": str(build / "lib")}
+        else:
+            shutil.rmtree(build, ignore_errors=True)
+    return str(runtime_python), [str(s) for s in runtime_sites], env
+
+
+@contextmanager
+def hidden_from_sandbox_user(isolation: str):
+    """While grading under ``unprivileged user``, the staff folder is mode 0700 (the sandbox
+    user cannot read the solutions, the references or the grader); graders that overlap
+    share it through a state file, and the last one out restores the mode."""
+    if isolation != "unprivileged user":
+        yield
+        return
+    folder = str(staff_folder())
+    state_path = Path(tempfile.gettempdir()) / ("rtfgu-hidden-%d.json" % os.getuid())
+
+    def update(change):
+        fd = os.open(state_path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600)
+        with os.fdopen(fd, "r+") as f:
+            fcntl.flock(f, fcntl.LOCK_EX)
+            try:
+                state = json.loads(f.read() or "{}")
+            except ValueError:
+                state = {}
+            entry = state.get(folder) or {"mode": stat.S_IMODE(os.stat(folder).st_mode), "pids": []}
+            entry["pids"] = [p for p in entry["pids"] if _alive(p)]
+            change(entry)
+            if entry["pids"]:
+                state[folder] = entry
+                os.chmod(folder, 0o700)
+            else:
+                state.pop(folder, None)
+                os.chmod(folder, entry["mode"])
+            f.seek(0)
+            f.truncate()
+            f.write(json.dumps(state))
+
+    update(lambda entry: entry["pids"].append(os.getpid()))
+    try:
+        yield
+    finally:
+        update(lambda entry: entry["pids"].remove(os.getpid()) if os.getpid() in entry["pids"] else None)
+
+
+def _alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+        return True
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+
+
+@contextmanager
+def work_folder(prefix: str = "rtfgu-grade-"):
+    """A temporary folder the sandbox user may pass through (mode 0711) but not list."""
+    with tempfile.TemporaryDirectory(prefix=prefix) as tmp:
+        os.chmod(tmp, 0o711)
+        yield Path(tmp)
+
+
 CLONE_NEWNET = 0x40000000
+NPROC = 64                             # processes of the sandbox user at most
 
 
 def _preexec(limits: dict, isolation: str):
+    """Runs between fork and exec (nothing of the student's runs before exec)."""
     def run():
         resource.setrlimit(resource.RLIMIT_FSIZE, (limits["output"], limits["output"]))
         resource.setrlimit(resource.RLIMIT_CPU, (limits["cpu"], limits["cpu"] + 1))
@@ -348,7 +453,7 @@ def _preexec(limits: dict, isolation: str):
             os.setgroups([])
             os.setgid(SANDBOX_UID)
             os.setuid(SANDBOX_UID)
-            resource.setrlimit(resource.RLIMIT_NPROC, (64, 64))
+            resource.setrlimit(resource.RLIMIT_NPROC, (NPROC, NPROC))
     return run
 
 
@@ -378,23 +483,25 @@ class ChildResult:
 def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time_limit: float = 10.0,
               memory_mb: int = 1024, output_limit: int = 1024 * 1024) -> ChildResult:
     """Run one probe (["check", assignment id, slug] or ["render", scene, width, height]) in a
-    new interpreter under ``isolation``; its answer is JSON through a pipe."""
+    new interpreter under ``isolation``; its answer is JSON through a pipe, its output goes to
+    ``scratch``/output.txt (at most ``output_limit`` bytes)."""
     scratch = Path(scratch)
     scratch.mkdir(parents=True, exist_ok=True)
-    python = os.path.realpath(sys.executable)
+    python, sites, extra_env = os.path.realpath(sys.executable), _site_dirs(), {}
+    if isolation == "unprivileged user":
+        python, sites, extra_env = user_runtime()
     read_fd, write_fd = os.pipe()
-    os.set_inheritable(write_fd, True)
     if isolation == "bwrap":
-        package, probes, where = INSIDE / "package", INSIDE / "probes", INSIDE / "scratch"
+        package, probes = INSIDE / "package", INSIDE / "probes"
     else:
-        package, probes, where = ws.package, ws.probes, scratch
-    args = [str(package), str(probes), os.pathsep.join(_site_dirs()), str(write_fd)] + [str(p) for p in probe]
+        package, probes = ws.package, ws.probes
+    args = [str(package), str(probes), os.pathsep.join(sites), str(write_fd)] + [str(p) for p in probe]
     if isolation == "bwrap":
-        command = _bwrap_command(find_bwrap(), ws, scratch, python, args)
+        command = _bwrap_command(find_bwrap(), ws, python, args, memory_mb)
         env = {}
     else:
         command = [python, "-I", "-S", str(probes / BOOT)] + args
-        env = _child_env(scratch, memory_mb)
+        env = dict(_child_env(scratch, memory_mb), **extra_env)
     if isolation == "unprivileged user":
         os.chown(scratch, SANDBOX_UID, SANDBOX_UID)
     # The interpreter, numpy and the renderer take about 0.6 GB of address space before the
@@ -403,39 +510,56 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
               "memory": (memory_mb + 768) * 1024 * 1024 if memory_mb else 0}
     output_path = scratch / "output.txt"
     start = time.monotonic()
-    with open(output_path, "wb") as output:
-        process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=output, stderr=output,
-                                   pass_fds=(write_fd,), cwd=str(scratch), env=env or _child_env(where, memory_mb),
-                                   start_new_session=True, preexec_fn=_preexec(limits, isolation))
-    os.close(write_fd)
+    try:
+        with open(output_path, "wb") as output:
+            process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=output, stderr=output,
+                                       pass_fds=(write_fd,), cwd=str(scratch), env=env,
+                                       start_new_session=True, preexec_fn=_preexec(limits, isolation))
+    finally:
+        os.close(write_fd)
     chunks, size, status, detail = [], 0, None, ""
     deadline = start + time_limit
     try:
         while True:
+            if size > RESULT_LIMIT:
+                status, detail = "bad answer", "the test's answer was larger than %d bytes" % RESULT_LIMIT
+                break
             left = deadline - time.monotonic()
             if left <= 0:
                 status = "timeout"
                 break
-            ready, _, _ = select.select([read_fd], [], [], min(left, 0.5))
+            ready, _, _ = select.select([read_fd], [], [], min(left, 0.1))
             if not ready:
+                if process.poll() is not None:   # exited; a process it left may hold the pipe open
+                    os.set_blocking(read_fd, False)
+                    try:
+                        chunk = os.read(read_fd, 1 << 16)
+                    except BlockingIOError:
+                        break
+                    os.set_blocking(read_fd, True)
+                    if not chunk:
+                        break
+                    chunks.append(chunk)
+                    size += len(chunk)
                 continue
             chunk = os.read(read_fd, 1 << 16)
             if not chunk:
+                try:
+                    process.wait(max(0.0, min(deadline - time.monotonic(), 5.0)))
+                except subprocess.TimeoutExpired:
+                    pass
                 break
             chunks.append(chunk)
             size += len(chunk)
-            if size > RESULT_LIMIT:
-                status, detail = "bad answer", "the test's answer was larger than %d bytes" % RESULT_LIMIT
-                break
     finally:
         os.close(read_fd)
         try:
-            os.killpg(process.pid, signal.SIGKILL)   # the child and anything it started
+            os.killpg(process.pid, signal.SIGKILL)   # the child (under bwrap: its namespace) and its group
         except (ProcessLookupError, PermissionError):
             pass
         process.wait()
         if isolation == "unprivileged user":
-            _kill_user(SANDBOX_UID)
+            _kill_user(SANDBOX_UID)                  # whatever left the group
     seconds = time.monotonic() - start
     output = _read_output(output_path)
     if status is None:
@@ -443,7 +567,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         if out_size >= output_limit:
             status, detail = "too much output", "your code printed %d bytes or more; the limit is %d" % (
                 output_limit, output_limit)
-    if status is None and not chunks:
+    if status is None and process.returncode != 0:
         code = process.returncode
         status = "crashed"
         if code < 0:
@@ -451,6 +575,8 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
                       signal.SIGSEGV: "it crashed (segmentation fault)"}.get(-code, "it was killed by signal %d" % -code)
         else:
             detail = "it exited (exit code %d) before the test finished" % code
+    if status is None and not chunks:
+        status, detail = "crashed", "it exited before the test finished"
     if status is None:
         try:
             data = json.loads(b"".join(chunks))
