@@ -275,3 +275,16 @@ def test_the_wgsl_assignment_gives_the_solution_full_marks_and_the_stubs_zero(tm
     stubs = grade("a06", tmp_path / "stubs", None, time_limit=60)
     assert stubs.score == 0
     assert all("TODO_a06_" in t.output for t in stubs.tests)
+
+
+def test_the_gradescope_setup_installs_bubblewrap_and_for_wgsl_mesas_software_adapter(tmp_path):
+    from rtfgu.grading.autograder import MESA_PACKAGES, build_zip
+
+    for name, wgsl in (("a03", False), ("a06", True)):
+        with zipfile.ZipFile(build_zip(get_assignment(name), tmp_path / ("%s.zip" % name))) as z:
+            setup = z.read("setup.sh").decode()
+            run = z.read("run_autograder").decode()
+        install = next(line for line in setup.splitlines() if line.startswith("apt-get install"))
+        assert "bubblewrap" in install.split()
+        assert all((package in install.split()) == wgsl for package in MESA_PACKAGES)
+        assert "bubblewrap" in run

@@ -15,13 +15,18 @@ from pathlib import Path
 from .generate import PACKAGE_DIR
 
 SETUP_SH = """#!/usr/bin/env bash
-# Gradescope runs this once when it builds the autograder image (Ubuntu).
+# Gradescope runs this once when it builds the autograder image (Ubuntu). bubblewrap is the
+# sandbox student code runs in (rtfgu/grading/sandbox.py); where the container forbids the
+# namespaces it needs, the grader falls back to a weaker isolation and says which in the result.
 set -euo pipefail
 apt-get update
-apt-get install -y python3 python3-pip python3-venv
+apt-get install -y python3 python3-pip python3-venv bubblewrap%(packages)s
 python3 -m venv /autograder/venv
 /autograder/venv/bin/pip install 'numpy>=1.24' 'Pillow>=10'%(extra)s
 """
+
+# What wgpu needs to find Mesa's software adapter (llvmpipe through lavapipe or EGL).
+MESA_PACKAGES = ("libgl1-mesa-dri", "libegl1", "mesa-vulkan-drivers")
 
 RUN_AUTOGRADER = """#!/usr/bin/env bash
 # Gradescope runs this once per submission. AUTOGRADER_ROOT and AUTOGRADER_PYTHON override
@@ -32,6 +37,13 @@ PY="${AUTOGRADER_PYTHON:-$ROOT/venv/bin/python}"
 test -x "$PY" || PY=python3
 mkdir -p "$ROOT/results"
 cd "$ROOT/source"
+if command -v bwrap >/dev/null 2>&1; then
+    echo "bubblewrap: $(command -v bwrap) (used where this container allows user namespaces)"
+else
+    echo "bubblewrap is not installed (Debian package bubblewrap): a weaker isolation is used"
+fi
+# The grade command prints which isolation ran ("student code ran isolated by: ...") and
+# records it in results.json (extra_data.isolation).
 PYTHONPATH="$ROOT/source" "$PY" -m rtfgu.grading grade %(assignment)s "$ROOT/submission" \\
     --out "$ROOT/results" --time-limit "${AUTOGRADER_TIME_LIMIT:-%(time_limit)g}"
 status=$?
@@ -52,7 +64,9 @@ def _package_files():
 def build_zip(assignment, out) -> Path:
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    extra = " 'wgpu>=0.19'" if assignment.language == "wgsl" else ""
+    wgsl = assignment.language == "wgsl"
+    extra = " 'wgpu>=0.19'" if wgsl else ""
+    packages = "".join(" " + name for name in MESA_PACKAGES) if wgsl else ""
 
     def add_script(z, name, text):
         info = zipfile.ZipInfo(name, date_time=(2024, 1, 1, 0, 0, 0))
@@ -60,7 +74,7 @@ def build_zip(assignment, out) -> Path:
         z.writestr(info, text)
 
     with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
-        add_script(z, "setup.sh", SETUP_SH % {"extra": extra})
+        add_script(z, "setup.sh", SETUP_SH % {"extra": extra, "packages": packages})
         add_script(z, "run_autograder", RUN_AUTOGRADER % {"assignment": assignment.id,
                                                           "time_limit": assignment.time_limit})
         for path, name in _package_files():
