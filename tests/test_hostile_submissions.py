@@ -389,6 +389,7 @@ def test_a_gigabyte_of_output_costs_that_test_only_and_the_grader_output_stays_s
                 sys.stdout.flush()
             except OSError:
                 pass
+        raise RuntimeError("z" * (16 << 20))
         """
     result = _grade_attack(tmp_path, isolation, attack)
     assert _scores(result) == honest

@@ -24,6 +24,7 @@ from .results import Result, TestResult
 from .sandbox import choose_isolation, hidden_from_sandbox_user, prepare, run_child, work_folder
 
 REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
+MESSAGE_LIMIT = 8000                   # characters of one test's message in the results
 
 
 # --- references ----------------------------------------------------------------------------
@@ -233,6 +234,8 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
     if output.strip() and fraction < 1.0:
         lines.append("What your code printed:\n" + output)
     message = "\n".join(lines) if lines else "all cases right"
+    if len(message) > MESSAGE_LIMIT:  # the child's error texts are the student's to choose
+        message = message[:MESSAGE_LIMIT] + "\n[... message cut at %d characters]" % MESSAGE_LIMIT
     if fraction >= 1.0 and check.kind != "image":
         message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
     test = TestResult(check.number, check.name, float(check.weight), round(check.weight * fraction, 4),
