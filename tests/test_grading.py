@@ -288,3 +288,18 @@ def test_the_gradescope_setup_installs_bubblewrap_and_for_wgsl_mesas_software_ad
         assert "bubblewrap" in install.split()
         assert all((package in install.split()) == wgsl for package in MESA_PACKAGES)
         assert "bubblewrap" in run
+
+
+def test_graders_that_run_at_once_under_the_user_fallback_do_not_kill_each_others_tests(tmp_path, monkeypatch):
+    # Each grading process has a sandbox user of its own; the user's processes are killed
+    # after every test, which must not reach a test another grader is running.
+    from rtfgu.grading.gradebook import grade_all
+
+    if os.geteuid() != 0:
+        pytest.skip("the unprivileged-user fallback needs the grader to run as root")
+    monkeypatch.setenv("RTFGU_ISOLATION", "user")
+    for student in ("ann", "ben", "cat", "dan"):
+        write_files(solution_files("a05"), tmp_path / "class" / student)
+    path = grade_all("a05", tmp_path / "class", tmp_path / "out", processes=2, time_limit=LIMIT)
+    rows = list(csv.DictReader(open(path)))
+    assert [(r["student"], r["percent"]) for r in rows] == [(s, "100.0") for s in ("ann", "ben", "cat", "dan")]

@@ -15,7 +15,8 @@ memory holds the answers), inside the strongest isolation the machine allows:
   read-only view of the system, the interpreter, its site-packages, the student package and
   the probes, and one writable scratch folder; nothing of the grader's checkout;
 * ``unprivileged user`` (root without bwrap): the child runs as a user of its own
-  (RTFGU_SANDBOX_UID, default 64055) in a new network namespace when the kernel allows it,
+  (one per grading process, from RTFGU_SANDBOX_UID, default 64055, upwards: graders that
+  run at once never share one) in a new network namespace when the kernel allows it,
   with a process limit, and every process of that user is killed after the test; the
   reference files are unreadable to it while grading;
 * ``rlimits only`` (neither): a new session and the resource limits.
@@ -432,11 +433,42 @@ def work_folder(prefix: str = "rtfgu-grade-"):
         yield Path(tmp)
 
 
+UID_SLOTS = 256                        # sandbox users: SANDBOX_UID .. SANDBOX_UID + UID_SLOTS - 1
+_UID_CLAIM = {}                        # pid -> (uid, the open lock file that holds it)
+
+
+def sandbox_uid() -> int:
+    """The sandbox user of this grading process: the first uid from SANDBOX_UID on whose lock
+    file no other live process holds. Graders that run at once (grade-all's workers, two
+    graders on one machine) get different users, so killing every process of one's user
+    after a test never touches another's test, and one submission's processes cannot reach
+    another's. The claim lasts as long as this process."""
+    pid = os.getpid()
+    if pid in _UID_CLAIM:
+        return _UID_CLAIM[pid][0]
+    folder = Path(tempfile.gettempdir())
+    for slot in range(UID_SLOTS):
+        uid = SANDBOX_UID + slot
+        try:
+            fd = os.open(folder / ("rtfgu-sandbox-uid-%d.lock" % uid), os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600)
+        except OSError:
+            continue
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError:
+            os.close(fd)
+            continue
+        _UID_CLAIM[pid] = (uid, fd)
+        return uid
+    raise RuntimeError("all %d sandbox users (uid %d and up) are taken by other graders"
+                       % (UID_SLOTS, SANDBOX_UID))
+
+
 CLONE_NEWNET = 0x40000000
 NPROC = 64                             # processes of the sandbox user at most
 
 
-def _preexec(limits: dict, isolation: str):
+def _preexec(limits: dict, isolation: str, uid: int = SANDBOX_UID):
     """Runs between fork and exec (nothing of the student's runs before exec)."""
     def run():
         resource.setrlimit(resource.RLIMIT_FSIZE, (limits["output"], limits["output"]))
@@ -451,8 +483,8 @@ def _preexec(limits: dict, isolation: str):
             except Exception:
                 pass
             os.setgroups([])
-            os.setgid(SANDBOX_UID)
-            os.setuid(SANDBOX_UID)
+            os.setgid(uid)
+            os.setuid(uid)
             resource.setrlimit(resource.RLIMIT_NPROC, (NPROC, NPROC))
     return run
 
@@ -502,8 +534,9 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
     else:
         command = [python, "-I", "-S", str(probes / BOOT)] + args
         env = dict(_child_env(scratch, memory_mb), **extra_env)
-    if isolation == "unprivileged user":
-        os.chown(scratch, SANDBOX_UID, SANDBOX_UID)
+    uid = sandbox_uid() if isolation == "unprivileged user" else None
+    if uid is not None:
+        os.chown(scratch, uid, uid)
     # The interpreter, numpy and the renderer take about 0.6 GB of address space before the
     # test's own memory_mb (0: no limit; llvmpipe reserves far more).
     limits = {"output": output_limit, "cpu": int(time_limit) + 2,
@@ -514,7 +547,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         with open(output_path, "wb") as output:
             process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=output, stderr=output,
                                        pass_fds=(write_fd,), cwd=str(scratch), env=env,
-                                       start_new_session=True, preexec_fn=_preexec(limits, isolation))
+                                       start_new_session=True, preexec_fn=_preexec(limits, isolation, uid))
     finally:
         os.close(write_fd)
     chunks, size, status, detail = [], 0, None, ""
@@ -559,7 +592,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
             pass
         process.wait()
         if isolation == "unprivileged user":
-            _kill_user(SANDBOX_UID)                  # whatever left the group
+            _kill_user(uid)                          # whatever left the group
     seconds = time.monotonic() - start
     output = _read_output(output_path)
     if status is None:
