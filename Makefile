@@ -22,7 +22,8 @@ $(SANDBOX_STAMP): $(STAMP)
 	@if command -v bwrap >/dev/null 2>&1; then echo "bubblewrap: $$(command -v bwrap)"; \
 	elif command -v apt-get >/dev/null 2>&1 && command -v dpkg-deb >/dev/null 2>&1; then \
 	  rm -rf $(VENV)/sandbox-download && mkdir -p $(VENV)/sandbox-download && \
-	  (cd $(VENV)/sandbox-download && apt-get download bubblewrap >/dev/null 2>&1) && \
+	  (cd $(VENV)/sandbox-download && { apt-get download bubblewrap >/dev/null 2>&1 || \
+	    { test "$$(id -u)" = 0 && apt-get update -qq >/dev/null 2>&1 && apt-get download bubblewrap >/dev/null 2>&1; }; }) && \
 	  dpkg-deb -x $(VENV)/sandbox-download/bubblewrap_*.deb $(VENV)/sandbox && \
 	  echo "bubblewrap: $(VENV)/sandbox/usr/bin/bwrap" || \
 	  echo "bubblewrap could not be downloaded (Debian package bubblewrap): the grader will use a weaker sandbox"; \

@@ -290,6 +290,24 @@ def test_the_gradescope_setup_installs_bubblewrap_and_for_wgsl_mesas_software_ad
         assert "bubblewrap" in run
 
 
+@pytest.mark.parametrize("forced, name", [("bwrap", "bwrap"), ("user", "unprivileged user"), ("rlimits", "rlimits only")])
+def test_every_isolation_grades_the_solution_and_says_which_ran(forced, name, tmp_path, monkeypatch):
+    from rtfgu.grading.sandbox import bwrap_works, find_bwrap
+
+    if forced == "bwrap" and not bwrap_works(find_bwrap()):
+        pytest.skip("bubblewrap is not installed or cannot run here (Debian package bubblewrap)")
+    if forced == "user" and os.geteuid() != 0:
+        pytest.skip("the unprivileged-user fallback needs the grader to run as root")
+    monkeypatch.setenv("RTFGU_ISOLATION", forced)
+    write_files(solution_files("a04"), tmp_path / "sub")
+    checkout_mode = os.stat(ROOT).st_mode
+    result = grade("a04", tmp_path / "sub", tmp_path / "out", time_limit=LIMIT)
+    assert result.score == result.max_score
+    assert json.loads((tmp_path / "out" / "results.json").read_text())["extra_data"]["isolation"] == name
+    assert "student code ran isolated by: %s" % name in (tmp_path / "out" / "summary.txt").read_text()
+    assert os.stat(ROOT).st_mode == checkout_mode   # the fallback hides the checkout only while it grades
+
+
 def test_graders_that_run_at_once_under_the_user_fallback_do_not_kill_each_others_tests(tmp_path, monkeypatch):
     # Each grading process has a sandbox user of its own; the user's processes are killed
     # after every test, which must not reach a test another grader is running.
