@@ -321,3 +321,32 @@ def test_graders_that_run_at_once_under_the_user_fallback_do_not_kill_each_other
     path = grade_all("a05", tmp_path / "class", tmp_path / "out", processes=2, time_limit=LIMIT)
     rows = list(csv.DictReader(open(path)))
     assert [(r["student"], r["percent"]) for r in rows] == [(s, "100.0") for s in ("ann", "ben", "cat", "dan")]
+
+
+def test_under_the_user_fallback_a_result_folder_is_closed_to_the_sandbox_users(tmp_path, monkeypatch):
+    # Its diff images hold the reference images (hidden tests' too), written while another
+    # student's code may run (grade-all); the folder is the grader's alone.
+    import tempfile
+
+    from rtfgu.grading.sandbox import SANDBOX_UID
+
+    if os.geteuid() != 0:
+        pytest.skip("the unprivileged-user fallback needs the grader to run as root")
+    monkeypatch.setenv("RTFGU_ISOLATION", "user")
+    shared = Path(tempfile.mkdtemp(prefix="rtfgu-results-"))
+    try:
+        os.chmod(shared, 0o755)                  # a results folder others may pass through
+        write_files(solution_files("a03"), tmp_path / "sub")
+        grade("a03", tmp_path / "sub", shared / "alice", only=("07_image_lecture_01_scene_the_closest_hit_in_flat_c",))
+        diff = next((shared / "alice" / "diffs").glob("*.png"))
+        read = "import sys\ntry:\n    open(sys.argv[1], 'rb').read()\n    print('read')\nexcept OSError:\n    print('denied')"
+
+        def as_sandbox_user():
+            os.setgroups([])
+            os.setgid(SANDBOX_UID + 1)
+            os.setuid(SANDBOX_UID + 1)
+        done = subprocess.run(["/usr/bin/python3", "-c", read, str(diff)], preexec_fn=as_sandbox_user,
+                              capture_output=True, text=True, cwd="/")
+        assert done.stdout.strip() == "denied", done.stdout + done.stderr
+    finally:
+        shutil.rmtree(shared)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import os
 import time
 from pathlib import Path
 
@@ -186,6 +187,11 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     digest = _digest(ref_files)
     result = Result(a.id, str(submission), isolation=isolation)
     out_dir = Path(out_dir) if out_dir is not None else None
+    if out_dir is not None and isolation == "unprivileged user":
+        # The diff images written while grading hold reference images (hidden tests' too), and
+        # another submission's sandbox user may be running at the same time (grade-all).
+        out_dir.mkdir(parents=True, exist_ok=True)
+        os.chmod(out_dir, 0o700)
     with hidden_from_sandbox_user(isolation), work_folder() as tmp:
         ws = prepare(a, submission, tmp / "work")
         result.notes.extend(ws.notes)
