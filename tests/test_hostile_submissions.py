@@ -108,8 +108,10 @@ def _git_status() -> str:
 
 
 def _staff_digest() -> dict:
-    """The files a submission would most like to change: the grader, the references, the solution."""
-    paths = [PACKAGE_DIR / "grading" / "grader.py", PACKAGE_DIR / "grading" / "sandbox.py", STAFF_SPHERE]
+    """Files a submission would like to change: the references and the solution. (Whether the
+    grader's own source is writable is asked by the attack itself, which says LEAKED if so:
+    that source may be edited by people while the tests run.)"""
+    paths = [STAFF_SPHERE]
     paths += sorted(OBSERVATIONS.parent.iterdir())
     return {p: p.read_bytes() for p in paths}
 
