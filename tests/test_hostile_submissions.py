@@ -549,3 +549,36 @@ def test_require_sandbox_refuses_to_grade_without_bwrap(tmp_path, monkeypatch):
                          env=dict(os.environ, RTFGU_BWRAP="none", RTFGU_ISOLATION=""))
     assert run.returncode == 2 and "Debian package bubblewrap" in run.stderr, run.stderr
     assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("variant", [0, 1])
+def test_the_child_has_no_capability_to_remount_its_view_writable(bwrap, tmp_path, monkeypatch, variant):
+    # bwrap started by root keeps every capability for the child unless told otherwise; with
+    # CAP_SYS_ADMIN the child could remount a read-only bind read-write and write through it.
+    # Both namespace variants (a user namespace of its own, and none where that is forbidden)
+    # must leave it none.
+    from rtfgu.grading import sandbox
+
+    monkeypatch.setattr(sandbox, "BWRAP_NAMESPACES", sandbox.BWRAP_NAMESPACES[variant:variant + 1])
+    monkeypatch.setattr(sandbox, "_BWRAP_WORKS", {})
+    site = next(p for p in sandbox._site_dirs() if os.path.isdir(p))
+    marker = Path(site) / ("rtfgu-remounted-%d.txt" % os.getpid())
+    attack = """
+        import subprocess
+        caps = [l for l in open("/proc/self/status") if l.startswith("CapEff:")][0].split()[1]
+        for place in (%(site)r, "/usr", "/sandbox/package"):
+            subprocess.run(["mount", "-o", "remount,rw,bind", place], capture_output=True)
+        try:
+            open(%(marker)r, "w").write("written through the sandbox")
+        except OSError:
+            pass
+        if int(caps, 16):
+            raise RuntimeError("LEAKED the child holds capabilities %%s" %% caps)
+        """ % {"site": site, "marker": str(marker)}
+    try:
+        result = _grade_attack(tmp_path, "bwrap", attack, only=ONLY[1:2])
+        assert "LEAKED" not in result.tests[0].output
+        assert not marker.exists()
+    finally:
+        if marker.exists():
+            marker.unlink()

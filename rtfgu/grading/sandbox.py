@@ -147,9 +147,13 @@ def find_bwrap() -> str | None:
 
 
 # bwrap's namespace options: the child is an unprivileged user inside its own user namespace
-# where that is allowed, else keeps the caller's uid in the other namespaces.
-BWRAP_NAMESPACES = (["--unshare-all", "--unshare-user", "--uid", str(BWRAP_ID), "--gid", str(BWRAP_ID)],
-                    ["--unshare-all"])
+# where that is allowed, else keeps the caller's uid in the other namespaces. Every capability
+# is dropped in both: bwrap started by root keeps them for the child otherwise, and with
+# CAP_SYS_ADMIN a child can remount a read-only bind read-write and write through it to the
+# grader's files.
+BWRAP_NAMESPACES = (["--unshare-all", "--unshare-user", "--uid", str(BWRAP_ID), "--gid", str(BWRAP_ID),
+                     "--cap-drop", "ALL"],
+                    ["--unshare-all", "--cap-drop", "ALL"])
 _BWRAP_WORKS = {}
 
 
