@@ -582,3 +582,26 @@ def test_the_child_has_no_capability_to_remount_its_view_writable(bwrap, tmp_pat
     finally:
         if marker.exists():
             marker.unlink()
+
+
+def test_a_test_cannot_start_more_than_a_few_dozen_processes(isolation, tmp_path):
+    # A fork bomb stops at the process limit: the test's processes belong to a sandbox user
+    # outside their namespaces too (under bwrap not root, whom the kernel exempts from it).
+    from rtfgu.grading.sandbox import NPROC, bwrap_as_user
+
+    if isolation == "bwrap" and not bwrap_as_user(find_bwrap()):
+        pytest.skip("bwrap cannot run as an unprivileged user here (not root, or no user namespaces for it)")
+    attack = """
+        import subprocess
+        started = []
+        for _ in range(%d):
+            try:
+                started.append(subprocess.Popen(["sleep", "30"]))
+            except OSError:
+                break
+        raise RuntimeError("started %%d;" %% len(started))
+        """ % (3 * NPROC)
+    result = _grade_attack(tmp_path, isolation, attack, only=ONLY[1:2])
+    message = result.tests[0].output
+    started = int(message.split("started ")[1].split(";")[0])
+    assert 0 < started < NPROC, message

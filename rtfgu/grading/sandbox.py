@@ -176,6 +176,36 @@ def _bwrap_namespaces(bwrap: str):
     return _BWRAP_WORKS[bwrap]
 
 
+_BWRAP_AS_USER = {}
+
+
+def bwrap_as_user(bwrap: str) -> bool:
+    """Whether bwrap is started as the grading process's sandbox user rather than as the
+    grader's own user: where the grader is root, that user can run this bwrap, and it may
+    make a user namespace of its own here. Then the test's processes belong to that user
+    outside their namespaces too: RLIMIT_NPROC bounds them (the kernel exempts root, whom
+    bwrap started by root maps the child to), and what only root may read stays unreadable."""
+    if os.geteuid() != 0 or bwrap is None or _bwrap_namespaces(bwrap) != BWRAP_NAMESPACES[0]:
+        return False
+    if bwrap not in _BWRAP_AS_USER:
+        _BWRAP_AS_USER[bwrap] = False
+        uid = sandbox_uid()
+
+        def drop():
+            os.setgroups([])
+            os.setgid(uid)
+            os.setuid(uid)
+        try:
+            done = subprocess.run([bwrap] + BWRAP_NAMESPACES[0] + ["--die-with-parent", "--new-session",
+                                                                    "--ro-bind", "/", "/", "--proc", "/proc",
+                                                                    "--dev", "/dev", "true"],
+                                  capture_output=True, timeout=20, preexec_fn=drop, cwd="/")
+            _BWRAP_AS_USER[bwrap] = done.returncode == 0
+        except (OSError, subprocess.SubprocessError):
+            pass
+    return _BWRAP_AS_USER[bwrap]
+
+
 def bwrap_works(bwrap: str) -> bool:
     """Whether bwrap can make its namespaces here."""
     return bwrap is not None and _bwrap_namespaces(bwrap) is not None
@@ -229,10 +259,13 @@ def _inside(path, folder) -> bool:
         return False
 
 
-def _bwrap_command(bwrap: str, ws: Workspace, python: str, args: list, memory_mb: int) -> list:
+def _bwrap_command(bwrap: str, ws: Workspace, python: str, args: list, memory_mb: int,
+                   runtime=None) -> list:
     """The read-only view: the system folders, a few /etc and /sys entries, the interpreter's
     installation, its site-packages (with the staff package hidden should it be installed
-    there), the student package and the probes; the only writable folder is a small tmpfs."""
+    there), the student package and the probes; the only writable folder is a small tmpfs.
+    ``runtime``: (site folders, environment) of user_runtime's copy, whose folder is bound
+    in place of the interpreter's installation (bwrap run as the sandbox user)."""
     cmd = [bwrap] + _bwrap_namespaces(bwrap) + ["--die-with-parent", "--new-session", "--clearenv"]
     for path in SYSTEM_DIRS:
         if os.path.islink(path):
@@ -249,7 +282,10 @@ def _bwrap_command(bwrap: str, ws: Workspace, python: str, args: list, memory_mb
     cmd += ["--proc", "/proc", "--dev", "/dev", "--size", str(SHM_BYTES), "--tmpfs", "/dev/shm",
             "--remount-ro", "/dev", "--size", str(SCRATCH_BYTES), "--tmpfs", "/tmp"]
     shown = []
-    for path in [sys.base_prefix, os.path.dirname(os.path.dirname(python))] + _site_dirs():
+    prefixes = [sys.base_prefix, os.path.dirname(os.path.dirname(python))] + _site_dirs()
+    if runtime is not None:
+        prefixes = [os.path.dirname(os.path.dirname(python))] + list(runtime[0])
+    for path in prefixes:
         if os.path.isdir(path) and path not in shown and not any(_inside(path, d) for d in SYSTEM_DIRS):
             shown.append(path)
             cmd += ["--ro-bind", path, path]
@@ -257,7 +293,10 @@ def _bwrap_command(bwrap: str, ws: Workspace, python: str, args: list, memory_mb
         cmd += ["--tmpfs", str(PACKAGE_DIR), "--remount-ro", str(PACKAGE_DIR)]
     cmd += ["--ro-bind", str(ws.package), str(INSIDE / "package"),
             "--ro-bind", str(ws.probes), str(INSIDE / "probes"), "--chdir", "/tmp"]
-    for key, value in _child_env(Path("/tmp"), memory_mb).items():
+    env = _child_env(Path("/tmp"), memory_mb)
+    if runtime is not None:
+        env.update(runtime[1])
+    for key, value in env.items():
         cmd += ["--setenv", key, value]
     return cmd + ["--", python, "-I", "-S", str(INSIDE / "probes" / BOOT)] + args
 
@@ -266,7 +305,7 @@ def _child_env(scratch: Path, memory_mb: int = 0) -> dict:
     return {"PATH": "/usr/bin:/bin", "HOME": str(scratch), "TMPDIR": str(scratch),
             "XDG_CACHE_HOME": str(scratch), "MESA_SHADER_CACHE_DISABLE": "true",
             "LANG": "C.UTF-8", "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1",
-            "NUMBA_NUM_THREADS": "1", "RTFGU_MEMORY_MB": str(memory_mb)}
+            "NUMBA_NUM_THREADS": "1", "LP_NUM_THREADS": "2", "RTFGU_MEMORY_MB": str(memory_mb)}
 
 
 # --- the unprivileged-user fallback -------------------------------------------------------
@@ -469,10 +508,10 @@ def sandbox_uid() -> int:
 
 
 CLONE_NEWNET = 0x40000000
-NPROC = 64                             # processes of the sandbox user at most
+NPROC = 64                             # processes (threads count) of a test at most
 
 
-def _preexec(limits: dict, isolation: str, uid: int = SANDBOX_UID):
+def _preexec(limits: dict, isolation: str, uid=None):
     """Runs between fork and exec (nothing of the student's runs before exec)."""
     def run():
         resource.setrlimit(resource.RLIMIT_FSIZE, (limits["output"], limits["output"]))
@@ -481,11 +520,12 @@ def _preexec(limits: dict, isolation: str, uid: int = SANDBOX_UID):
             resource.setrlimit(resource.RLIMIT_AS, (limits["memory"], limits["memory"]))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
         signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # an oversized write fails with an error instead
-        if isolation == "unprivileged user":
-            try:
-                ctypes.CDLL(None, use_errno=True).unshare(CLONE_NEWNET)
-            except Exception:
-                pass
+        if uid is not None:                            # the sandbox user (bwrap's, or the fallback's)
+            if isolation == "unprivileged user":
+                try:
+                    ctypes.CDLL(None, use_errno=True).unshare(CLONE_NEWNET)
+                except Exception:
+                    pass
             os.setgroups([])
             os.setgid(uid)
             os.setuid(uid)
@@ -524,7 +564,8 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
     scratch = Path(scratch)
     scratch.mkdir(parents=True, exist_ok=True)
     python, sites, extra_env = os.path.realpath(sys.executable), _site_dirs(), {}
-    if isolation == "unprivileged user":
+    as_user = isolation == "unprivileged user" or (isolation == "bwrap" and bwrap_as_user(find_bwrap()))
+    if as_user:
         python, sites, extra_env = user_runtime()
     read_fd, write_fd = os.pipe()
     if isolation == "bwrap":
@@ -533,12 +574,13 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         package, probes = ws.package, ws.probes
     args = [str(package), str(probes), os.pathsep.join(sites), str(write_fd)] + [str(p) for p in probe]
     if isolation == "bwrap":
-        command = _bwrap_command(find_bwrap(), ws, python, args, memory_mb)
+        command = _bwrap_command(find_bwrap(), ws, python, args, memory_mb,
+                                 (sites, extra_env) if as_user else None)
         env = {}
     else:
         command = [python, "-I", "-S", str(probes / BOOT)] + args
         env = dict(_child_env(scratch, memory_mb), **extra_env)
-    uid = sandbox_uid() if isolation == "unprivileged user" else None
+    uid = sandbox_uid() if as_user else None
     if uid is not None:
         os.chown(scratch, uid, uid)
     # The interpreter, numpy and the renderer take about 0.6 GB of address space before the
@@ -595,7 +637,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         except (ProcessLookupError, PermissionError):
             pass
         process.wait()
-        if isolation == "unprivileged user":
+        if uid is not None:
             _kill_user(uid)                          # whatever left the group
     seconds = time.monotonic() - start
     output = _read_output(output_path)
