@@ -605,3 +605,18 @@ def test_a_test_cannot_start_more_than_a_few_dozen_processes(isolation, tmp_path
     message = result.tests[0].output
     started = int(message.split("started ")[1].split(";")[0])
     assert 0 < started < NPROC, message
+
+
+@pytest.mark.parametrize("answer", ['{"cases": [1, 2, 3, 4]}', '{"error": ["not", "text"]}',
+                                    '{"cases": [{"error": {"a": 1}}, {"error": null}, {}, {}]}',
+                                    '{"image": [["x"]]}'])
+def test_a_malformed_answer_written_into_the_pipe_costs_that_test_only(bwrap, tmp_path, answer):
+    # Student code can reach the answer pipe and exit cleanly after writing to it; whatever
+    # it wrote is judged as the test's answer and must not stop the grader.
+    attack = """
+        import os, sys
+        os.write(int(sys.argv[4]), %r.encode())
+        os._exit(0)
+        """ % answer
+    result = _grade_attack(tmp_path, "bwrap", attack)
+    assert _scores(result) == honest_scores("bwrap")

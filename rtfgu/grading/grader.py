@@ -233,10 +233,19 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
         seconds, output = child.seconds, child.output
         if child.status != "ok":
             fraction, lines = 0.0, [_child_failure(child, time_limit, memory_mb)]
-        elif check.kind == "image":
-            fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
         else:
-            fraction, lines = judge_cases(check, child.data, refs[check.slug])
+            # The answer is the child's to write (student code can reach the pipe): one that
+            # does not have the shape the probe gives costs this test only.
+            try:
+                if check.kind == "image":
+                    fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
+                else:
+                    fraction, lines = judge_cases(check, child.data, refs[check.slug])
+                lines = [str(line) for line in lines]
+            except Exception as error:
+                fraction, lines, image_path = 0.0, [
+                    "the test's answer was not in the form the test writes (%s); was something else "
+                    "written to its pipe?" % type(error).__name__], None
     if output.strip() and fraction < 1.0:
         lines.append("What your code printed:\n" + output)
     message = "\n".join(lines) if lines else "all cases right"
