@@ -350,3 +350,31 @@ def test_under_the_user_fallback_a_result_folder_is_closed_to_the_sandbox_users(
         assert done.stdout.strip() == "denied", done.stdout + done.stderr
     finally:
         shutil.rmtree(shared)
+
+
+def test_a_state_file_a_sandbox_user_planted_does_not_choose_the_mode_the_checkout_gets_back(tmp_path, monkeypatch):
+    # The fallback records the staff folder's mode in a file in the temporary folder, which
+    # any user may write to first; a file that is not the grader's own is replaced.
+    import stat
+    import tempfile
+
+    from rtfgu.grading import sandbox
+
+    if os.geteuid() != 0:
+        pytest.skip("the unprivileged-user fallback needs the grader to run as root")
+    private = tmp_path / "tmp"
+    private.mkdir(mode=0o1777)
+    os.chmod(private, 0o1777)
+    monkeypatch.setattr(tempfile, "tempdir", str(private))
+    staff = tmp_path / "staff"
+    staff.mkdir()
+    os.chmod(staff, 0o755)
+    monkeypatch.setattr(sandbox, "staff_folder", lambda: staff)
+    planted = private / ("rtfgu-hidden-%d.json" % os.getuid())
+    planted.write_text(json.dumps({str(staff): {"mode": 0o777, "pids": []}}))
+    os.chown(planted, sandbox.SANDBOX_UID, sandbox.SANDBOX_UID)
+    os.chmod(planted, 0o666)
+    with sandbox.hidden_from_sandbox_user("unprivileged user"):
+        assert stat.S_IMODE(os.stat(staff).st_mode) == 0o700
+    assert stat.S_IMODE(os.stat(staff).st_mode) == 0o755
+    assert planted.stat().st_uid == os.getuid() and not planted.stat().st_mode & 0o077

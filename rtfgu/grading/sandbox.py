@@ -419,6 +419,19 @@ def user_runtime():
     return str(runtime_python), [str(s) for s in runtime_sites], env
 
 
+def _open_own(path: Path) -> int:
+    """``path`` opened for reading and writing, a regular file of the grader's user that no
+    one else can write (made afresh if it is not: a sandbox user may have put a file of its
+    own there first, in a world-writable temporary folder)."""
+    fd = os.open(path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600)
+    st = os.fstat(fd)
+    if st.st_uid == os.geteuid() and stat.S_ISREG(st.st_mode) and st.st_nlink == 1 and not st.st_mode & 0o022:
+        return fd
+    os.close(fd)
+    os.unlink(path)
+    return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW, 0o600)
+
+
 @contextmanager
 def hidden_from_sandbox_user(isolation: str):
     """While grading under ``unprivileged user``, the staff folder is mode 0700 (the sandbox
@@ -431,7 +444,7 @@ def hidden_from_sandbox_user(isolation: str):
     state_path = Path(tempfile.gettempdir()) / ("rtfgu-hidden-%d.json" % os.getuid())
 
     def update(change):
-        fd = os.open(state_path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600)
+        fd = _open_own(state_path)
         with os.fdopen(fd, "r+") as f:
             fcntl.flock(f, fcntl.LOCK_EX)
             try:
