@@ -378,3 +378,18 @@ def test_a_state_file_a_sandbox_user_planted_does_not_choose_the_mode_the_checko
         assert stat.S_IMODE(os.stat(staff).st_mode) == 0o700
     assert stat.S_IMODE(os.stat(staff).st_mode) == 0o755
     assert planted.stat().st_uid == os.getuid() and not planted.stat().st_mode & 0o077
+
+
+def test_bwrap_grades_while_the_fallback_has_the_checkout_closed(tmp_path, monkeypatch):
+    # bwrap started as the sandbox user must not depend on the checkout (where `make venv`
+    # unpacks bwrap), which an unprivileged-user grading beside it closes.
+    from rtfgu.grading import sandbox
+
+    if not sandbox.bwrap_as_user(sandbox.find_bwrap()):
+        pytest.skip("bwrap does not run as a sandbox user here (not root, or no bubblewrap: Debian package bubblewrap)")
+    monkeypatch.setenv("RTFGU_ISOLATION", "bwrap")
+    write_files(solution_files("a04"), tmp_path / "sub")
+    with sandbox.hidden_from_sandbox_user("unprivileged user"):
+        result = grade("a04", tmp_path / "sub", None, time_limit=LIMIT)
+    assert result.isolation == "bwrap"
+    assert result.score == result.max_score, [t.output for t in result.tests if t.score < t.max_score]

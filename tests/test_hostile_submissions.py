@@ -620,3 +620,21 @@ def test_a_malformed_answer_written_into_the_pipe_costs_that_test_only(bwrap, tm
         """ % answer
     result = _grade_attack(tmp_path, "bwrap", attack)
     assert _scores(result) == honest_scores("bwrap")
+
+
+def test_the_notes_about_a_zips_entries_stay_short_whatever_their_number_and_names(tmp_path, monkeypatch, capfd):
+    # Entry names are the student's to choose (up to 64 KB each, control characters too); the
+    # result quotes a few of them, shortened.
+    monkeypatch.setenv("RTFGU_ISOLATION", "rlimits")
+    archive = tmp_path / "sub.zip"
+    with zipfile.ZipFile(archive, "w") as z:
+        for name, text in solution_files("a03").items():
+            z.writestr(name, text)
+        for i in range(400):
+            z.writestr(zipfile.ZipInfo("../" * 10 + "\x1b[2J%d" % i + "x" * 30000), "outside")
+    result = grade("a03", archive, tmp_path / "out", only=ONLY[:1])
+    assert result.score == result.max_score > 0
+    assert len(result.notes) <= 25 and "more notes" in " ".join(result.notes)
+    assert "\x1b" not in " ".join(result.notes)
+    assert (tmp_path / "out" / "results.json").stat().st_size < 20_000
+    assert len(result.summary()) < 20_000

@@ -18,6 +18,15 @@ from pathlib import Path
 ARCHIVE_FILES = 500                    # entries of a submitted archive that are read at most
 ARCHIVE_BYTES = 32 * 1024 * 1024       # decompressed bytes of a submitted archive at most
 FILE_BYTES = 4 * 1024 * 1024           # bytes of one submitted file at most
+NOTES = 20                             # notes about the submission's files in the result at most
+NAME_CHARS = 100                       # characters of a submitted name a note quotes at most
+
+
+def _name(name) -> str:
+    """A submitted file name as a note quotes it: printable, and short (an entry's name is
+    the student's to choose, up to 64 KB in a zip)."""
+    text = "".join(c if c.isprintable() else "?" for c in str(name))
+    return text if len(text) <= NAME_CHARS else text[:NAME_CHARS] + "..."
 
 
 # --- the submission ----------------------------------------------------------------------
@@ -28,14 +37,19 @@ def unpack_submission(submission, tmp: Path, notes: list) -> Path:
     submission = Path(submission)
     out = Path(tmp) / "submission"
     out.mkdir(parents=True, exist_ok=True)
+    found = []
     if submission.is_dir():
-        _copy_folder(submission, out, notes)
+        _copy_folder(submission, out, found)
     elif submission.is_file() and zipfile.is_zipfile(submission):
-        _extract_zip(submission, out, notes)
+        _extract_zip(submission, out, found)
     elif submission.is_file():
         shutil.copyfile(submission, out / submission.name)
     else:
         raise ValueError("submission: %s is neither a folder, a zip file nor a file" % submission)
+    if len(found) > NOTES:  # the first ones, and the last (why reading stopped, if it did)
+        found = found[:NOTES - 1] + ["... and %d more notes like these about the submission's files"
+                                     % (len(found) - NOTES)] + found[-1:]
+    notes.extend(found)
     return out
 
 
@@ -46,13 +60,13 @@ def _copy_folder(folder: Path, out: Path, notes: list) -> None:
         for name in files:
             path = Path(root) / name
             if path.is_symlink() or not path.is_file():
-                notes.append("%s is a link; it was ignored" % path.relative_to(folder))
+                notes.append("%s is a link; it was ignored" % _name(path.relative_to(folder)))
                 continue
             count += 1
             size = path.stat().st_size
             if count > ARCHIVE_FILES or total + size > ARCHIVE_BYTES or size > FILE_BYTES:
                 notes.append("the submission has more files or bytes than the grader reads; %s and "
-                             "later files were ignored" % path.relative_to(folder))
+                             "later files were ignored" % _name(path.relative_to(folder)))
                 return
             total += size
             target = out / path.relative_to(folder)
@@ -60,7 +74,8 @@ def _copy_folder(folder: Path, out: Path, notes: list) -> None:
                 target.parent.mkdir(parents=True, exist_ok=True)
                 shutil.copyfile(path, target, follow_symlinks=False)
             except OSError as error:
-                notes.append("%s could not be read (%s); it was ignored" % (path.relative_to(folder), error))
+                notes.append("%s could not be read (%s); it was ignored" % (_name(path.relative_to(folder)),
+                                                                          _name(error)))
 
 
 def _extract_zip(archive: Path, out: Path, notes: list) -> None:
@@ -78,13 +93,13 @@ def _extract_zip(archive: Path, out: Path, notes: list) -> None:
             if info.is_dir():
                 continue
             if stat.S_ISLNK(mode):
-                notes.append("%s is a link; it was ignored" % info.filename)
+                notes.append("%s is a link; it was ignored" % _name(info.filename))
                 continue
             target = (root / info.filename).resolve()
             try:
                 target.relative_to(root)
             except ValueError:
-                notes.append("%s points outside the submission folder; it was ignored" % info.filename)
+                notes.append("%s points outside the submission folder; it was ignored" % _name(info.filename))
                 continue
             written = 0
             try:
@@ -100,12 +115,12 @@ def _extract_zip(archive: Path, out: Path, notes: list) -> None:
                             break
                         sink.write(chunk)
             except (OSError, zipfile.BadZipFile, NotImplementedError, RuntimeError) as error:
-                notes.append("%s could not be unpacked (%s); it was ignored" % (info.filename, error))
+                notes.append("%s could not be unpacked (%s); it was ignored" % (_name(info.filename), _name(error)))
                 continue
             if written > FILE_BYTES or total > ARCHIVE_BYTES:
                 target.unlink()
                 notes.append("the archive unpacks to more than %d MB (at %s); the rest was ignored"
-                             % (ARCHIVE_BYTES // (1024 * 1024), info.filename))
+                             % (ARCHIVE_BYTES // (1024 * 1024), _name(info.filename)))
                 return
 
 

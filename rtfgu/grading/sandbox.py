@@ -179,6 +179,30 @@ def _bwrap_namespaces(bwrap: str):
 _BWRAP_AS_USER = {}
 
 
+def _bwrap_for_user(bwrap: str) -> str:
+    """A bwrap binary the sandbox user can start: ``bwrap`` itself where any user can reach it
+    outside the staff folder (which the fallback closes while it grades, and which holds
+    .venv/sandbox), else a copy in the temporary folder owned by the grader's user."""
+    if (_reachable_by_others(bwrap) and os.stat(bwrap).st_mode & stat.S_IXOTH
+            and not _inside(bwrap, staff_folder())):
+        return bwrap
+    st = os.stat(bwrap)
+    folder = Path(tempfile.gettempdir()) / ("rtfgu-bwrap-%d-%d-%d" % (os.getuid(), st.st_size, st.st_mtime_ns))
+    if _owned_and_closed(folder) and (folder / "bwrap").is_file():
+        return str(folder / "bwrap")
+    build = Path(tempfile.mkdtemp(prefix=folder.name + "-build-"))
+    os.chmod(build, 0o755)
+    shutil.copyfile(bwrap, build / "bwrap")
+    os.chmod(build / "bwrap", 0o755)
+    try:
+        os.rename(build, folder)
+    except OSError:  # another grader made it first, or something else is in the way
+        if not (_owned_and_closed(folder) and (folder / "bwrap").is_file()):
+            return str(build / "bwrap")
+        shutil.rmtree(build, ignore_errors=True)
+    return str(folder / "bwrap")
+
+
 def bwrap_as_user(bwrap: str) -> bool:
     """Whether bwrap is started as the grading process's sandbox user rather than as the
     grader's own user: where the grader is root, that user can run this bwrap, and it may
@@ -196,7 +220,7 @@ def bwrap_as_user(bwrap: str) -> bool:
             os.setgid(uid)
             os.setuid(uid)
         try:
-            done = subprocess.run([bwrap] + BWRAP_NAMESPACES[0] + ["--die-with-parent", "--new-session",
+            done = subprocess.run([_bwrap_for_user(bwrap)] + BWRAP_NAMESPACES[0] + ["--die-with-parent", "--new-session",
                                                                     "--ro-bind", "/", "/", "--proc", "/proc",
                                                                     "--dev", "/dev", "true"],
                                   capture_output=True, timeout=20, preexec_fn=drop, cwd="/")
@@ -587,7 +611,8 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         package, probes = ws.package, ws.probes
     args = [str(package), str(probes), os.pathsep.join(sites), str(write_fd)] + [str(p) for p in probe]
     if isolation == "bwrap":
-        command = _bwrap_command(find_bwrap(), ws, python, args, memory_mb,
+        bwrap = find_bwrap()
+        command = _bwrap_command(_bwrap_for_user(bwrap) if as_user else bwrap, ws, python, args, memory_mb,
                                  (sites, extra_env) if as_user else None)
         env = {}
     else:
