@@ -81,7 +81,7 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
     if diff_path is not None:
         write_diff_image(mine, reference, difference, bad, diff_path)
     n_bad = int(bad.sum())
-    where = "; the diff image is %s (yours | reference | differences in red)" % diff_path if diff_path else ""
+    where = "; the diff image is %s (yours | reference | differences in red)" % diff_path.name if diff_path else ""
     if n_bad <= allowed:
         return 1.0, ["%dx%d image matches the reference (%d pixels beyond the tolerance, %d allowed)%s"
                      % (w, h, n_bad, allowed, where)], diff_path
