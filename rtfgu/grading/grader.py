@@ -59,7 +59,7 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
                 written.append(path)
             else:
                 observations[check.slug] = child.data
-    obs_path.write_text(json.dumps(observations, indent=1, sort_keys=True) + "\n")
+    _replace(obs_path, (json.dumps(observations, indent=1, sort_keys=True) + "\n").encode())
     written.append(obs_path)
     return written
 
@@ -87,6 +87,14 @@ def load_references(assignment) -> dict:
                                  % (check.name, assignment.short))
             refs[check.slug] = observations[check.slug]
     return refs, files
+
+
+def _replace(path: Path, data: bytes) -> None:
+    """Write ``path`` whole or not at all (a grader reading it at the same time sees the old
+    or the new file, never a half-written one)."""
+    tmp = path.with_name(".%s.%d.tmp" % (path.name, os.getpid()))
+    tmp.write_bytes(data)
+    os.replace(tmp, path)
 
 
 def _digest(files: dict) -> dict:
@@ -142,7 +150,7 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
     if now != digest:
         for path, data in ref_files.items():
-            path.write_bytes(data)
+            _replace(path, data)
         for test in result.tests:
             test.score = 0.0
             test.output = "the submission wrote to the grader's reference files; they were restored\n" + test.output
