@@ -625,3 +625,45 @@ def test_the_notes_about_a_zips_entries_stay_short_whatever_their_number_and_nam
     assert "\x1b" not in " ".join(result.notes)
     assert (tmp_path / "out" / "results.json").stat().st_size < 20_000
     assert len(result.summary()) < 20_000
+
+
+@pytest.mark.parametrize("answer", ['{"cases": [1, 2, 3, 4]}', '{"error": ["not", "text"]}',
+                                    '{"cases": [{"error": {"a": 1}}, {"error": null}, {}, {}]}',
+                                    '{"image": [["x"]]}'])
+def test_a_malformed_answer_written_into_the_pipe_costs_that_test_only(bwrap, tmp_path, answer):
+    # Student code can reach the answer pipe and exit cleanly after writing to it; whatever
+    # it wrote is judged as the test's answer and must not stop the grader.
+    attack = """
+        import os, sys
+        os.write(int(sys.argv[4]), %r.encode())
+        os._exit(0)
+        """ % answer
+    result = _grade_attack(tmp_path, "bwrap", attack)
+    assert _scores(result) == honest_scores("bwrap")
+
+
+def test_no_process_of_the_sandbox_user_is_left_after_its_tests_not_even_a_zombie(bwrap, tmp_path):
+    # Killing a test's namespace leaves processes without a parent; in a container PID 1 may
+    # never reap them, and as zombies of the sandbox user they would count towards its
+    # process limit until forking fails in later tests. The grader reaps them itself.
+    from rtfgu.grading import sandbox
+
+    if not sandbox.bwrap_as_user(find_bwrap()):
+        pytest.skip("bwrap runs as root here, not as a sandbox user")
+    with sandbox.work_folder() as tmp:
+        ws = prepare(get_assignment("a03"), _submission(tmp_path / "sub"), tmp / "work")
+        for i in range(20):
+            assert sandbox.run_child(ws, tmp / "scratch" / str(i), ["check", "a03", ONLY[1]],
+                                     isolation="bwrap").status == "ok"
+    uid = sandbox.sandbox_uid()
+    time.sleep(0.5)
+    sandbox._reap_orphans(uid)
+    left = [p for p in os.listdir("/proc") if p.isdigit() and _uid_of(p) == uid]
+    assert left == [], "processes of the sandbox user %d are left: %s" % (uid, left)
+
+
+def _uid_of(pid: str):
+    try:
+        return os.stat("/proc/" + pid).st_uid
+    except OSError:
+        return None

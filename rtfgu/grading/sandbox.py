@@ -584,6 +584,45 @@ def _kill_user(uid: int) -> None:
     os.waitpid(pid, 0)
 
 
+PR_SET_CHILD_SUBREAPER = 36
+_SUBREAPERS = set()                    # pids of the grading processes that are subreapers
+
+
+def _become_subreaper() -> None:
+    """Make this grading process the reaper of what its tests leave behind: a test's processes
+    that outlive their parent (bwrap's init once the outer bwrap has gone, a daemon killed
+    after the test) are re-parented here instead of to PID 1, which in a container may never
+    reap them. Unreaped, they stay zombies of the sandbox user and count towards its
+    RLIMIT_NPROC, until forking fails in later tests."""
+    if os.getpid() not in _SUBREAPERS:
+        try:
+            ctypes.CDLL(None, use_errno=True).prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
+        except Exception:
+            pass
+        _SUBREAPERS.add(os.getpid())
+
+
+def _reap_orphans(uid) -> None:
+    """Reap the zombie children of this process that a test left: those of the sandbox user
+    ``uid`` and bwrap processes. Other children are left to whoever waits for them."""
+    me = str(os.getpid())
+    try:
+        entries = [e for e in os.listdir("/proc") if e.isdigit()]
+    except OSError:
+        return
+    for entry in entries:
+        try:
+            with open("/proc/%s/stat" % entry) as f:
+                text = f.read()
+            comm = text[text.index("(") + 1:text.rindex(")")]
+            state, ppid = text[text.rindex(")") + 2:].split()[:2]
+            if ppid != me or state != "Z" or not (comm == "bwrap" or os.stat("/proc/" + entry).st_uid == uid):
+                continue
+            os.waitpid(int(entry), os.WNOHANG)
+        except (OSError, ValueError, ChildProcessError):
+            continue
+
+
 @dataclass
 class ChildResult:
     status: str          # "ok", "timeout", "crashed", "too much output", "bad answer"
@@ -600,6 +639,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
     ``scratch``/output.txt (at most ``output_limit`` bytes)."""
     scratch = Path(scratch)
     scratch.mkdir(parents=True, exist_ok=True)
+    _become_subreaper()
     python, sites, extra_env = os.path.realpath(sys.executable), _site_dirs(), {}
     as_user = isolation == "unprivileged user" or (isolation == "bwrap" and bwrap_as_user(find_bwrap()))
     if as_user:
@@ -677,6 +717,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         process.wait()
         if uid is not None:
             _kill_user(uid)                          # whatever left the group
+        _reap_orphans(uid)
     seconds = time.monotonic() - start
     output = _read_output(output_path)
     if status is None:
