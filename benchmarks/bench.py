@@ -528,7 +528,7 @@ def main(argv=None):
         *lines,
         "",
         *robust_cost_markdown(all_rows),
-        "Targets (issue 3):",
+        "Targets of the numba path (rays/s it must reach on these scenes):",
         "",
         *(checks or ["- not measured at these sizes (--quick)"]),
         "",
