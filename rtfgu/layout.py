@@ -12,6 +12,7 @@ it, or the next free column. For example
 
     camera      (4, 4)   ORTHOGRAPHIC: [left, right, bottom, top], [hither, yon, tmin, 0], 0, 0
                          PINHOLE:      [eye, d], [b1, aspect], [b2, 0], [v, 0]
+                         THIN_LENS:    [eye, d], [b1, aspect], [b2, lens_radius], [v, focal_distance]
     Plane       (P, 8)   [point, 0], [normal, 0]             (the normal as given, not normalised)
     Triangle    (T, 16)  [v0, 0], [e0, 0], [e1, 0], [n, 0]   (e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1)
     Sphere      (S, 4)   [center, radius]
@@ -30,7 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .cameras import OrthographicCamera, PinholeCamera
+from .cameras import OrthographicCamera, PinholeCamera, ThinLens
 from .ray import RAY_EPSILON
 from .registry import LIGHTS, SHADER_BY_ID, SHAPE_IDS, SHAPES, light_kind_of, shape_kind_of
 
@@ -63,6 +64,8 @@ CAMERA_FIELDS = {
     "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
                            ("yon", 1), ("tmin", 1)),
     "PinholeCamera": (("eye", 3), ("d", 1), ("b1", 3), ("aspect", 1), ("b2", 3), ("v", 3)),
+    "ThinLens": (("eye", 3), ("d", 1), ("b1", 3), ("aspect", 1), ("b2", 3), ("lens_radius", 1),
+                 ("v", 3), ("focal_distance", 1)),
 }
 CAMERA_ROWS = 4
 CAMERA_WIDTH = CAMERA_ROWS * 4
@@ -97,7 +100,10 @@ DISK = SHAPE_IDS["disk"]
 
 ORTHOGRAPHIC = 0
 PINHOLE = 1
-CAMERA_KINDS = {ORTHOGRAPHIC: "orthographic", PINHOLE: "pinhole"}
+THIN_LENS = 2
+CAMERA_KINDS = {ORTHOGRAPHIC: "orthographic", PINHOLE: "pinhole", THIN_LENS: "thin_lens"}
+CAMERA_RECORDS = {ORTHOGRAPHIC: "OrthographicCamera", PINHOLE: "PinholeCamera",
+                  THIN_LENS: "ThinLens"}
 
 # Columns the hand-written kernels read (the generated ones read RECORDS).
 MAT_COLOR = offset("Material", "color")
@@ -123,6 +129,10 @@ PINHOLE_B1 = offset("PinholeCamera", "b1")
 PINHOLE_ASPECT = offset("PinholeCamera", "aspect")
 PINHOLE_B2 = offset("PinholeCamera", "b2")
 PINHOLE_V = offset("PinholeCamera", "v")
+LENS_RADIUS = offset("ThinLens", "lens_radius")
+FOCAL_DISTANCE = offset("ThinLens", "focal_distance")
+assert all(offset("ThinLens", f) == offset("PinholeCamera", f) for f in ("eye", "d", "b1", "aspect",
+                                                                       "b2", "v"))
 
 # A far-away tmax for APIs that cannot hold infinity (WGSL has no inf literal).
 FAR = 1.0e30
@@ -146,6 +156,9 @@ class FlatScene:
     shadows: bool
     show_ray_direction: bool
     features: frozenset = field(default_factory=frozenset)
+    # The render's FlatSampler (compile_sampler), set by the path that renders; None: one
+    # sample through each pixel's centre.
+    sampler: object = None
 
     def table(self, kind: str) -> np.ndarray:
         return self.shapes[kind][0]
@@ -181,10 +194,12 @@ def compile_camera(camera) -> tuple[int, np.ndarray]:
                                  top=camera.top, hither=camera.hither, tmin=RAY_EPSILON,
                                  yon=camera.yon if math.isfinite(camera.yon) else FAR)
         kind, record = ORTHOGRAPHIC, "OrthographicCamera"
+    elif isinstance(camera, ThinLens):
+        kind, record, source = THIN_LENS, "ThinLens", camera
     elif isinstance(camera, PinholeCamera):
         kind, record, source = PINHOLE, "PinholeCamera", camera
     else:
-        raise ValueError("Scene.camera: the flat layout knows OrthographicCamera and PinholeCamera, "
+        raise ValueError("Scene.camera: the flat layout knows OrthographicCamera, PinholeCamera and ThinLens, "
                          "got %s" % type(camera).__name__)
     return kind, np.array(pack_row(record, source), dtype=np.float64).reshape(CAMERA_ROWS, 4)
 
@@ -254,3 +269,23 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             raise ValueError("Scene: %s is not finite in %s (a value overflows the precision)"
                              % (name, precision))
     return flat
+
+
+@dataclass
+class FlatSampler:
+    """A sampler's sets as arrays: ``samples`` (num_sets * n, 2) in the render's float type,
+    ``shuffled`` int32 (num_sets * n), each set's order (rtfgu.sampling.sampler)."""
+
+    samples: np.ndarray
+    shuffled: np.ndarray
+    num_samples: int
+    num_sets: int
+
+
+def compile_sampler(sampler, precision: str = "float64"):
+    """The FlatSampler of ``sampler``, or None for none (one sample at each pixel's centre)."""
+    if sampler is None:
+        return None
+    return FlatSampler(np.array(sampler.samples, dtype=DTYPES[precision]).reshape(-1, 2),
+                       np.array(sampler.shuffled_indices, dtype=np.int32),
+                       sampler.num_samples, sampler.num_sets)

@@ -8,11 +8,14 @@ the top (+y), before gamma. The slide's loop counts iy from the bottom (sy = -1)
 from __future__ import annotations
 
 import importlib.util
+import math
 
 import numpy as np
 
 from .float3 import Float3
 from .ray import Ray
+from .sampling import Jittered, NRooks, concentric_map
+from .sampling.random import LENS_SET, check_seed
 from .shading import MAX_DEPTH, HitInfo, shade
 
 BACKENDS = ("reference", "numba", "wgpu")
@@ -45,23 +48,74 @@ def trace(scene, r: Ray) -> Float3:
     return result
 
 
-def render_reference(scene, width: int, height: int, progress=None) -> np.ndarray:
-    """The lecture layer's renderer, pure Python. ``progress(rows_done, height)`` is called
-    after each row if given."""
-    image = np.zeros((height, width, 3), dtype=np.float64)
+def render_reference(scene, width: int, height: int, progress=None, sampler=None, seed: int = 0,
+                     samples=(0, 1), sums=None) -> np.ndarray:
+    """The lecture layer's renderer, pure Python: adds samples ``samples[0]`` up to
+    ``samples[1]`` of every pixel to ``sums`` (height, width, 3), a new array of zeros if
+    None, and returns it; the image is the sums divided by the number of samples.
+    ``progress(rows_done, height)`` is called after each row if given.
+
+    Sample s of a pixel is the point ``sampler.sample_unit_square(pixel, s, seed)`` of the
+    pixel's square (Suffern's "pp.x = vp.s * (c - 0.5 * vp.hres + sp.x)"), or its centre
+    without a sampler; a ThinLens camera also gets a point of the lens for it."""
+    if sums is None:
+        sums = np.zeros((height, width, 3), dtype=np.float64)
+    camera = scene.camera
     for iy in range(height):
         for ix in range(width):
-            sx = 2 * (ix + 0.5) / width - 1
-            sy = 2 * (iy + 0.5) / height - 1
+            pixel = (height - 1 - iy) * width + ix      # the pixel's place, row 0 at the top
+            total = sums[height - 1 - iy, ix]
+            for s in range(samples[0], samples[1]):
+                if sampler is None:
+                    sp = (0.5, 0.5)
+                else:
+                    sp = sampler.sample_unit_square(pixel, s, seed)
+                sx = 2 * (ix + sp[0]) / width - 1
+                sy = 2 * (iy + sp[1]) / height - 1
 
-            ray = scene.camera.gen_ray(sx, sy)
+                if camera.uses_lens:
+                    lens = concentric_map(*lens_sample(sampler, pixel, s, seed))
+                    ray = camera.gen_ray(sx, sy, lens)
+                else:
+                    ray = camera.gen_ray(sx, sy)
 
-            color = trace(scene, ray)
+                color = trace(scene, ray)
 
-            image[height - 1 - iy, ix] = (color.x, color.y, color.z)
+                total[0] += color.x
+                total[1] += color.y
+                total[2] += color.z
         if progress is not None:
             progress(iy + 1, height)
-    return image
+    return sums
+
+
+def lens_sample(sampler, pixel: int, s: int, seed: int) -> tuple:
+    """The square sample a ThinLens maps to its lens: the sampler's, from a set of its own
+    (the stream's LENS_SET dimension); the centre without a sampler."""
+    if sampler is None:
+        return (0.5, 0.5)
+    return sampler.sample_unit_square(pixel, s, seed, LENS_SET)
+
+
+def pixel_sampler(scene, spp):
+    """The sampler of a render: the scene's (Suffern's view-plane sampler), with ``spp``
+    samples if given; without one in the scene, Jittered(spp) for a square spp and
+    NRooks(spp) otherwise. None for one sample through each pixel's centre."""
+    if spp is None:
+        return scene.sampler
+    if isinstance(spp, bool) or not isinstance(spp, (int, np.integer)) or spp < 1:
+        raise ValueError("spp (samples per pixel) must be an integer >= 1, got %r" % (spp,))
+    spp = int(spp)
+    if scene.sampler is not None:
+        if scene.sampler.num_samples == spp:
+            return scene.sampler
+        try:
+            return scene.sampler.with_num_samples(spp)
+        except ValueError as error:
+            raise ValueError("spp: %s" % error) from None
+    if spp == 1:
+        return None
+    return Jittered(spp) if math.isqrt(spp) ** 2 == spp else NRooks(spp)
 
 
 def check_size(width, height) -> None:
@@ -70,16 +124,8 @@ def check_size(width, height) -> None:
             raise ValueError("%s must be an integer >= 1, got %r" % (name, value))
 
 
-def render(scene, width: int, height: int, backend: str = "reference",
-           precision: str | None = None, progress=None, formula: str | None = None) -> np.ndarray:
-    """Render ``scene`` to a (height, width, 3) float64 array, row 0 at the top, before gamma.
-
-    backend: "reference" (the lecture layer, pure Python) or "numba" (rtfgu.kernels, all cores).
-    precision: "float64" (the reference computes in Python floats) or "float32" (numba only).
-    formula: the sphere test, "slide" or "robust" (numba and wgpu); None is each backend's
-    default (the reference's is "slide", its only one).
-    """
-    check_size(width, height)
+def check_options(backend, precision, formula):
+    """The backend, and its precision (each backend's own if None), checked."""
     if backend not in BACKENDS:
         raise ValueError("backend must be one of %s, got %r" % (", ".join(BACKENDS), backend))
     if precision is None:  # each backend's own: WGSL computes in float32
@@ -88,25 +134,80 @@ def render(scene, width: int, height: int, backend: str = "reference",
         raise ValueError("precision must be one of %s, got %r" % (", ".join(PRECISIONS), precision))
     if formula is not None and formula not in FORMULAS:
         raise ValueError("formula must be one of %s, got %r" % (", ".join(FORMULAS), formula))
-    scene.validate()
     if backend == "reference":
         if precision != "float64":
             raise ValueError("precision: the reference backend computes in float64 only")
         if formula not in (None, "slide"):
             raise ValueError("formula: the reference backend computes the slide formulas only, got %r"
                              % formula)
-        image = render_reference(scene, width, height, progress)
     elif backend == "numba":
         if importlib.util.find_spec(__package__ + ".kernels") is None:
             raise ValueError("backend: the numba path is not part of this release of rtfgu (it computes "
                              "the assignments' functions again); render with backend='reference'")
-        from .kernels import render_numba  # numba is imported only when asked for
-        image = render_numba(scene, width, height, precision, formula=formula)
-    elif backend == "wgpu":
-        if precision != "float32":
-            raise ValueError("precision: the wgpu backend computes in float32 only, got %r" % precision)
-        from .wgsl import render_wgpu  # wgpu is imported only when asked for
-        image = render_wgpu(scene, width, height, progress, formula=formula)
-    if not np.all(np.isfinite(image)):
-        raise ValueError("the %s backend produced non-finite pixels" % backend)
+    elif precision != "float32":
+        raise ValueError("precision: the wgpu backend computes in float32 only, got %r" % precision)
+    return precision
+
+
+def render_passes(scene, width: int, height: int, backend: str = "reference",
+                  precision: str | None = None, formula: str | None = None, spp: int | None = None,
+                  seed: int = 0, passes: int = 1, progress=None):
+    """Progressive rendering: yields (samples done, image) after each of ``passes`` passes,
+    each adding its share of the ``spp`` samples to every pixel. Every pixel adds its
+    samples in the same order whatever the passes, so the last image is the same, bit for
+    bit, as one render with all the samples. ``progress(done, total)`` as in ``render``,
+    counting rows of every pass (the reference and wgpu) or passes (numba)."""
+    check_size(width, height)
+    precision = check_options(backend, precision, formula)
+    seed = check_seed(seed)
+    scene.validate()
+    sampler = pixel_sampler(scene, spp)
+    total = 1 if sampler is None else sampler.num_samples
+    if isinstance(passes, bool) or not isinstance(passes, (int, np.integer)) or not 1 <= passes:
+        raise ValueError("passes must be an integer >= 1, got %r" % (passes,))
+    passes = min(int(passes), total)
+    bounds = [total * k // passes for k in range(passes + 1)]
+    if backend == "reference":
+        accumulate = None
+    elif backend == "numba":
+        from .kernels import NumbaAccumulator  # numba is imported only when asked for
+        accumulate = NumbaAccumulator(scene, width, height, precision, formula, sampler, seed)
+    else:
+        from .wgsl import WGPUAccumulator  # wgpu is imported only when asked for
+        accumulate = WGPUAccumulator(scene, width, height, formula, sampler, seed)
+    sums = None
+    for k in range(passes):
+        samples = (bounds[k], bounds[k + 1])
+        rows = None if progress is None else (lambda done, n, k=k: progress(k * n + done, passes * n))
+        if accumulate is None:
+            sums = render_reference(scene, width, height, rows, sampler, seed, samples, sums)
+            image = sums / samples[1]
+        else:
+            image = accumulate(samples, rows)
+        if not np.all(np.isfinite(image)):
+            raise ValueError("the %s backend produced non-finite pixels" % backend)
+        yield samples[1], image.astype(np.float64, copy=False)
+
+
+def render(scene, width: int, height: int, backend: str = "reference",
+           precision: str | None = None, progress=None, formula: str | None = None,
+           spp: int | None = None, seed: int = 0, passes: int = 1) -> np.ndarray:
+    """Render ``scene`` to a (height, width, 3) float64 array, row 0 at the top, before gamma.
+
+    backend: "reference" (the lecture layer, pure Python), "numba" (rtfgu.kernels, all
+    cores) or "wgpu" (rtfgu.wgsl, WGSL through wgpu).
+    precision: "float64" (the reference computes in Python floats) or "float32" (numba;
+    wgpu's only one).
+    formula: the sphere test, "slide" or "robust" (numba and wgpu); None is each backend's
+    default (the reference's is "slide", its only one).
+    spp: samples per pixel; None takes the scene's sampler (Scene.sampler), one sample
+    through each pixel's centre without one. seed: the random stream's seed
+    (rtfgu.sampling.random); the same seed gives the same image on every run and path.
+    passes: render progressively in this many passes (render_passes); the image is the same.
+    progress(done, total): called as rows (or passes) finish.
+    """
+    image = None
+    for _, image in render_passes(scene, width, height, backend, precision, formula, spp, seed,
+                                  passes, progress):
+        pass
     return image

@@ -18,6 +18,9 @@ class Scene:
         self.shadows = True
         # 02562 week 1's first image: every pixel shows its eye ray's direction, d * 0.5 + 0.5.
         self.show_ray_direction = False
+        # Suffern's view-plane sampler (ch. 5): the points of each pixel that rays go through.
+        # None: one ray through each pixel's centre. render(..., spp=N) overrides its count.
+        self.sampler = None
 
     def intersect(self, ray: Ray, hit: HitInfo) -> bool:
         """``intersect_scene``: the slide's inner loop over the shapes; each hit shrinks
@@ -38,6 +41,7 @@ class Scene:
         """Raise a ValueError naming the field if this scene cannot be rendered."""
         from .cameras.camera import Camera as _Camera
         from .registry import LIGHTS
+        from .sampling.sampler import Sampler
         from .shapes.shape import Shape
 
         if not isinstance(self.camera, _Camera):
@@ -49,4 +53,6 @@ class Scene:
             if not isinstance(light, tuple(kind.cls for kind in LIGHTS)):
                 raise ValueError("Scene.lights[%d] must be one of %s, got %r"
                                  % (i, ", ".join(kind.record for kind in LIGHTS), light))
+        if self.sampler is not None and not isinstance(self.sampler, Sampler):
+            raise ValueError("Scene.sampler must be a Sampler or None, got %r" % (self.sampler,))
         self.background = as_float3(self.background, "Scene.background")

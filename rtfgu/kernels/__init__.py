@@ -16,16 +16,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import dispatch  # noqa: F401  (first: it points numba's cache at this kernel version)
-from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_scene
+from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_sampler, compile_scene
 from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
-from ..renderer import DEFAULT_FORMULAS
+from ..renderer import DEFAULT_FORMULAS, pixel_sampler
 from ..shading import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
 from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
 
-__all__ = ["render_numba", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
+__all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
 # The formula of a numba render unless one is asked for (decided in rtfgu.renderer).
 DEFAULT_SPHERE_FORMULA = DEFAULT_FORMULAS["numba"]
@@ -61,9 +61,12 @@ def _coprime_stride(n: int) -> int:
     return stride
 
 
-def kernel_arguments(flat, width: int, height: int, formula=None):
+def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, seed: int = 0,
+                     samples=(0, 1)):
     """The render_kernel arguments for a FlatScene (rtfgu.kernels.render says how they are
-    grouped), with None for every kind the scene lacks, and the number of tiles."""
+    grouped), with None for every kind the scene lacks, and the number of tiles.
+    ``sampler``: a FlatSampler (rtfgu.layout.compile_sampler) or None; ``samples``: the
+    range of sample indices to add."""
     formula_id = sphere_formula_id(formula)
     shapes = ()
     for kind in SHAPES:
@@ -85,25 +88,56 @@ def kernel_arguments(flat, width: int, height: int, formula=None):
     bounces = MAX_DEPTH if continues else None
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     scene = (flat.materials, flat.shaders, flat.background)
-    settings = (flat.shadows, flat.show_ray_direction, formula_id)
+    settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
+                int(samples[1]))
+    if sampler is not None:
+        sampler = (sampler.samples, sampler.shuffled, sampler.num_samples, sampler.num_sets)
     return ((width, height), (flat.camera_kind, camera, camera64), shapes, lights, scene, eye,
-            settings, bounces, _coprime_stride(tiles)), tiles
+            settings, bounces, sampler, _coprime_stride(tiles)), tiles
+
+
+class NumbaAccumulator:
+    """A numba render in passes: each call adds a range of samples to every pixel's sum
+    and returns the mean image so far (rtfgu.renderer.render_passes)."""
+
+    def __init__(self, scene, width: int, height: int, precision: str = "float64",
+                 formula: str | None = None, sampler=None, seed: int = 0):
+        sphere_formula_id(formula)  # a bad formula is refused before the scene is compiled
+        self.flat = compile_scene(scene, precision)
+        self.sampler = compile_sampler(sampler, precision)
+        self.size = (width, height)
+        self.formula = formula
+        self.seed = seed
+        self.sums = np.zeros((height, width, 3), dtype=self.flat.dtype)
+        self.counts = np.zeros(3, dtype=np.int64)
+
+    def __call__(self, samples, progress=None) -> np.ndarray:
+        width, height = self.size
+        args, tiles = kernel_arguments(self.flat, width, height, self.formula, self.sampler,
+                                       self.seed, samples)
+        counts = np.zeros((tiles, 3), dtype=np.int64)
+        render_kernel(*args, self.sums, counts)
+        self.counts += counts.sum(axis=0)
+        if progress is not None:
+            progress(height, height)
+        return self.sums / self.flat.dtype(samples[1])
+
+    @property
+    def ray_counts(self) -> RayCounts:
+        return RayCounts(int(self.counts[PRIMARY]), int(self.counts[SHADOW]), int(self.counts[SECONDARY]))
 
 
 def render_numba(scene, width: int, height: int, precision: str = "float64",
-                 with_counts: bool = False, formula: str | None = None):
-    """Render on the numba path; a (height, width, 3) float64 array, row 0 at the top.
-    With ``with_counts`` also the RayCounts of the render. ``formula``: the sphere test,
-    "slide" (lecture 01) or "robust" (Ray Tracing Gems ch. 7); None is
-    DEFAULT_SPHERE_FORMULA."""
-    sphere_formula_id(formula)  # a bad formula is refused before the scene is compiled
-    flat = compile_scene(scene, precision)
-    args, tiles = kernel_arguments(flat, width, height, formula)
-    image = np.empty((height, width, 3), dtype=flat.dtype)
-    counts = np.zeros((tiles, 3), dtype=np.int64)
-    render_kernel(*args, image, counts)
+                 with_counts: bool = False, formula: str | None = None, spp: int | None = None,
+                 seed: int = 0):
+    """Render on the numba path in one pass; a (height, width, 3) float64 array, row 0 at
+    the top. With ``with_counts`` also the RayCounts of the render. ``formula``: the sphere
+    test, "slide" (lecture 01) or "robust" (Ray Tracing Gems ch. 7); None is
+    DEFAULT_SPHERE_FORMULA. ``spp``, ``seed``: as rtfgu.render."""
+    sampler = pixel_sampler(scene, spp)
+    accumulate = NumbaAccumulator(scene, width, height, precision, formula, sampler, seed)
+    image = accumulate((0, 1 if sampler is None else sampler.num_samples))
     image = image.astype(np.float64, copy=False)  # float64 already: no second 1.5 MB pass
     if with_counts:
-        total = counts.sum(axis=0)
-        return image, RayCounts(int(total[PRIMARY]), int(total[SHADOW]), int(total[SECONDARY]))
+        return image, accumulate.ray_counts
     return image

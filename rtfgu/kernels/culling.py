@@ -2,8 +2,9 @@
 """Per-tile sphere culling for a pinhole camera's primary rays.
 
 All primary rays of a tile leave the eye inside one circular cone: around the mean of the
-directions through the tile's corner pixels, as wide as the widest of them (q is affine in
-(sx, sy), so every ray of the tile lies in the cone of its corners). A sphere seen from the
+directions through the tile's corners, as wide as the widest of them (q is affine in
+(sx, sy), so every ray of the tile lies in the cone of its corners). The corners are the
+pixels' outer edges, so rays through any sample point of a pixel are inside. A sphere seen from the
 eye under the angular radius asin(r / D) can only be hit by a ray of the tile if its centre
 direction is within the cone's half angle plus that radius. Spheres outside are left out of
 the tile's candidate list; the test is conservative by a margin far above the rounding of
@@ -67,10 +68,10 @@ def tile_candidates(camera, cones, x0, x1, y0, y1, width, height, out):
     """Write the rows of the spheres that a primary ray of pixels [x0, x1) x [y0, y1) can
     hit into ``out`` (in increasing order) and return how many there are. ``camera`` is
     the pinhole camera block in float64."""
-    sx0 = 2.0 * (x0 + 0.5) / width - 1.0
-    sx1 = 2.0 * (x1 - 1 + 0.5) / width - 1.0
-    sy0 = 2.0 * (y0 + 0.5) / height - 1.0
-    sy1 = 2.0 * (y1 - 1 + 0.5) / height - 1.0
+    sx0 = 2.0 * x0 / width - 1.0
+    sx1 = 2.0 * x1 / width - 1.0
+    sy0 = 2.0 * y0 / height - 1.0
+    sy1 = 2.0 * y1 / height - 1.0
     c0 = _direction(camera, sx0, sy0)
     c1 = _direction(camera, sx1, sy0)
     c2 = _direction(camera, sx0, sy1)

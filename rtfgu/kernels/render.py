@@ -10,8 +10,13 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
               for a kind the scene lacks (rtfgu.kernels.dispatch)
     scene     (materials, shaders, background)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
-    settings  (shadows, show_ray_direction, formula id)
+    settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
     bounces   None when no shader continues a path: that code then compiles to nothing
+    sampler   None (one sample at each pixel's centre), or the FlatSampler's
+              (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
+
+``image`` holds each pixel's sum of samples: a render adds samples first <= s < end to
+it, in order, so passes that split the samples sum to the same bits as one render.
 """
 from __future__ import annotations
 
@@ -21,13 +26,16 @@ import numpy as np
 from numba import njit, prange, types
 from numba.extending import overload
 
+from ..layout import THIN_LENS
 from ..material import BASE_COLOR
+from ..sampling.random import LENS_SET, PIXEL_SET
 from ..shading import SPAWN_EPSILON
-from .camera import gen_ray
+from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
 from .dispatch import intersect_scene, shade, shape_normal
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, scale
+from .sampling import concentric_map, pixel_sample
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
 TILE = 16
@@ -101,7 +109,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene
-    shadows, show_ray_direction, formula = settings
+    shadows, formula = settings[0], settings[2]
     zero = lit(0, tmin)
     result = (zero, zero, zero)
     n_shadow = 0
@@ -140,49 +148,60 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def render_tile(tile_box, size, camera, shapes, lights, scene, terms, candidates, n_candidates,
-                settings, bounces, image):
-    """The pixels x0 <= ix < x1, y0 <= iy < y1 of the image: (primary, shadow, secondary)
+def render_tile(tile, camera, shapes, lights, scene, terms, candidates, n_candidates,
+                settings, bounces, sampler, image):
+    """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
+    y1, width, height)) to the image (the
+    lecture's render loop, rtfgu.renderer.render_reference): (primary, shadow, secondary)
     rays cast. ``candidates[:n_candidates]`` are the from-eye kind's rows the tile's primary
     rays can hit, with their per-frame ``terms`` (None and -1 without a pinhole eye).
 
     Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
     cost an atomic increment and decrement each per pixel, twice the time of the pixel."""
-    x0, x1, y0, y1 = tile_box
-    width, height = size
+    x0, x1, y0, y1, width, height = tile
     camera_kind, camera_row = camera[0], camera[1]
-    shadows, show_ray_direction, formula = settings
+    show_ray_direction, seed, first, end = settings[1], settings[3], settings[4], settings[5]
     n_shadow = 0
     n_secondary = 0
     n_primary = 0
     one = lit(1, camera_row[0])
     for iy in range(y0, y1):
         for ix in range(x0, x1):
-            sx = lit(2, one) * (lit(ix, one) + lit(0.5, one)) / lit(width, one) - one
-            sy = lit(2, one) * (lit(iy, one) + lit(0.5, one)) / lit(height, one) - one
-            ray = gen_ray(camera_kind, camera_row, sx, sy)
-            n_primary += 1
-            if show_ray_direction:
-                half = lit(0.5, one)
-                color = add(scale(ray[1], half), (half, half, half))
-            else:
-                color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms, candidates,
-                                                           n_candidates, settings, bounces)
-                n_shadow += shadow_rays
-                n_secondary += secondary_rays
+            pixel = (height - 1 - iy) * width + ix
             out = image[height - 1 - iy, ix]
-            out[0] = color[0]
-            out[1] = color[1]
-            out[2] = color[2]
+            total = (out[0], out[1], out[2])
+            for s in range(first, end):
+                spx, spy = pixel_sample(sampler, pixel, s, PIXEL_SET, seed, one)
+                sx = lit(2, one) * (lit(ix, one) + spx) / lit(width, one) - one
+                sy = lit(2, one) * (lit(iy, one) + spy) / lit(height, one) - one
+                if camera_kind == THIN_LENS:
+                    lens = concentric_map(*pixel_sample(sampler, pixel, s, LENS_SET, seed, one))
+                    ray = thin_lens_ray(camera_row, sx, sy, lens)
+                else:
+                    ray = gen_ray(camera_kind, camera_row, sx, sy)
+                n_primary += 1
+                if show_ray_direction:
+                    half = lit(0.5, one)
+                    color = add(scale(ray[1], half), (half, half, half))
+                else:
+                    color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
+                                                               candidates, n_candidates, settings,
+                                                               bounces)
+                    n_shadow += shadow_rays
+                    n_secondary += secondary_rays
+                total = add(total, color)
+            out[0] = total[0]
+            out[1] = total[1]
+            out[2] = total[2]
     return n_primary, n_shadow, n_secondary
 
 
 @njit(parallel=True, cache=True, error_model="numpy")
-def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, tile_stride, image,
-                  counts):
-    """Fill ``image`` (height, width, 3), row 0 at the top, and ``counts`` (tiles, 3);
-    ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
+def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, sampler, tile_stride,
+                  image, counts):
+    """Add the samples settings[4] <= s < settings[5] of every pixel to ``image`` (height,
+    width, 3), row 0 at the top, and fill ``counts`` (tiles, 3); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
     holds its per-frame terms and culling cones, so each tile tests only the rows its
     primary rays can hit; otherwise it is None."""
     width, height = size
@@ -199,9 +218,9 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, t
         y0 = (tile // tiles_x) * TILE
         box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
-        n_primary, n_shadow, n_secondary = render_tile(box, size, camera, shapes, lights, scene, terms,
+        n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene, terms,
                                                        candidates[tile], n_candidates, settings,
-                                                       bounces, image)
+                                                       bounces, sampler, image)
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary

@@ -3,8 +3,8 @@
 path loop), assembled per scene from the .wgsl files of this package and run through wgpu."""
 from .assemble import Program, assemble, pieces
 from .device import INSTALL_HINT, NoAdapterError, adapter_description, get_device
-from .runner import WGSLCompileError, compile_program, prepare, render_wgpu
+from .runner import WGPUAccumulator, WGSLCompileError, compile_program, prepare, render_wgpu
 
 __all__ = ["pieces", "Program", "assemble", "INSTALL_HINT", "NoAdapterError",
            "adapter_description", "get_device", "WGSLCompileError", "compile_program",
-           "prepare", "render_wgpu"]
+           "prepare", "render_wgpu", "WGPUAccumulator"]

@@ -69,9 +69,15 @@ def pieces(features, formula: str = "slide") -> list:
     out = [("ray.wgsl", "ray.wgsl")]
     if trace:
         out.append(("hitinfo.wgsl", "hitinfo.wgsl"))
-    for camera in ("orthographic", "pinhole"):
-        if camera in f:
+    if "sampler" in f:
+        out.append(("random.wgsl", "random.wgsl"))
+    out.append(("pixel_sample.wgsl", "pixel_sample.wgsl"))
+    for camera in layout.CAMERA_KINDS.values():
+        # The thin lens bends the pinhole's ray (camera_thin_lens.wgsl calls it).
+        if camera in f or (camera == "pinhole" and "thin_lens" in f):
             out.append(("camera_%s.wgsl" % camera, "camera_%s.wgsl" % camera))
+    if "thin_lens" in f:
+        out.append(("concentric_map.wgsl", "concentric_map.wgsl"))
     if trace:
         for kind in _shape_kinds(f):
             chosen = formula if formula in kind.formulas else "slide"
@@ -102,7 +108,9 @@ def pieces(features, formula: str = "slide") -> list:
 
 def piece_names() -> list:
     """Every piece a program may hold, for ``overrides``."""
-    names = ["ray.wgsl", "hitinfo.wgsl", "camera_orthographic.wgsl", "camera_pinhole.wgsl"]
+    names = ["ray.wgsl", "hitinfo.wgsl", "random.wgsl", "pixel_sample.wgsl"]
+    names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
+    names += ["concentric_map.wgsl"]
     names += [kind.wgsl_file for kind in SHAPES]
     names += ["lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
@@ -161,6 +169,8 @@ def binding_data(flat, name: str) -> np.ndarray:
     """The FlatScene array behind the binding ``name``."""
     if name in ("camera", "materials", "shaders"):
         return getattr(flat, name)
+    if name in ("samples", "shuffled"):
+        return getattr(flat.sampler, name)
     for kind in SHAPES:
         if name == kind.table:
             return flat.table(kind.name)
@@ -219,8 +229,11 @@ class Program:
 
 def scene_features(flat) -> frozenset:
     """FlatScene.features plus what the assembly derives from it: "trace" when the path
-    loop runs (not the ray-direction image), "shapes" when there is any shape."""
+    loop runs (not the ray-direction image), "shapes" when there is any shape, "sampler"
+    when the render has a sampler (FlatScene.sampler)."""
     f = set(flat.features)
+    if flat.sampler is not None:
+        f.add("sampler")
     if len(flat.shaders):
         f.add("shapes")
     if not flat.show_ray_direction:
@@ -280,9 +293,12 @@ def _bindings(flat, features, scene_buffer: str) -> list:
     if scene_buffer not in SCENE_BUFFER_KINDS:
         raise ValueError("scene_buffer must be one of %s, got %r"
                          % (", ".join(SCENE_BUFFER_KINDS), scene_buffer))
-    camera_struct = ("OrthographicCamera" if flat.camera_kind == layout.ORTHOGRAPHIC
-                     else "PinholeCamera")
-    wanted = [("camera", camera_struct, flat.camera, False)]
+    wanted = [("camera", layout.CAMERA_RECORDS[flat.camera_kind], flat.camera, False)]
+    if flat.sampler is not None:
+        wanted.append(("samples", "array<vec2f, %d>" % len(flat.sampler.samples),
+                       flat.sampler.samples, False))
+        wanted.append(("shuffled", "array<i32, %d>" % len(_packed_index(flat.sampler.shuffled)),
+                       flat.sampler.shuffled, True))
     if "trace" in features:
         for kind in SHAPES:
             if kind.name not in features:
@@ -306,7 +322,12 @@ def _bindings(flat, features, scene_buffer: str) -> list:
     result = []
     for number, (name, wgsl_type, data, is_index) in enumerate(wanted, start=1):
         size = len(_packed_index(data)) * 4 if is_index else max(data.size, 4) * 4
-        kind = "uniform" if name == "camera" else (scene_buffer if size <= MAX_UNIFORM_BYTES else "storage")
+        if name == "camera":
+            kind = "uniform"
+        elif name in ("samples", "shuffled"):   # arrays of 8 and 4 bytes: storage only
+            kind = "storage"
+        else:
+            kind = scene_buffer if size <= MAX_UNIFORM_BYTES else "storage"
         result.append(Binding(number, name, wgsl_type, kind, size, is_index))
     return result
 
@@ -314,6 +335,8 @@ def _bindings(flat, features, scene_buffer: str) -> list:
 def _header(flat, features, bindings) -> str:
     parts = ["// The scene layout and ids, generated from rtfgu/layout.py.", structs.constants_wgsl()]
     counts = [("NUM_SHAPES", len(flat.shaders))]
+    if flat.sampler is not None:
+        counts += [("NUM_SAMPLES", flat.sampler.num_samples), ("NUM_SETS", flat.sampler.num_sets)]
     counts += [("NUM_" + kind.table.upper(), flat.count(kind.name)) for kind in SHAPES]
     counts += [("NUM_" + kind.table.upper(), len(flat.lights[kind.name])) for kind in LIGHTS]
     parts.append("\n".join("const %s = %du;" % c for c in counts))

@@ -30,9 +30,6 @@ def wgpu_records(scene, formula=None, pixel=None, rays=None) -> np.ndarray:
     flat = compile_scene(scene, "float32")
     compiled = compile_program(assemble(flat, formula=formula, entry=ENTRY))
     compiled.upload(flat)
-    uniforms = np.zeros(structs.UNIFORMS_SIZE // 4, dtype=np.uint32)
-    uniforms.view(np.float32)[0:3] = compiled.background
-    uniforms.view(np.float32)[3] = 1.0
     data = np.zeros((1, STRIDE, 4), dtype=np.float32)
     if pixel is None:
         given = np.asarray(rays, dtype=np.float64).reshape(-1, 8)
@@ -40,17 +37,17 @@ def wgpu_records(scene, formula=None, pixel=None, rays=None) -> np.ndarray:
         data = np.zeros((len(given), STRIDE, 4), dtype=np.float32)
         data[:, 0] = given[:, [0, 1, 2, 6]]
         data[:, 1] = given[:, [3, 4, 5, 7]]
-        uniforms[4:10] = (1, 1, 0, 0, len(given), 0)
+        uniforms = structs.uniforms(compiled.background, 0, 1, 1, (0, 0), (len(given), 0))
     else:
         x, y, width, height = pixel
-        uniforms[4:10] = (width, height, x, y, 1, 1)
+        uniforms = structs.uniforms(compiled.background, 0, width, height, (x, y), (1, 1))
     device = compiled.device
     buffer = device.create_buffer(size=data.nbytes, usage=wgpu.BufferUsage.STORAGE
                                   | wgpu.BufferUsage.COPY_SRC | wgpu.BufferUsage.COPY_DST)
     group = device.create_bind_group(layout=compiled.image_layout, entries=[
         {"binding": 0, "resource": {"buffer": buffer}}])
     device.queue.write_buffer(buffer, 0, data.tobytes())
-    device.queue.write_buffer(compiled.uniforms, 0, uniforms.tobytes())
+    device.queue.write_buffer(compiled.uniforms, 0, uniforms)
     encoder = device.create_command_encoder()
     compute = encoder.begin_compute_pass()
     compute.set_pipeline(compiled.pipeline)

@@ -1,7 +1,9 @@
 // The main program (02562, "Intersecting with the scene and tracing a path"), as a compute
-// shader over one tile of the image: trace the pixel's path with at most max_depth shaded
-// hits, add the background where the path leaves the scene, apply gamma, store the colour.
-// The pixel loop is the slide's (lecture 01, "Rendering a Scene"): iy counts from the bottom.
+// shader over one tile of the image: for each sample of the pixel, trace its path with at
+// most max_depth shaded hits, adding the background where the path leaves the scene, and
+// add the colour to the pixel's sum in `image` (the host divides by the samples; passes
+// that split the samples add them in the same order). The pixel loop is the slide's
+// (lecture 01, "Rendering a Scene"): iy counts from the bottom.
 @compute @workgroup_size(8, 8)
 fn main(@builtin(global_invocation_id) id: vec3u)
 {
@@ -11,29 +13,36 @@ fn main(@builtin(global_invocation_id) id: vec3u)
     let ix = uniforms.tile_origin.x + id.x;
     let row = uniforms.tile_origin.y + id.y;
     let iy = uniforms.height - 1u - row;
-    let sx = 2.0 * (f32(ix) + 0.5) / f32(uniforms.width) - 1.0;
-    let sy = 2.0 * (f32(iy) + 0.5) / f32(uniforms.height) - 1.0;
-    var r = get_camera_ray(sx, sy);
-    var result = vec3f(0.0);
-    // #if ray_direction
-    // Week 1's first image: the eye ray's direction as a colour.
-    result = r.direction * 0.5 + vec3f(0.5);
-    // #else
-    var hit = empty_hit();
-    for (var i = 0; i < max_depth; i++) {
-        if (intersect_scene(&r, &hit)) {
-            result += shade(&r, &hit);
-        } else {
-            result += uniforms.background;
-            break;
+    let pixel = row * uniforms.width + ix;
+    var total = image[pixel].xyz;
+    for (var s = uniforms.first_sample; s < uniforms.end_sample; s++) {
+        let sp = pixel_sample(pixel, s, PIXEL_SET);
+        let sx = 2.0 * (f32(ix) + sp.x) / f32(uniforms.width) - 1.0;
+        let sy = 2.0 * (f32(iy) + sp.y) / f32(uniforms.height) - 1.0;
+        // #if thin_lens
+        var r = get_lens_ray(sx, sy, concentric_map(pixel_sample(pixel, s, LENS_SET)));
+        // #else
+        var r = get_camera_ray(sx, sy);
+        // #endif
+        var result = vec3f(0.0);
+        // #if ray_direction
+        // Week 1's first image: the eye ray's direction as a colour.
+        result = r.direction * 0.5 + vec3f(0.5);
+        // #else
+        var hit = empty_hit();
+        for (var i = 0; i < max_depth; i++) {
+            if (intersect_scene(&r, &hit)) {
+                result += shade(&r, &hit);
+            } else {
+                result += uniforms.background;
+                break;
+            }
+            if (hit.has_hit) {
+                break;
+            }
         }
-        if (hit.has_hit) {
-            break;
-        }
+        // #endif
+        total += result;
     }
-    // #endif
-    if (uniforms.gamma != 1.0) {
-        result = pow(result, vec3f(1.0 / uniforms.gamma));
-    }
-    image[id.y * uniforms.tile_size.x + id.x] = vec4f(result, 1.0);
+    image[pixel] = vec4f(total, 1.0);
 }

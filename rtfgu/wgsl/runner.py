@@ -18,7 +18,8 @@ import time
 
 import numpy as np
 
-from ..layout import compile_scene
+from ..layout import compile_sampler, compile_scene
+from ..renderer import pixel_sampler
 from . import structs
 from .assemble import GENERATED, assemble, check_formula
 from .device import get_device
@@ -130,33 +131,31 @@ class CompiledProgram:
         import wgpu
 
         if self._image is None or self._image[0] < pixels:
-            buffer = self.device.create_buffer(size=16 * pixels,
-                                               usage=wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.COPY_SRC)
+            buffer = self.device.create_buffer(size=16 * pixels, usage=wgpu.BufferUsage.STORAGE
+                                               | wgpu.BufferUsage.COPY_SRC | wgpu.BufferUsage.COPY_DST)
             group = self.device.create_bind_group(layout=self.image_layout, entries=[
                 {"binding": 0, "resource": {"buffer": buffer}}])
             self._image = (pixels, buffer, group)
         return self._image
 
-    def render(self, width: int, height: int, gamma: float = 1.0, tile: int = TILE,
-               progress=None) -> np.ndarray:
-        """(height, width, 3) float32, row 0 at the top; ``progress(rows_done, height)``
-        after each band of tiles."""
+    def render(self, width: int, height: int, tile: int = TILE, progress=None, seed: int = 0,
+               samples=(0, 1)) -> np.ndarray:
+        """Add samples ``samples[0] <= s < samples[1]`` of every pixel to the sums on the
+        device (zeroed when samples[0] is 0) and return the sums, (height, width, 3)
+        float32, row 0 at the top; ``progress(rows_done, height)`` after each band of tiles."""
         tile = int(tile)
         if tile < 1:
             raise ValueError("tile must be >= 1, got %r" % (tile,))
-        image = np.zeros((height, width, 3), dtype=np.float32)
-        _, buffer, group = self._image_buffer(min(tile, width) * min(tile, height))
+        _, buffer, group = self._image_buffer(width * height)
         queue = self.device.queue
+        if samples[0] == 0:
+            queue.write_buffer(buffer, 0, bytes(16 * width * height))
         for row0 in range(0, height, tile):
             th = min(tile, height - row0)
             for col0 in range(0, width, tile):
                 tw = min(tile, width - col0)
-                uniforms = np.zeros(structs.UNIFORMS_SIZE // 4, dtype=np.uint32)
-                as_float = uniforms.view(np.float32)
-                as_float[0:3] = self.background
-                as_float[3] = gamma
-                uniforms[4:10] = (width, height, col0, row0, tw, th)
-                queue.write_buffer(self.uniforms, 0, uniforms.tobytes())
+                queue.write_buffer(self.uniforms, 0, structs.uniforms(
+                    self.background, seed, width, height, (col0, row0), (tw, th), samples))
                 encoder = self.device.create_command_encoder()
                 compute = encoder.begin_compute_pass()
                 compute.set_pipeline(self.pipeline)
@@ -165,11 +164,10 @@ class CompiledProgram:
                 compute.dispatch_workgroups(-(-tw // WORKGROUP), -(-th // WORKGROUP), 1)
                 compute.end()
                 queue.submit([encoder.finish()])
-                data = np.frombuffer(queue.read_buffer(buffer, 0, 16 * tw * th), dtype=np.float32)
-                image[row0:row0 + th, col0:col0 + tw] = data.reshape(th, tw, 4)[:, :, :3]
             if progress is not None:
                 progress(row0 + th, height)
-        return image
+        data = np.frombuffer(queue.read_buffer(buffer, 0, 16 * width * height), dtype=np.float32)
+        return data.reshape(height, width, 4)[:, :, :3].copy()
 
 
 def compile_program(program) -> CompiledProgram:
@@ -183,19 +181,41 @@ def compile_program(program) -> CompiledProgram:
 
 
 def prepare(scene, scene_buffer: str = DEFAULT_SCENE_BUFFER, overrides=None,
-            formula: str | None = None) -> CompiledProgram:
+            formula: str | None = None, sampler=None) -> CompiledProgram:
     """Lay out ``scene`` in float32, assemble and compile (or reuse) its program, upload it.
-    ``formula``: the sphere test, "slide" or "robust" (None: the assembler's default)."""
+    ``formula``: the sphere test, "slide" or "robust" (None: the assembler's default);
+    ``sampler``: the render's Sampler, or None for one sample at each pixel's centre."""
     check_formula(formula)  # a bad formula is refused before the scene is compiled
     flat = compile_scene(scene, "float32")
+    flat.sampler = compile_sampler(sampler, "float32")
     compiled = compile_program(assemble(flat, scene_buffer, overrides, formula))
     compiled.upload(flat)
     return compiled
 
 
+class WGPUAccumulator:
+    """A WGSL render in passes: each call adds a range of samples to every pixel's sum on
+    the device and returns the mean image so far (rtfgu.renderer.render_passes)."""
+
+    def __init__(self, scene, width: int, height: int, formula: str | None = None, sampler=None,
+                 seed: int = 0, scene_buffer: str = DEFAULT_SCENE_BUFFER, tile: int = TILE):
+        self.compiled = prepare(scene, scene_buffer, formula=formula, sampler=sampler)
+        self.size = (width, height)
+        self.seed = seed
+        self.tile = tile
+
+    def __call__(self, samples, progress=None) -> np.ndarray:
+        width, height = self.size
+        sums = self.compiled.render(width, height, self.tile, progress, self.seed, samples)
+        return sums / np.float32(samples[1])
+
+
 def render_wgpu(scene, width: int, height: int, progress=None,
                 scene_buffer: str = DEFAULT_SCENE_BUFFER, tile: int = TILE,
-                formula: str | None = None) -> np.ndarray:
-    """rtfgu.render(..., backend="wgpu"): (height, width, 3) float64, before gamma."""
-    compiled = prepare(scene, scene_buffer, formula=formula)
-    return compiled.render(width, height, gamma=1.0, tile=tile, progress=progress).astype(np.float64)
+                formula: str | None = None, spp: int | None = None, seed: int = 0) -> np.ndarray:
+    """The WGSL path in one pass: (height, width, 3) float64, before gamma; ``spp``,
+    ``seed`` as rtfgu.render."""
+    sampler = pixel_sampler(scene, spp)
+    accumulate = WGPUAccumulator(scene, width, height, formula, sampler, seed, scene_buffer, tile)
+    samples = (0, 1 if sampler is None else sampler.num_samples)
+    return accumulate(samples, progress).astype(np.float64)

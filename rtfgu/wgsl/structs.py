@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .. import layout
 from ..material import SHADER_NAMES
 from ..ray import RAY_EPSILON
@@ -107,10 +109,22 @@ def constants_wgsl() -> str:
 # The per-image values that are not scene arrays; the tile being rendered changes per dispatch.
 UNIFORMS_WGSL = """struct Uniforms {
     background: vec3f,  // rtfgu.layout: FlatScene.background
-    gamma: f32,         // 1 for render(): rtfgu.image applies gamma when it writes 8 bits
+    seed: u32,          // the random stream's seed (rtfgu/sampling/random.py)
     width: u32,
     height: u32,
     tile_origin: vec2u, // (column, row) of the tile's top-left pixel, row 0 at the top
     tile_size: vec2u,
+    first_sample: u32,  // the dispatch adds samples first_sample <= s < end_sample
+    end_sample: u32,
 };"""
 UNIFORMS_SIZE = 48
+
+
+def uniforms(background, seed: int, width: int, height: int, origin=(0, 0), size=(0, 0),
+             samples=(0, 1)) -> bytes:
+    """The bytes of ``struct Uniforms``."""
+    words = np.zeros(UNIFORMS_SIZE // 4, dtype=np.uint32)
+    words.view(np.float32)[0:3] = background[:3]
+    words[3] = seed
+    words[4:12] = (width, height, origin[0], origin[1], size[0], size[1], samples[0], samples[1])
+    return words.tobytes()

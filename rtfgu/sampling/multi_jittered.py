@@ -1,0 +1,41 @@
+"""MultiJittered: Chiu, Shirley and Wang's multi-jittered points (Suffern ch. 5,
+"Multi-Jittered Sampling"): jittered in the n x n grid and n-rooks in the n^2 x n^2
+subgrid. Points start in the canonical arrangement, then x is shuffled within each
+column and y within each row of the grid, which keeps both properties."""
+from __future__ import annotations
+
+import math
+
+from .sampler import Sampler
+
+
+class MultiJittered(Sampler):
+    needs_square = True
+
+    def generate_samples(self) -> None:
+        n = math.isqrt(self.num_samples)
+        subcell = 1.0 / self.num_samples
+        for p in range(self.num_sets):
+            for i in range(n):
+                for j in range(n):
+                    self.samples.append(((i * n + j) * subcell + self.rand_float() * subcell,
+                                         (j * n + i) * subcell + self.rand_float() * subcell))
+        for p in range(self.num_sets):      # shuffle x within each column of cells
+            base = p * self.num_samples
+            for i in range(n):
+                for j in range(n):
+                    k = self.rand_int(j, n - 1)
+                    a, b = base + i * n + j, base + i * n + k
+                    self._swap(a, b, 0)
+        for p in range(self.num_sets):      # shuffle y within each row of cells
+            base = p * self.num_samples
+            for i in range(n):
+                for j in range(n):
+                    k = self.rand_int(j, n - 1)
+                    a, b = base + j * n + i, base + k * n + i
+                    self._swap(a, b, 1)
+
+    def _swap(self, a: int, b: int, axis: int) -> None:
+        pa, pb = list(self.samples[a]), list(self.samples[b])
+        pa[axis], pb[axis] = pb[axis], pa[axis]
+        self.samples[a], self.samples[b] = tuple(pa), tuple(pb)

@@ -1,0 +1,17 @@
+"""Regular: the centres of an n x n grid of cells (Suffern ch. 5, "Regular Sampling")."""
+from __future__ import annotations
+
+import math
+
+from .sampler import Sampler
+
+
+class Regular(Sampler):
+    needs_square = True
+
+    def generate_samples(self) -> None:
+        n = math.isqrt(self.num_samples)
+        for p in range(self.num_sets):
+            for j in range(n):
+                for k in range(n):
+                    self.samples.append(((k + 0.5) / n, (j + 0.5) / n))
