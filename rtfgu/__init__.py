@@ -8,7 +8,10 @@ from .lights import Light, PointLight, sample_point_light
 from .material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Material)
 from .ray import RAY_EPSILON, Ray
-from .renderer import render, trace
+from .renderer import render, render_passes, trace
+from .notebook import show
+from .cameras import ThinLens
+from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Sampler
 from .scene import Scene
 from .shading import HitInfo, shade
 from .shapes import Shape
@@ -25,5 +28,6 @@ __all__ = [
     "Shape", "Scene",
     "Material", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
     "PointLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
-    "render", "write_png",
+    "render", "render_passes", "show", "write_png",
+    "ThinLens", "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
 ] + [_kind.cls.__name__ for _kind in _SHAPES]

@@ -17,7 +17,12 @@ from .scenes import SCENES, get_scene
 from .wgsl import NoAdapterError, WGSLCompileError
 
 
-def _progress_printer(label: str):
+BAR = 30
+
+
+def _progress_printer(label: str, stream=None):
+    """progress(done, total) drawing a bar on one line of standard error, at most twice a
+    second, with the time so far and the time left at this pace."""
     start = time.perf_counter()
     shown = [0.0]
 
@@ -26,25 +31,34 @@ def _progress_printer(label: str):
         if done < total and elapsed - shown[0] < 0.5:
             return  # a line every half second is enough to show it is alive
         shown[0] = elapsed
+        filled = BAR * done // total
+        left = elapsed * (total - done) / done if done else 0.0
         end = "\n" if done == total else ""
-        print("\r%s: row %d/%d, %.1f s" % (label, done, total, elapsed), end=end,
-              file=sys.stderr, flush=True)
+        print("\r%s [%s%s] %3d%%  %.1f s, %.1f s left" % (
+            label, "#" * filled, "." * (BAR - filled), 100 * done // total, elapsed, left),
+            end=end, file=stream or sys.stderr, flush=True)
     return progress
 
 
-def _render_one(name, width, height, backend, precision, out, show_progress):
+# Passes of a long render: the progress bar moves (and a notebook refreshes) once per pass.
+PROGRESS_PASSES = 16
+
+
+def _render_one(name, width, height, backend, precision, out, show_progress, spp=None, seed=0):
     fn = get_scene(name)
     w, h = fn.size
     width = w if width is None else width
     height = h if height is None else height
-    progress = _progress_printer(name) if show_progress and backend in ("reference", "wgpu") else None
+    progress = _progress_printer(name) if show_progress else None
     scene = fn()
     if isinstance(scene.camera, PinholeCamera) and (width, height) != (w, h):
         # A size other than the homework's: keep square pixels by following its aspect ratio.
         scene.camera.aspect = width / height
     start = time.perf_counter()
+    samples = spp or (scene.sampler.num_samples if scene.sampler is not None else 1)
+    passes = PROGRESS_PASSES if show_progress and samples > 1 else 1
     image = render_module.render(scene, width, height, backend=backend, precision=precision,
-                                 progress=progress)
+                                 progress=progress, spp=spp, seed=seed, passes=passes)
     write_png(image, out)
     return time.perf_counter() - start, width, height
 
@@ -89,6 +103,9 @@ def main(argv=None) -> int:
                        choices=render_module.BACKENDS)
         p.add_argument("--precision", default=None, choices=render_module.PRECISIONS,
                        help="default float64; float32 for --backend wgpu")
+        p.add_argument("--spp", type=int, default=None,
+                       help="samples per pixel (default: the scene's sampler, else 1)")
+        p.add_argument("--seed", type=int, default=0, help="the random stream's seed")
 
     p = sub.add_parser("render", help="render one scene to a PNG")
     p.add_argument("name")
@@ -124,14 +141,14 @@ def main(argv=None) -> int:
         elif args.command == "render":
             out = args.output or args.name + ".png"
             seconds, w, h = _render_one(args.name, args.width, args.height, args.backend,
-                                        args.precision, out, show_progress=True)
+                                        args.precision, out, True, args.spp, args.seed)
             print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds))
         elif args.command == "render-all":
             os.makedirs(args.out, exist_ok=True)
             for name in SCENES:
                 out = os.path.join(args.out, name + ".png")
                 seconds, w, h = _render_one(name, None, None, args.backend, args.precision,
-                                            out, show_progress=True)
+                                            out, True, args.spp, args.seed)
                 print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds), flush=True)
         elif args.command == "info":
             from .wgsl import adapter_description

@@ -39,7 +39,26 @@ def test_render_reference_backend_writes_the_rendered_pixels(tmp_path):
     # the same pixels as rendering in this process and writing with gamma
     expected = to_8bit(rtfgu.render(SCENES["lecture01_flat_colors"](), 16, 16))
     assert np.array_equal(read_png(out), expected)
-    assert "16/16" in done.stderr  # the progress line reached the last row
+    assert "100%" in done.stderr  # the progress bar reached the last row
+
+
+def test_render_with_spp_draws_a_bar_per_pass_and_writes_the_sampled_image(tmp_path):
+    out = tmp_path / "aa.png"
+    done = run("render", "default_lambertian_shadows", "-o", str(out), "--width", "12",
+               "--height", "12", "--backend", "numba", "--spp", "16", "--seed", "3", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    expected = to_8bit(rtfgu.render(SCENES["default_lambertian_shadows"](), 12, 12,
+                                    backend="numba", spp=16, seed=3))
+    assert np.array_equal(read_png(out), expected)
+    assert not np.array_equal(expected, to_8bit(rtfgu.render(
+        SCENES["default_lambertian_shadows"](), 12, 12, backend="numba")))
+    assert "[" + "#" * 30 + "] 100%" in done.stderr
+
+
+def test_a_bad_spp_exits_2_and_names_it(tmp_path):
+    done = run("render", "default_lambertian", "--spp", "0", "-o", str(tmp_path / "x.png"), cwd=tmp_path)
+    assert done.returncode == 2
+    assert "spp" in done.stderr and "Traceback" not in done.stderr
 
 
 def test_render_non_square(tmp_path):

@@ -38,12 +38,14 @@ def render_in_subprocess(tmp_path, env_overrides, name, width, height, precision
 
 
 def test_one_and_two_threads_agree_bit_for_bit(tmp_path):
-    # The glossy scene exercises every kind of ray: primary, shadow, reflected, refracted.
-    for precision in ("float64", "float32"):
+    # The glossy scene exercises every kind of ray: primary, shadow, reflected, refracted;
+    # the depth-of-field scene the random stream (64 samples per pixel and a thin lens).
+    for name, precision in (("default_glossy_sphere", "float64"), ("default_glossy_sphere", "float32"),
+                            ("suffern_depth_of_field", "float32")):
         one, said_one = render_in_subprocess(tmp_path, {"NUMBA_NUM_THREADS": "1"},
-                                             "default_glossy_sphere", 48, 48, precision)
+                                             name, 48, 48, precision)
         two, said_two = render_in_subprocess(tmp_path, {"NUMBA_NUM_THREADS": "2"},
-                                             "default_glossy_sphere", 48, 48, precision)
+                                             name, 48, 48, precision)
         assert said_one[1] == "1" and said_two[1] == "2"
         assert one.tobytes() == two.tobytes()
 

@@ -1,7 +1,8 @@
 """The numba path against the lecture layer on every homework scene.
 
 float64: the kernels do the lecture's operations in the lecture's order, so the images agree
-to 1e-9 per channel before gamma and are identical after ``to_8bit``.
+to 1e-9 per channel before gamma and are identical after ``to_8bit``. A scene with a
+sampler is rendered at 4 samples per pixel: the random stream picks the same samples.
 float32: at least 99.9 % of the 8-bit channels are within 1/255 of the reference, and every
 channel further off lies on a silhouette. A pixel is on a silhouette when its 3x3
 neighbourhood in the reference contains a different *path signature*: the sequence of
@@ -15,10 +16,17 @@ import numpy as np
 import pytest
 
 from rtfgu.image import to_8bit
-from rtfgu.renderer import render, trace
+from rtfgu.renderer import lens_sample, pixel_sampler, render, trace
+from rtfgu.sampling import concentric_map
 from rtfgu.scenes import SCENES
 
 SIZE = 40  # the longer side; the other keeps the homework's aspect
+SAMPLED_SPP = 4
+
+
+def spp_of(name):
+    """4 for a scene with a sampler, None (its one centre sample) for the others."""
+    return SAMPLED_SPP if SCENES[name]().sampler is not None else None
 
 
 def test_size(name):
@@ -30,10 +38,11 @@ def test_size(name):
 test_size.__test__ = False
 
 
-def reference_signatures(scene, width, height):
+def reference_signatures(scene, width, height, spp=None):
     """The path signature of every pixel, from the lecture layer itself: each shape's
     intersect_p and the scene's intersect are wrapped to log which shape a closest-hit query
-    ends on and which shape stops a shadow ray (in_shadow returns at its first hit)."""
+    ends on and which shape stops a shadow ray (in_shadow returns at its first hit). With a
+    sampler, a pixel's signature is that of all its samples' paths."""
     log = []
     for i, shape in enumerate(scene.shapes):
         def logged(ray, _inner=shape.intersect_p, _i=i):
@@ -53,13 +62,21 @@ def reference_signatures(scene, width, height):
         return found
     scene.intersect = intersect
 
+    sampler = pixel_sampler(scene, spp)
     signatures = np.empty((height, width), dtype=object)
     for iy in range(height):
         for ix in range(width):
-            sx = 2 * (ix + 0.5) / width - 1
-            sy = 2 * (iy + 0.5) / height - 1
+            pixel = (height - 1 - iy) * width + ix
             log.clear()
-            trace(scene, scene.camera.gen_ray(sx, sy))
+            for s in range(1 if sampler is None else sampler.num_samples):
+                sp = (0.5, 0.5) if sampler is None else sampler.sample_unit_square(pixel, s)
+                sx = 2 * (ix + sp[0]) / width - 1
+                sy = 2 * (iy + sp[1]) / height - 1
+                if scene.camera.uses_lens:
+                    lens = concentric_map(*lens_sample(sampler, pixel, s, 0))
+                    trace(scene, scene.camera.gen_ray(sx, sy, lens))
+                else:
+                    trace(scene, scene.camera.gen_ray(sx, sy))
             signatures[height - 1 - iy, ix] = tuple(log)
     return signatures
 
@@ -85,7 +102,8 @@ _references = {}
 def reference(name):
     if name not in _references:
         width, height = test_size(name)
-        _references[name] = render(SCENES[name](), width, height, backend="reference")
+        _references[name] = render(SCENES[name](), width, height, backend="reference",
+                                   spp=spp_of(name))
     return _references[name]
 
 
@@ -97,7 +115,7 @@ def test_float64_matches_reference(name, formula):
     width, height = test_size(name)
     ref = reference(name)
     image = render(SCENES[name](), width, height, backend="numba", precision="float64",
-                   formula=formula)
+                   formula=formula, spp=spp_of(name))
     assert image.shape == ref.shape
     assert np.abs(image - ref).max() <= 1e-9
     assert np.array_equal(to_8bit(image), to_8bit(ref))
@@ -107,12 +125,13 @@ def test_float64_matches_reference(name, formula):
 def test_float32_matches_reference_off_silhouettes(name):
     width, height = test_size(name)
     ref = reference(name)
-    image = render(SCENES[name](), width, height, backend="numba", precision="float32")
+    image = render(SCENES[name](), width, height, backend="numba", precision="float32",
+                   spp=spp_of(name))
     diff = np.abs(to_8bit(image).astype(int) - to_8bit(ref).astype(int))
     far = diff > 1
     assert far.mean() <= 0.001, "%d of %d channels differ by more than 1/255" % (far.sum(), far.size)
     if far.any():
-        on_edge = silhouette_mask(reference_signatures(SCENES[name](), width, height))
+        on_edge = silhouette_mask(reference_signatures(SCENES[name](), width, height, spp_of(name)))
         off = np.argwhere(far.any(axis=2) & ~on_edge)
         assert len(off) == 0, "pixels off by more than 1/255 away from any silhouette: %s" % off[:10]
 
