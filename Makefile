@@ -48,7 +48,7 @@ bench: $(BENCH_STAMP)
 
 # The contact sheet shown in the README.
 montage: $(STAMP)
-	$(PY) -m rtfgu.montage docs/homework_renders.png
+	$(PY) -m rtfgu.montage docs/homework_renders.png docs/samplers.png
 
 test: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m pytest

@@ -5,7 +5,9 @@ first differ.
 computed for pixel (x, y) (column, row, row 0 at the top as in the image file): a
 ``Bounce`` per ray of the pixel's path (02562 "Intersecting with the scene and tracing a
 path"): the ray, the shape hit (its place in Scene.shapes and its kind), the hit distance
-t, the normal there, the shader and the radiance that shader added. ``trace_rays`` does the
+t, the normal there, the shader and the radiance that shader added. The pixel's path is that
+of its centre ray (through the lens centre for a ThinLens): the image of a scene without a
+sampler, one of the samples a sampled pixel averages. ``trace_rays`` does the
 same for given rays (origin, direction, tmin, tmax), many in one call.
 
 ``first_difference(a, b, tolerance)`` compares two such lists bounce by bounce, field by
@@ -26,6 +28,7 @@ import math
 from dataclasses import dataclass
 from typing import NamedTuple
 
+from .cameras import PinholeCamera
 from .float3 import Float3
 from .material import SHADER_NAMES
 from .ray import Ray
@@ -196,7 +199,10 @@ def _trace(scene, backend, precision, formula, pixel=None, rays=None) -> list:
         if pixel is not None:
             x, y, width, height = pixel
             iy = height - 1 - y
-            rays = [scene.camera.gen_ray(2 * (x + 0.5) / width - 1, 2 * (iy + 0.5) / height - 1)]
+            # The pixel's centre ray; a ThinLens's through the lens centre, which is its
+            # pinhole ray (the paths trace that one too).
+            gen_ray = (PinholeCamera.gen_ray if scene.camera.uses_lens else type(scene.camera).gen_ray)
+            rays = [gen_ray(scene.camera, 2 * (x + 0.5) / width - 1, 2 * (iy + 0.5) / height - 1)]
         else:
             rays = [Ray(Float3(*o), Float3(*d), tmin, tmax) for o, d, tmin, tmax in rays]
         return [_reference(scene, r) for r in rays]
