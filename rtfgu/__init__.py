@@ -15,6 +15,7 @@ from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Samp
 from .scene import Scene
 from .shading import HitInfo, shade
 from .shapes import Shape
+from .textures import Checker, ImageTexture, Texture
 from .image import write_png
 from .registry import SHAPES as _SHAPES
 
@@ -30,4 +31,5 @@ __all__ = [
     "PointLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "render_passes", "show", "write_png",
     "ThinLens", "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
+    "Texture", "ImageTexture", "Checker",
 ] + [_kind.cls.__name__ for _kind in _SHAPES]

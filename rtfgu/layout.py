@@ -16,12 +16,16 @@ it, or the next free column. For example
     Plane       (P, 8)   [point, 0], [normal, 0]             (the normal as given, not normalised)
     Triangle    (T, 16)  [v0, 0], [e0, 0], [e1, 0], [n, 0]   (e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1)
     Sphere      (S, 4)   [center, radius]
-    Material    (N, 12)  [color, 0], [specular, shininess], [emission, ior]
+    Material    (N, 16)  [color, 0], [specular, shininess], [emission, ior], [texture, texture_row, 0, 0]
     PointLight  (L, 8)   [position, 0], [intensity, 0]
+    ImageTexture (X, 8)  [width, height, offset, filter_mode], [address_mode, scale, 0, 0]
+    Checker     (C, 8)   [color1, size], [color2, scale]
 
 A shape table comes with an int32 index: each row's place in Scene.shapes, which is also
 its material row (and decides ties: the earlier shape wins). ``shaders`` holds each
-shape's shader id; ``background`` is [rgb, 0].
+shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds every image texture's
+linear RGB, row after row from the top, 3 numbers a texel (an ImageTexture row's ``offset``
+is its first texel).
 """
 from __future__ import annotations
 
@@ -33,7 +37,8 @@ import numpy as np
 
 from .cameras import OrthographicCamera, PinholeCamera, ThinLens
 from .ray import RAY_EPSILON
-from .registry import LIGHTS, SHADER_BY_ID, SHAPE_IDS, SHAPES, light_kind_of, shape_kind_of
+from .registry import (LIGHTS, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
+                       shape_kind_of, texture_kind_of)
 
 DTYPES = {"float64": np.float64, "float32": np.float32}
 
@@ -59,7 +64,10 @@ def pack_fields(fields) -> tuple:
     return -(-column // 4) * 4, tuple(placed)
 
 
-MATERIAL_FIELDS = (("color", 3), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1))
+# texture: the texture kind's id (its place in rtfgu.registry.TEXTURES), -1 for none;
+# texture_row: its row in that kind's table.
+MATERIAL_FIELDS = (("color", 3), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1),
+                   ("texture", 1), ("texture_row", 1))
 CAMERA_FIELDS = {
     "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
                            ("yon", 1), ("tmin", 1)),
@@ -72,7 +80,7 @@ CAMERA_WIDTH = CAMERA_ROWS * 4
 
 # Every row as a record: name -> (row width, ((field, components, column), ...)). The WGSL
 # structs are generated from these records (rtfgu/wgsl/structs.py).
-RECORDS = {kind.record: pack_fields(kind.fields) for kind in SHAPES + LIGHTS}
+RECORDS = {kind.record: pack_fields(kind.fields) for kind in SHAPES + LIGHTS + TEXTURES}
 RECORDS["Material"] = pack_fields(MATERIAL_FIELDS)
 for _name, _fields in CAMERA_FIELDS.items():
     RECORDS[_name] = (CAMERA_WIDTH, pack_fields(_fields)[1])
@@ -111,6 +119,11 @@ MAT_SPECULAR = offset("Material", "specular")
 MAT_SHININESS = offset("Material", "shininess")
 MAT_EMISSION = offset("Material", "emission")
 MAT_IOR = offset("Material", "ior")
+MAT_TEXTURE = offset("Material", "texture")
+MAT_TEXTURE_ROW = offset("Material", "texture_row")
+# ImageTexture.filter and .address as numbers in the layout.
+TEXTURE_FILTERS = {"nearest": 0, "bilinear": 1}
+TEXTURE_ADDRESSES = {"repeat": 0, "clamp": 1}
 MATERIAL_WIDTH = width("Material")
 LIGHT_POSITION = offset("PointLight", "position")
 LIGHT_INTENSITY = offset("PointLight", "intensity")
@@ -156,6 +169,9 @@ class FlatScene:
     shadows: bool
     show_ray_direction: bool
     features: frozenset = field(default_factory=frozenset)
+    # A table per texture kind (empty for a kind the scene lacks) and the image texels.
+    textures: dict = field(default_factory=dict)
+    texels: np.ndarray = None
     # The render's FlatSampler (compile_sampler), set by the path that renders; None: one
     # sample through each pixel's centre.
     sampler: object = None
@@ -214,6 +230,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
 
     rows = {kind.name: ([], []) for kind in SHAPES}
     materials, shaders = [], []
+    texture_rows = {kind.name: [] for kind in TEXTURES}
+    texels = []
+    placed = {}  # id(texture) -> (kind id, row): a texture shared by shapes is laid out once
     features = {CAMERA_KINDS[camera_kind]}
     for i, shape in enumerate(scene.shapes):
         _, kind = shape_kind_of(shape)
@@ -224,9 +243,27 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         rows[kind.name][1].append(i)
         features.add(kind.name)
         m = shape.material
+        texture, texture_row = -1, 0
+        if m.texture is not None:
+            if id(m.texture) not in placed:
+                k, tkind = texture_kind_of(m.texture)
+                if tkind is None:
+                    raise ValueError("Scene.shapes[%d].material.texture: the flat layout knows %s, got %s"
+                                     % (i, ", ".join(t.record for t in TEXTURES), type(m.texture).__name__))
+                source = m.texture
+                if tkind.name == "image_texture":
+                    source = SimpleNamespace(
+                        width=m.texture.width, height=m.texture.height, offset=len(texels) // 3,
+                        filter_mode=TEXTURE_FILTERS[m.texture.filter],
+                        address_mode=TEXTURE_ADDRESSES[m.texture.address], scale=m.texture.scale)
+                    texels.extend(m.texture.texels.reshape(-1).tolist())
+                placed[id(m.texture)] = (k, len(texture_rows[tkind.name]))
+                texture_rows[tkind.name].append(pack_row(tkind.record, source))
+                features.update((tkind.name, "textures"))
+            texture, texture_row = placed[id(m.texture)]
         materials.append(pack_row("Material", SimpleNamespace(
             color=shape.color, specular=m.specular, shininess=m.shininess, emission=m.emission,
-            ior=m.ior)))
+            ior=m.ior, texture=texture, texture_row=texture_row)))
         shaders.append(m.shader)
         features.add(SHADER_BY_ID[m.shader].name)
 
@@ -260,10 +297,13 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         shadows=bool(scene.shadows),
         show_ray_direction=bool(scene.show_ray_direction),
         features=frozenset(features),
+        textures={kind.name: table(texture_rows[kind.name], kind.record) for kind in TEXTURES},
+        texels=np.array(texels or [0.0, 0.0, 0.0], dtype=dtype),
     )
     arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in SHAPES]
     arrays += [(kind.table, flat.lights[kind.name]) for kind in LIGHTS]
+    arrays += [(kind.table, flat.textures[kind.name]) for kind in TEXTURES] + [("texels", flat.texels)]
     for name, array in arrays:
         if not np.all(np.isfinite(array)):
             raise ValueError("Scene: %s is not finite in %s (a value overflows the precision)"

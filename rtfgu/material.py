@@ -33,12 +33,13 @@ SHADER_NAMES = {
 
 class Material:
     """shader id; specular reflectance rho_s and shininess s (Phong, glossy); index of
-    refraction (transparent, glossy); emitted radiance L_e (any shader that sees light)."""
+    refraction (transparent, glossy); emitted radiance L_e (any shader that sees light);
+    a texture (rtfgu.textures), whose colour at the hit replaces the shape's colour."""
 
-    __slots__ = ("shader", "specular", "shininess", "ior", "emission")
+    __slots__ = ("shader", "specular", "shininess", "ior", "emission", "texture")
 
     def __init__(self, shader: int = BASE_COLOR, specular=None, shininess: float = 0.0,
-                 ior: float = 1.0, emission=None):
+                 ior: float = 1.0, emission=None, texture=None):
         if shader not in SHADER_NAMES:
             raise ValueError("Material.shader must be one of %s, got %r" % (sorted(SHADER_NAMES), shader))
         self.shader = shader
@@ -50,7 +51,13 @@ class Material:
             raise ValueError("Material.ior must be finite and > 0, got %r" % (ior,))
         self.shininess = float(shininess)
         self.ior = float(ior)
+        if texture is not None:
+            from .textures.texture import Texture
+            if not isinstance(texture, Texture):
+                raise ValueError("Material.texture must be a Texture or None, got %r" % (texture,))
+        self.texture = texture
 
     def __repr__(self) -> str:
-        return "Material(%s, specular=%r, shininess=%r, ior=%r, emission=%r)" % (
-            SHADER_NAMES[self.shader], self.specular, self.shininess, self.ior, self.emission)
+        return "Material(%s, specular=%r, shininess=%r, ior=%r, emission=%r, texture=%r)" % (
+            SHADER_NAMES[self.shader], self.specular, self.shininess, self.ior, self.emission,
+            self.texture)

@@ -32,6 +32,7 @@ from .shapes.disk import Disk
 from .shapes.plane import Plane
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
+from .textures import Checker, ImageTexture
 
 
 class _Rows:
@@ -116,6 +117,28 @@ LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
 )
 
+
+@dataclass(frozen=True)
+class TextureKind(_Rows):
+    """A texture: the lecture class (rtfgu/textures/) with an attribute per field (the
+    layout fills ``offset``, the texture's first texel in FlatScene.texels), numba
+    ``texture_<name>(table, row, texels, u, v)`` in rtfgu/kernels/textures.py and WGSL
+    ``fn texture_<name>(row: u32, uv: vec2f) -> vec3f`` in ``<name>.wgsl``, both returning
+    the colour at the shape's (u, v) (scaled by the texture's ``scale`` inside). Every shape
+    kind gives (u, v): numba ``texcoord_<shape>(position, *fields)``, WGSL ``fn
+    texcoord_<shape>`` in texcoord.wgsl (Shape.texcoord in the lecture layer)."""
+
+    name: str
+    cls: type
+    fields: tuple
+
+
+TEXTURES = (
+    TextureKind("image_texture", ImageTexture, (("width", 1), ("height", 1), ("offset", 1),
+                                                ("filter_mode", 1), ("address_mode", 1), ("scale", 1))),
+    TextureKind("checker", Checker, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1))),
+)
+
 SHAPE_BY_NAME = {kind.name: kind for kind in SHAPES}
 SHAPE_IDS = {kind.name: i for i, kind in enumerate(SHAPES)}
 SHADER_BY_ID = {kind.id: kind for kind in SHADERS}
@@ -129,6 +152,13 @@ def shape_kind_of(shape):
             return i, kind
     for i, kind in enumerate(SHAPES):   # a subclass of a registered class packs as its base
         if isinstance(shape, kind.cls):
+            return i, kind
+    return None, None
+
+
+def texture_kind_of(texture):
+    for i, kind in enumerate(TEXTURES):
+        if isinstance(texture, kind.cls):
             return i, kind
     return None, None
 

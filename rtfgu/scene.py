@@ -34,7 +34,11 @@ class Scene:
             hit.dist = ray.tmax
             hit.position = ray(ray.tmax)
             hit.normal = hit_shape.normal_at(hit.position)
-            hit.set_material(hit_shape.color, hit_shape.material)
+            color = hit_shape.color
+            texture = hit_shape.material.texture
+            if texture is not None:      # the texture's colour at the hit replaces the shape's
+                color = texture.color_at(*hit_shape.texcoord(hit.position))
+            hit.set_material(color, hit_shape.material)
         return hit.has_hit
 
     def validate(self) -> None:

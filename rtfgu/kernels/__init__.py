@@ -1,4 +1,4 @@
-# release: solves a01 a02 a03 a04 a05
+# release: solves a01 a02 a03 a04 a05 a07
 """The numba path: the lecture layer's renderer as jitted kernels over the flat layout.
 
 ``render_numba(scene, width, height, precision)`` compiles the scene (rtfgu.layout, which
@@ -23,7 +23,7 @@ from ..shading import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel
+from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel, scene_tuple
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -87,7 +87,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
     bounces = MAX_DEPTH if continues else None
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
-    scene = (flat.materials, flat.shaders, flat.background)
+    scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
                 int(samples[1]))
     if sampler is not None:

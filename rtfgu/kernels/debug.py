@@ -26,7 +26,7 @@ from ..registry import LIGHTS, SHAPES
 from ..shading import MAX_DEPTH
 from .camera import gen_ray
 from .float3 import add, lit, scale
-from .render import RECORD_FIELDS, record_bounce, trace
+from .render import RECORD_FIELDS, record_bounce, scene_tuple, trace
 
 
 @njit(cache=True, error_model="numpy")
@@ -63,7 +63,7 @@ def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:
         shapes += (flat.table(kind.name), flat.index(kind.name))
     lights = tuple(flat.lights[kind.name] for kind in LIGHTS)
     camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
-    scene = (flat.materials, flat.shaders, flat.background)
+    scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, sphere_formula_id(formula))
     if pixel is None:
         rays = np.ascontiguousarray(rays, dtype=flat.dtype).reshape(-1, 8)

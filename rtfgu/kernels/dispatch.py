@@ -31,7 +31,7 @@ import warnings
 from pathlib import Path
 
 from .. import layout
-from ..registry import LIGHTS, SHADERS, SHAPES
+from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
 
 # Formula ids, the same for every kind; a kind without a formula uses its slide formula.
 FORMULAS = ("slide", "robust")
@@ -152,10 +152,32 @@ def _any_hit(kind) -> str:
                        "Is any %s hit in [tmin, tmax)?" % kind.name)
 
 
+def _texcoord(kind) -> str:
+    return _overloaded("texcoord_row_" + kind.name, "table, row, position", "(position[0], position[0])",
+                       "    return texcoord_%s(position, %s)" % (kind.name, _row_args(kind, "table", "row")),
+                       "The texture coordinates (u, v) of row ``row`` of the %ss at ``position``" % kind.name)
+
+
+def _texture_lookup(texture) -> str:
+    return _overloaded("lookup_" + texture.name, "table, row, texels, u, v, fallback", "fallback",
+                       "    return texture_%s(table, row, texels, u, v)" % texture.name,
+                       "The colour of row ``row`` of the %s table at (u, v)" % texture.name)
+
+
 def _normal(kind) -> str:
     return _overloaded("normal_row_" + kind.name, "table, row, position", "position",
                        "    return normal_%s(position, %s)" % (kind.name, _row_args(kind, "table", "row")),
                        "The unit normal of row ``row`` of the %ss at ``position``" % kind.name)
+
+
+def _by_kind(name, row_function, what, default) -> str:
+    """``name(shapes, kind, row, position)``: ``row_function<kind>`` of the kind hit."""
+    return "\n".join([
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+        "def %s(shapes, kind, row, position):" % name,
+        '    """%s of row ``row`` of shape kind ``kind``."""' % what]
+        + ["    if kind == %d:\n        return %s%s(shapes[%d], row, position)" % (k, row_function, kind.name, 2 * k)
+           for k, kind in enumerate(SHAPES)] + ["    return " + default])
 
 
 def _direct(light) -> str:
@@ -176,11 +198,11 @@ def _direct(light) -> str:
         "                n_shadow += 1",
         "                visible = not in_shadow(shapes, position, w_i, eps, dist - eps, formula)",
         "            if visible:",
-        "                f = brdf(shader, mat, normal, w_o, w_i, cos_theta)",
+        "                f = brdf(shader, mat, color, normal, w_o, w_i, cos_theta)",
         "                result = add(result, scale(mul(f, L_i), cos_theta))",
         "    return result, n_shadow"])
     return _overloaded("direct_" + light.name,
-                       "table, shader, mat, surface_point, w_o, shapes, shadows, formula, result",
+                       "table, shader, mat, color, surface_point, w_o, shapes, shadows, formula, result",
                        "result, 0", body,
                        "The light of every %s reflected by the surface, added to ``result``" % light.name,
                        inline="always")
@@ -212,13 +234,17 @@ def source() -> str:
              "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
              "from rtfgu.kernels.lights import %s" % ", ".join("sample_" + l.name for l in LIGHTS),
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
-             "from rtfgu.layout import MAT_COLOR, MAT_EMISSION",
+             "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
+             "from rtfgu.kernels.textures import %s" % ", ".join(
+                 ["texcoord_" + k.name for k in SHAPES] + ["texture_" + t.name for t in TEXTURES]),
              "from rtfgu.shading import SPAWN_EPSILON"]
     for module, names in sorted(imports.items()):
         header.append("from %s import %s" % (module, ", ".join(sorted(names))))
     parts = [header[0] + "\n" + "\n".join(header[1:])]
     for k, kind in enumerate(SHAPES):
-        parts += [_scan(k, kind), _any_hit(kind), _normal(kind)]
+        parts += [_scan(k, kind), _any_hit(kind), _normal(kind), _texcoord(kind)]
+    for texture in TEXTURES:
+        parts.append(_texture_lookup(texture))
 
     calls = []
     for k, kind in enumerate(SHAPES):
@@ -236,38 +262,50 @@ def source() -> str:
         '    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""']
         + ["    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
            % (kind.name, 2 * k) for k, kind in enumerate(SHAPES)] + ["    return False"]))
-    parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def shape_normal(shapes, kind, row, position):",
-        '    """normal_at(position) of row ``row`` of shape kind ``kind``."""']
-        + ["    if kind == %d:\n        return normal_row_%s(shapes[%d], row, position)" % (k, kind.name, 2 * k)
-           for k, kind in enumerate(SHAPES)] + ["    return position"]))
+    parts.append(_by_kind("shape_normal", "normal_row_", "normal_at(position)", "position"))
+    parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
+                          "position[0], position[0]"))
+    # The colour of the surface hit: the material's, or its texture's at the hit.
+    texture_params = ", ".join(t.table for t in TEXTURES)
+    lookups = ["        if texture == %d:\n            return lookup_%s(%s, int(mat[MAT_TEXTURE_ROW]), texels, u, v, color)"
+               % (k, t.name, t.table) for k, t in enumerate(TEXTURES)]
+    parts.append(_overloaded(
+        "surface_color", "texels, %s, shapes, mat, kind, row, position" % texture_params,
+        "load3(mat, MAT_COLOR)",
+        "\n".join(["    color = load3(mat, MAT_COLOR)",
+                   "    texture = int(mat[MAT_TEXTURE])",
+                   "    if texture >= 0:",
+                   "        u, v = shape_texcoord(shapes, kind, row, position)"] + lookups
+                  + ["    return color"]),
+        "The colour of the surface hit: its texture's at the hit (Scene.intersect), else the "
+        "material's; ``texels`` is None in a scene without textures"))
     for light in LIGHTS:
         parts.append(_direct(light))
 
     brdf_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-                  "def brdf(shader, mat, normal, w_o, w_i, cos_theta):",
+                  "def brdf(shader, mat, color, normal, w_o, w_i, cos_theta):",
                   '    """The BRDF term of the shader with id ``shader``."""']
     for shader in SHADERS:
         if shader.brdf:
-            brdf_lines.append("    if shader == %d:\n        return brdf_%s(mat, normal, w_o, w_i, cos_theta)"
+            brdf_lines.append("    if shader == %d:\n        return brdf_%s(mat, color, normal, w_o, w_i, cos_theta)"
                               % (shader.id, shader.brdf_of or shader.name))
-    brdf_lines.append("    return load3(mat, MAT_COLOR)")
+    brdf_lines.append("    return color")
     parts.append("\n".join(brdf_lines))
 
-    light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
+    light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
                    "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
     shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-                   "def shade(shader, mat, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
+                   "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
                    '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',
-                   '    shadow rays). A shader that continues the path exists only when ``bounces`` does."""',
+                   '    shadow rays); ``color`` is the surface\'s (surface_color). A shader that continues',
+                   '    the path exists only when ``bounces`` does."""',
                    "    n_shadow = 0"]
     for shader in SHADERS:
         if not (shader.brdf or shader.continues):
             continue
         body = []
         if shader.brdf:
-            body.append("        result = surface(mat)")
+            body.append("        result = surface(mat, color)")
             body += light_calls
         else:
             body.append("        result = load3(mat, MAT_EMISSION)")
@@ -279,7 +317,7 @@ def source() -> str:
         guard = "bounces is not None and " if shader.continues else ""
         shade_lines.append("    if %sshader == %d:  # %s" % (guard, shader.id, shader.name))
         shade_lines += body
-    shade_lines.append("    return load3(mat, MAT_COLOR), True, r_d, n_shadow")
+    shade_lines.append("    return color, True, r_d, n_shadow")
     parts.append("\n".join(shade_lines))
     return "\n\n\n".join(parts) + "\n"
 
@@ -310,7 +348,8 @@ def kernel_version() -> str:
     digest = hashlib.sha256(source().encode())
     package = Path(__file__).resolve().parent.parent
     files = sorted(Path(__file__).resolve().parent.glob("*.py"))
-    files += [package / name for name in ("layout.py", "registry.py", "shading.py", "material.py", "ray.py")]
+    files += [package / name for name in ("layout.py", "registry.py", "shading.py", "material.py", "ray.py",
+                                          "sampling/random.py")]
     for path in files:
         digest.update(path.name.encode())
         digest.update(path.read_bytes())
@@ -364,3 +403,4 @@ intersect_scene = _generated.intersect_scene
 in_shadow = _generated.in_shadow
 shape_normal = _generated.shape_normal
 shade = _generated.shade
+surface_color = _generated.surface_color

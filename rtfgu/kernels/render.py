@@ -8,7 +8,8 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
     camera    (camera kind, camera row, the camera row in float64 for the tile culling)
     shapes    table, index per registered shape kind; lights: a table per light kind; None
               for a kind the scene lacks (rtfgu.kernels.dispatch)
-    scene     (materials, shaders, background)
+    scene     (materials, shaders, background, texels, a table per texture kind): the
+              texture entries None in a scene without textures (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
     bounces   None when no shader continues a path: that code then compiles to nothing
@@ -28,11 +29,12 @@ from numba.extending import overload
 
 from ..layout import THIN_LENS
 from ..material import BASE_COLOR
+from ..registry import TEXTURES
 from ..sampling.random import LENS_SET, PIXEL_SET
 from ..shading import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
-from .dispatch import intersect_scene, shade, shape_normal
+from .dispatch import intersect_scene, shade, shape_normal, surface_color
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, scale
 from .sampling import concentric_map, pixel_sample
@@ -48,6 +50,15 @@ SECONDARY = 2
 # A row of record_bounce: [origin (3), direction (3), t, scene index, kind, shader,
 # normal (3), colour added (3)].
 RECORD_FIELDS = 16
+
+
+def scene_tuple(flat) -> tuple:
+    """The kernels' ``scene``: materials, shaders, background, then the texels and a table
+    per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture."""
+    if "textures" not in flat.features:
+        return (flat.materials, flat.shaders, flat.background) + (None,) * (1 + len(TEXTURES))
+    tables = tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None for k in TEXTURES)
+    return (flat.materials, flat.shaders, flat.background, flat.texels) + tables
 
 
 @njit(cache=True, error_model="numpy")
@@ -108,7 +119,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     array that receives every bounce (record_bounce). Returns (radiance, shadow rays,
     secondary rays)."""
     origin, direction, tmin, tmax = ray
-    materials, shaders, background = scene
+    materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
     zero = lit(0, tmin)
     result = (zero, zero, zero)
@@ -131,8 +142,10 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
             normal = position  # base_color reads no normal: a flat-colour scene skips normal_at
         else:
             normal = shape_normal(shapes, kind, row, position)
+        mat = materials[idx]
+        surface = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
         color, has_hit, new_direction, shadow_rays = shade(
-            shader, materials[idx], direction, (position, normal), lights, shapes, shadows,
+            shader, mat, surface, direction, (position, normal), lights, shapes, shadows,
             bounces, formula)
         result = add(result, color)
         record_bounce(record, i, (origin, direction), (t, idx, kind), shader, normal, color)

@@ -4,8 +4,9 @@
 
 A shader kind of rtfgu.registry with ``brdf`` adds light through the one light loop
 (``direct_<light>`` in the dispatch module) with its BRDF term
-``brdf_<name>(mat, normal, w_o, w_i, cos_theta)``, the f_r that multiplies L_i (n . w_i);
-the loop starts from ``surface(mat)``, L_e + L_a. A kind that ``continues`` the path gives
+``brdf_<name>(mat, color, normal, w_o, w_i, cos_theta)``, the f_r that multiplies
+L_i (n . w_i); the loop starts from ``surface(mat, color)``, L_e + L_a. ``color`` is the
+surface's colour at the hit: the material's, or its texture's there. A kind that ``continues`` the path gives
 the next direction with ``continue_<name>(mat, r_d, normal)`` (the lecture's
 _continue_path: tmin SPAWN_EPSILON, a fresh tmax). Suffern's Phong is Lambertian plus a
 glossy lobe, and so is ``brdf_phong`` here.
@@ -16,26 +17,26 @@ import math
 
 from numba import njit
 
-from ..layout import MAT_COLOR, MAT_EMISSION, MAT_IOR, MAT_SHININESS, MAT_SPECULAR
+from ..layout import MAT_EMISSION, MAT_IOR, MAT_SHININESS, MAT_SPECULAR
 from ..shading import AMBIENT_FRACTION, DIFFUSE_FRACTION
 from .float3 import add, div, dot, lit, load3, neg, scale, sub
 
 
 @njit(cache=True, error_model="numpy")
-def surface(mat):
+def surface(mat, color):
     """L_e + L_a, with L_a = AMBIENT_FRACTION of the colour: where every light loop starts."""
-    return add(load3(mat, MAT_EMISSION), scale(load3(mat, MAT_COLOR), lit(AMBIENT_FRACTION, mat[0])))
+    return add(load3(mat, MAT_EMISSION), scale(color, lit(AMBIENT_FRACTION, mat[0])))
 
 
 @njit(cache=True, error_model="numpy")
-def brdf_lambertian(mat, normal, w_o, w_i, cos_theta):
+def brdf_lambertian(mat, color, normal, w_o, w_i, cos_theta):
     """rho_d / pi with rho_d = DIFFUSE_FRACTION of the colour (Lambert's cosine law)."""
-    rho_d = scale(load3(mat, MAT_COLOR), lit(DIFFUSE_FRACTION, cos_theta))
+    rho_d = scale(color, lit(DIFFUSE_FRACTION, cos_theta))
     return div(rho_d, lit(math.pi, cos_theta))
 
 
 @njit(cache=True, error_model="numpy")
-def brdf_phong(mat, normal, w_o, w_i, cos_theta):
+def brdf_phong(mat, color, normal, w_o, w_i, cos_theta):
     """rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s, w_r = 2 (n . w_i) n - w_i
     (the normalised Phong lobe, 02562 worksheet 3)."""
     zero = lit(0, cos_theta)
@@ -47,7 +48,7 @@ def brdf_phong(mat, normal, w_o, w_i, cos_theta):
     if zero > cos_r:
         cos_r = zero
     lobe = scale(load3(mat, MAT_SPECULAR), (shininess + two) / (two * pi) * cos_r ** shininess)
-    rho_d = scale(load3(mat, MAT_COLOR), lit(DIFFUSE_FRACTION, cos_theta))
+    rho_d = scale(color, lit(DIFFUSE_FRACTION, cos_theta))
     return add(div(rho_d, pi), lobe)
 
 

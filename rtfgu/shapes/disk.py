@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..float3 import Float3, as_float3
 from ..ray import Ray
 from .plane import Plane
-from .shape import Shape, nonzero_vector, positive
+from .shape import Shape, nonzero_vector, plane_texcoord, positive
 
 
 class Disk(Shape):
@@ -34,3 +34,7 @@ class Disk(Shape):
 
     def normal_at(self, position: Float3) -> Float3:
         return self._plane.normal_at(position)
+
+    def texcoord(self, position: Float3) -> tuple:
+        """The plane's coordinates about the centre (rtfgu.shapes.shape.plane_texcoord)."""
+        return plane_texcoord(position, self.center, self.normal)

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from abc import ABC, abstractmethod
 
-from ..float3 import Float3, as_float3
+from ..float3 import Float3, as_float3, cross, dot, normalize
 from ..material import Material
 from ..ray import Ray
 
@@ -30,6 +30,24 @@ class Shape(ABC):
     @abstractmethod
     def normal_at(self, position: Float3) -> Float3:
         """The unit geometric normal at a point on the surface."""
+
+    def texcoord(self, position: Float3) -> tuple:
+        """The texture coordinates (u, v) of a point on the surface (textures, Suffern ch. 29)."""
+        raise NotImplementedError("%s has no texture coordinates" % type(self).__name__)
+
+
+def plane_texcoord(position: Float3, point: Float3, normal: Float3) -> tuple:
+    """(u, v) on a plane: (p - point) . tangent and (p - point) . binormal, with the binormal
+    the plane's direction closest to +z (+x for a plane facing z) and tangent =
+    binormal x n. A floor (n = +y) gets worksheet 3's tangent (-1, 0, 0), binormal (0, 0, 1)."""
+    n = normalize(normal)
+    binormal = Float3(0.0, 0.0, 1.0) - n * n.z
+    if binormal.length_squared() < 1e-12:
+        binormal = Float3(1.0, 0.0, 0.0) - n * n.x
+    binormal = normalize(binormal)
+    tangent = cross(binormal, n)
+    d = position - point
+    return dot(d, tangent), dot(d, binormal)
 
 
 def positive(value, name: str) -> float:

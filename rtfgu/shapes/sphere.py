@@ -48,3 +48,14 @@ class Sphere(Shape):
         ### BEGIN SOLUTION
         return normalize(position - self.center)
         ### END SOLUTION
+
+    def texcoord(self, position: Float3) -> tuple:
+        """Suffern's SphericalMap (ch. 29): u = phi / 2 pi with phi = atan2(x, z) in [0, 2 pi),
+        v = 1 - theta / pi with theta = acos(y), for (x, y, z) = (p - c) / r."""
+        d = position - self.center
+        y = min(max(d.y / self.radius, -1.0), 1.0)
+        theta = math.acos(y)
+        phi = math.atan2(d.x / self.radius, d.z / self.radius)
+        if phi < 0.0:
+            phi += 2.0 * math.pi
+        return phi / (2.0 * math.pi), 1.0 - theta / math.pi

@@ -30,7 +30,7 @@ from importlib import resources
 import numpy as np
 
 from .. import layout
-from ..registry import LIGHTS, SHADERS, SHAPES
+from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
 from ..renderer import DEFAULT_FORMULAS
 from . import structs
 
@@ -82,6 +82,11 @@ def pieces(features, formula: str = "slide") -> list:
         for kind in _shape_kinds(f):
             chosen = formula if formula in kind.formulas else "slide"
             out.append((kind.wgsl_file, kind.formula_file(chosen)))
+    if trace and "textures" in f:
+        out.append(("texcoord.wgsl", "texcoord.wgsl"))
+        for kind in TEXTURES:
+            if kind.name in f:
+                out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
     if trace and "lights" in f and _brdf_shaders(f):
         out.append(("lights.wgsl", "lights.wgsl"))
         if "shadows" in f:
@@ -112,6 +117,7 @@ def piece_names() -> list:
     names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
     names += ["concentric_map.wgsl"]
     names += [kind.wgsl_file for kind in SHAPES]
+    names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
     return names + ["shade.wgsl", "intersect_scene.wgsl", "main.wgsl"]
@@ -125,7 +131,7 @@ def each_kinds(flat, features, formula):
             continue
         args = ", ".join("rec." + name for name, _ in kind.fields)
         shapes.append({"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper(),
-                       "$index": kind.name + "_index", "$args": args})
+                       "$index": kind.name + "_index", "$args": args, "$KIND": kind.name.upper()})
     lights = [{"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper()}
               for kind in LIGHTS if len(flat.lights[kind.name])]
     shaders, brdfs = [], []
@@ -138,7 +144,9 @@ def each_kinds(flat, features, formula):
         shaders.append({"$ID": kind.name.upper(), "$body": body})
         if kind.brdf:
             brdfs.append({"$ID": kind.name.upper(), "$of": kind.brdf_of or kind.name})
-    return {"shape": shapes, "light": lights, "shader": shaders, "brdf": brdfs}
+    textures = [{"$kind": kind.name, "$ID": str(k)} for k, kind in enumerate(TEXTURES)
+                if kind.name in features]
+    return {"shape": shapes, "light": lights, "shader": shaders, "brdf": brdfs, "texture": textures}
 
 
 # The largest uniform buffer binding WebGPU guarantees (maxUniformBufferBindingSize).
@@ -171,6 +179,11 @@ def binding_data(flat, name: str) -> np.ndarray:
         return getattr(flat, name)
     if name in ("samples", "shuffled"):
         return getattr(flat.sampler, name)
+    if name == "texels":
+        return flat.texels
+    for kind in TEXTURES:
+        if name == kind.table:
+            return flat.textures[kind.name]
     for kind in SHAPES:
         if name == kind.table:
             return flat.table(kind.name)
@@ -313,6 +326,12 @@ def _bindings(flat, features, scene_buffer: str) -> list:
             wanted.append(("materials", "array<Material, NUM_SHAPES>", flat.materials, False))
             wanted.append(("shaders", "array<vec4i, %d>" % (len(_packed_index(flat.shaders)) // 4),
                            flat.shaders, True))
+        if "textures" in features:
+            for kind in TEXTURES:
+                table = flat.textures[kind.name]
+                if len(table):
+                    wanted.append((kind.table, "array<%s, %d>" % (kind.record, len(table)), table, False))
+            wanted.append(("texels", "array<f32, %d>" % len(flat.texels), flat.texels, False))
         if "lights" in features and _brdf_shaders(features):
             for kind in LIGHTS:
                 table = flat.lights[kind.name]
@@ -324,7 +343,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
         size = len(_packed_index(data)) * 4 if is_index else max(data.size, 4) * 4
         if name == "camera":
             kind = "uniform"
-        elif name in ("samples", "shuffled"):   # arrays of 8 and 4 bytes: storage only
+        elif name in ("samples", "shuffled", "texels"):   # arrays of 8 and 4 bytes: storage only
             kind = "storage"
         else:
             kind = scene_buffer if size <= MAX_UNIFORM_BYTES else "storage"

@@ -10,10 +10,21 @@
 // Index arrays (int32) arrive packed four to a vec4i (a uniform array needs a 16-byte
 // stride): entry k is [k / 4][k % 4].
 // #if shapes
-fn set_material(hit: ptr<function, HitInfo>, k: u32)
+fn set_material(hit: ptr<function, HitInfo>, k: u32, kind: i32, row: u32)
 {
     let m = materials[k];
     (*hit).color = m.color;
+    // #if textures
+    // A texture's colour at the hit replaces the shape's (rtfgu.scene.Scene.intersect).
+    if (m.texture >= 0.0) {
+        let uv = shape_texcoord(kind, row, (*hit).position);
+        // #each texture
+        if (i32(m.texture) == $ID) {
+            (*hit).color = texture_$kind(u32(m.texture_row), uv);
+        }
+        // #end
+    }
+    // #endif
     (*hit).shader = shaders[k / 4u][k % 4u];
     (*hit).specular = m.specular;
     (*hit).shininess = m.shininess;
@@ -37,6 +48,8 @@ var<private> hit_shape: i32;
 fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
 {
     var shape = -1;  // place in Scene.shapes of the nearest shape hit so far
+    var kind = -1;   // its kind and row in that kind's table
+    var row = 0u;
     var q = *r;
     q.tmax = next_up((*r).tmax);
     var candidate = *hit;
@@ -50,6 +63,8 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
                 (*r).tmax = candidate.dist;
                 q.tmax = next_up(candidate.dist);
                 shape = index;
+                kind = $KIND;
+                row = i;
             }
         }
     }
@@ -59,7 +74,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     // #endif
     // #if shapes
     if (shape >= 0) {
-        set_material(hit, u32(shape));
+        set_material(hit, u32(shape), kind, row);
     }
     // #endif
     return (*hit).has_hit;

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ..float3 import Float3, as_float3, dot, normalize
 from ..ray import Ray
-from .shape import Shape, nonzero_vector
+from .shape import Shape, nonzero_vector, plane_texcoord
 
 
 class Plane(Shape):
@@ -23,3 +23,7 @@ class Plane(Shape):
         # TODO a03: Plane.normal_at
         #   Return the plane's normal as a unit vector.
         raise NotImplementedError('a03: Plane.normal_at')
+
+    def texcoord(self, position: Float3) -> tuple:
+        """Worksheet 3's plane coordinates (rtfgu.shapes.shape.plane_texcoord)."""
+        return plane_texcoord(position, self.point, self.normal)

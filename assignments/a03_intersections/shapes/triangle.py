@@ -36,3 +36,10 @@ class Triangle(Shape):
         # TODO a03: Triangle.normal_at
         #   Return the triangle's normal n = e0 x e1 as a unit vector.
         raise NotImplementedError('a03: Triangle.normal_at')
+
+    def texcoord(self, position: Float3) -> tuple:
+        """The barycentric (beta, gamma) of the point: p - v0 = beta e0 + gamma e1, so
+        beta = ((p - v0) x e1) . n / (n . n) and gamma = (e0 x (p - v0)) . n / (n . n)."""
+        d = position - self.v0
+        nn = dot(self.n, self.n)
+        return dot(cross(d, self.e1), self.n) / nn, dot(cross(self.e0, d), self.n) / nn

@@ -1,0 +1,54 @@
+// Texture coordinates (u, v) of a point on each shape kind, as Shape.texcoord in the
+// lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap and
+// the triangle's barycentrics. shape_texcoord picks the function of the kind hit.
+// #if plane|disk
+fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
+{
+    let n = normalize(normal);
+    var binormal = vec3f(0.0, 0.0, 1.0) - n * n.z;
+    if (dot(binormal, binormal) < 1e-12) {
+        binormal = vec3f(1.0, 0.0, 0.0) - n * n.x;
+    }
+    binormal = normalize(binormal);
+    let tangent = cross(binormal, n);
+    let d = p - point;
+    return vec2f(dot(d, tangent), dot(d, binormal));
+}
+// #endif
+// #if disk
+fn texcoord_disk(p: vec3f, center: vec3f, normal: vec3f, radius: f32) -> vec2f
+{
+    return texcoord_plane(p, center, normal);
+}
+// #endif
+// #if sphere
+fn texcoord_sphere(p: vec3f, center: vec3f, radius: f32) -> vec2f
+{
+    let d = p - center;
+    let theta = acos(clamp(d.y / radius, -1.0, 1.0));
+    var phi = atan2(d.x / radius, d.z / radius);
+    if (phi < 0.0) {
+        phi += 2.0 * PI;
+    }
+    return vec2f(phi / (2.0 * PI), 1.0 - theta / PI);
+}
+// #endif
+// #if triangle
+fn texcoord_triangle(p: vec3f, v0: vec3f, e0: vec3f, e1: vec3f, n: vec3f) -> vec2f
+{
+    let d = p - v0;
+    let nn = dot(n, n);
+    return vec2f(dot(cross(d, e1), n) / nn, dot(cross(e0, d), n) / nn);
+}
+// #endif
+
+fn shape_texcoord(kind: i32, row: u32, p: vec3f) -> vec2f
+{
+    // #each shape
+    if (kind == $KIND) {
+        let rec = $table[row];
+        return texcoord_$kind(p, $args);
+    }
+    // #end
+    return vec2f(0.0);
+}
