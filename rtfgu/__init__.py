@@ -5,6 +5,7 @@ The lecture layer (pure Python, one class per slide) is importable from here.
 from .cameras import Camera, OrthographicCamera, PinholeCamera
 from .float3 import Float3, cross, dot, normalize
 from .lights import Light, PointLight, sample_point_light
+from .directional_light import Directional
 from .material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Material)
 from .ray import RAY_EPSILON, Ray
@@ -28,7 +29,7 @@ __all__ = [
     "Camera", "OrthographicCamera", "PinholeCamera",
     "Shape", "Scene",
     "Material", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
-    "PointLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
+    "PointLight", "Directional", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "render_passes", "show", "write_png",
     "ThinLens", "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
     "Texture", "ImageTexture", "Checker",

@@ -18,6 +18,7 @@ it, or the next free column. For example
     Sphere      (S, 4)   [center, radius]
     Material    (N, 16)  [color, 0], [specular, shininess], [emission, ior], [texture, texture_row, 0, 0]
     PointLight  (L, 8)   [position, 0], [intensity, 0]
+    Directional (D, 8)   [direction, 0], [intensity, 0]      (the direction as given)
     ImageTexture (X, 8)  [width, height, offset, filter_mode], [address_mode, scale, 0, 0]
     Checker     (C, 8)   [color1, size], [color2, scale]
 
@@ -274,6 +275,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             raise ValueError("Scene.lights[%d]: the flat layout knows %s, got %s"
                              % (j, ", ".join(k.record for k in LIGHTS), type(light).__name__))
         lights[kind.name].append(pack_row(kind.record, light))
+        features.add(kind.name)
     if scene.lights:
         features.add("lights")
     if scene.shadows and scene.lights:

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .directional_light import Directional
 from .lights import PointLight
 from .material import BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
 from .shapes.disk import Disk
@@ -115,6 +116,7 @@ SHADERS = (
 
 LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
+    LightKind("directional", Directional, (("direction", 3), ("intensity", 3))),
 )
 
 

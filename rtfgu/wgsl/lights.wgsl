@@ -7,6 +7,7 @@ struct Light {
     dist: f32
 };
 
+// #if point_light
 // Kepler's inverse square law: L_i = I / ||p - x||^2 for the point light number i.
 fn sample_point_light(pos: vec3f, i: u32) -> Light
 {
@@ -16,3 +17,12 @@ fn sample_point_light(pos: vec3f, i: u32) -> Light
     let L_i = point_lights[i].intensity / dist_squared;
     return Light(L_i, to_light / dist, dist);
 }
+// #endif
+// #if directional
+// A directional light (rtfgu/directional_light.py): the same L_i from -direction everywhere,
+// at no finite distance (FAR, as a fresh ray's tmax).
+fn sample_directional(pos: vec3f, i: u32) -> Light
+{
+    return Light(directionals[i].intensity, -normalize(directionals[i].direction), FAR);
+}
+// #endif
