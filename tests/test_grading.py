@@ -76,6 +76,14 @@ PLANTED = [
     ("a02_half_pixel_offset", "a02", {"2.1": "half-pixel offset", "2.3": "pixels", "2.5": "half-pixel offset"}),
     ("a04_missing_cosine", "a04", {"4.2": "cosine term", "4.4": "pixels", "4.5": "should be"}),
     ("a05_shadow_acne", "a05", {"5.2": "shadow acne", "5.6": "pixels"}),
+    ("a07_no_half_texel_shift", "a07", {"7.4": "half-texel shift", "7.5": "half-texel shift",
+                                        "7.6": "half-texel shift", "7.8": "pixels", "7.9": "half-texel shift",
+                                        "7.10": "half-texel shift", "7.12": "pixels"}),
+    ("a07_clamp_wraps", "a07", {"7.2": "opposite edge", "7.6": "opposite edge", "7.8": "pixels",
+                                "7.10": "opposite edge", "7.11": "pixels"}),
+    ("a07_v_not_flipped", "a07", {"7.3": "upside down", "7.4": "upside down", "7.5": "upside down",
+                                  "7.6": "upside down", "7.7": "pixels", "7.8": "pixels", "7.9": "upside down",
+                                  "7.10": "upside down", "7.11": "pixels", "7.12": "pixels"}),
 ]
 
 

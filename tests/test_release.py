@@ -68,8 +68,14 @@ def test_the_student_package_has_no_solution_line_no_twin_and_no_grader(tmp_path
     assert "raise NotImplementedError" not in (package / "float3.py").read_text()
     assert "raise NotImplementedError('a03: Sphere.intersect_p')" in (package / "shapes" / "sphere.py").read_text()
     # every solution revealed: the twins ship
-    full = build_package(tmp_path / "all", reveal=("a01", "a02", "a03", "a04", "a05", "a06"))
+    full = build_package(tmp_path / "all", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07"))
     assert (full / "kernels" / "intersect.py").is_file() and (full / "robust.py").is_file()
+    # the numba and WGSL paths look textures up as a07 does: they ship once a07 is revealed
+    before = build_package(tmp_path / "a06", reveal=("a01", "a02", "a03", "a04", "a05", "a06"))
+    assert not (before / "kernels").exists() and not (before / "wgsl" / "image_texture.wgsl").exists()
+    assert "raise NotImplementedError('a07: ImageTexture.get_color')" in (
+        before / "textures" / "image_texture.py").read_text()
+    assert (full / "kernels" / "textures.py").is_file() and (full / "wgsl" / "image_texture.wgsl").is_file()
 
 
 def test_the_probes_hold_no_hint_and_import_nothing_of_the_grader():
@@ -93,6 +99,7 @@ TWIN_NAMES = {
     "a04": ("sample_point_light", "lambertian", "brdf_lambertian", "direct_light"),
     "a05": ("in_shadow", "phong", "brdf_phong", "mirror", "transparent", "glossy"),
     "a06": ("intersect_plane", "intersect_sphere", "intersect_triangle"),
+    "a07": ("texel", "_texel", "get_color", "texture_image_texture"),
 }
 TWIN_FOLDERS = ("kernels", "wgsl", "hardcases")
 _DEF = re.compile(r"^\s*(?:def|fn)\s+(?P<name>\w+)\s*\(", re.M)

@@ -7,7 +7,8 @@ markers and this table says which assignment each belongs to and what its TODO t
 
 The order is that of both courses: lecture 01 (Float3, Ray, orthographic camera, plane,
 sphere) and 02562 weeks 1-3 (pinhole camera, triangle, Kepler and Lambert, shadows, Phong,
-mirror, refraction), then the intersection functions again in WGSL.
+mirror, refraction), then the intersection functions again in WGSL, then 02562 worksheet 3's
+texture lookup (Suffern ch. 29).
 """
 from __future__ import annotations
 
@@ -260,8 +261,57 @@ A06 = Assignment(
            "default_flat_colors --backend wgpu` from a folder where your copy of the package comes first."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05)
-ASSIGNMENTS = {a.id: a for a in PYTHON_ASSIGNMENTS + (A06,)}
+A07 = Assignment(
+    id="a07_textures",
+    title="Texture lookup: addressing (repeat, clamp) and nearest and bilinear filtering",
+    blocks=(
+        Block("textures/image_texture.py", "ImageTexture.texel",
+              "Address the indices: \"repeat\" wraps them (i % width, j % height; Python's % by a positive\n"
+              "width is never negative), \"clamp\" holds them at the edge (min(max(i, 0), width - 1), likewise j).\n"
+              "Return Float3 of self.texels[j, i] (row j first: the array is (height, width, 3))."),
+        Block("textures/image_texture.py", "ImageTexture.get_color",
+              "Address (u, v): repeat u = u - floor(u) (likewise v); clamp u, v to [0, 1].\n"
+              "To texel space: x = u * width, y = (1 - v) * height (row 0 is the top, v = 1).\n"
+              "nearest: return texel(floor(x), floor(y)).\n"
+              "bilinear: texel centres sit at whole numbers + 0.5, so x -= 0.5, y -= 0.5; i = floor(x),\n"
+              "j = floor(y), fx = x - i, fy = y - j; mix texel(i, j) and texel(i + 1, j) by fx, likewise\n"
+              "row j + 1, then the two rows by fy. texel does the addressing of i + 1 and j + 1."),
+    ),
+    task=("Write the lookup of an image texture: `texel(i, j)` addresses a texel, wrapping the\n"
+          "indices (repeat) or holding them at the edge (clamp), and `get_color(u, v)` turns texture\n"
+          "coordinates into a colour with the texture's filter: nearest (the texel that holds\n"
+          "(u, v)) or bilinear (the four texels around it, weighted by distance). (u, v) = (0, 0) is\n"
+          "the image's bottom-left corner and (1, 1) its top-right, while the texels are stored row 0\n"
+          "at the top, as in the file: v = 1 is the top row. `self.texels` (height x width x 3),\n"
+          "`self.width`, `self.height`, `self.filter` (\"nearest\" or \"bilinear\") and `self.address`\n"
+          "(\"repeat\" or \"clamp\") are set for you. The shape gives (u, v) and `color_at` scales them\n"
+          "(given); the shader uses the colour in place of the material's own."),
+    formulas=("- Texel centres (02562 worksheet 3, texture filtering; Suffern ch. 29, \"Image Textures\"):\n"
+              "  texel (i, j), column i and row j from the top, has its centre at\n"
+              "  ((i + 0.5) / width, 1 - (j + 0.5) / height); (u, v) = (0, 0) is the bottom-left corner\n"
+              "- Texel space: x = u * width, y = (1 - v) * height\n"
+              "- Addressing (worksheet 3): repeat u' = u - floor(u), i' = i mod width (likewise v, j);\n"
+              "  clamp u' = min(max(u, 0), 1), i' = min(max(i, 0), width - 1)\n"
+              "- Nearest (worksheet 3; Suffern ch. 29): the texel (floor(x), floor(y))\n"
+              "- Bilinear (worksheet 3): x' = x - 0.5, y' = y - 0.5, i = floor(x'), j = floor(y'),\n"
+              "  fx = x' - i, fy = y' - j;\n"
+              "  c = (1 - fy) ((1 - fx) t(i, j) + fx t(i + 1, j)) + fy ((1 - fx) t(i, j + 1) + fx t(i + 1, j + 1))\n"
+              "- sRGB: the image file holds sRGB values; `read_texture` (given) decodes them to linear\n"
+              "  (IEC 61966-2-1: c / 12.92 for c <= 0.04045, else ((c + 0.055) / 1.055)^2.4), so\n"
+              "  `self.texels` are linear and the filters mix linear colours, as every colour in rtfgu"),
+    slides=("02562 worksheet 3: texture mapping a plane, texture addressing (repeat, clamp-to-edge) and "
+            "filtering (nearest, linear)",
+            "Suffern ch. 29: Texture Mapping (\"Image Textures\", the texel of (u, v))"),
+    images=("default_texture_nearest_repeat", "default_texture_nearest_clamp",
+            "default_texture_bilinear_repeat", "default_texture_bilinear_clamp"),
+    extra=("The images are worksheet 3's textured plane (the 02562 default scene, Lambertian with shadows,\n"
+           "texture scale 0.2) with a 16 x 16 image of coloured tiles; they need assignments 1-5 (your own\n"
+           "or the revealed solutions). Compare the four: nearest shows each texel as a square, bilinear\n"
+           "blends them; repeat tiles the plane, clamp stretches the edge texels to the horizon."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07)}
 
 
 def register(assignment: Assignment) -> None:

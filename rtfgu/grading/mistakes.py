@@ -1,6 +1,7 @@
 """Known mistakes, computed on the staff side from a test's inputs: the numbers a student's
 code gives when it errs in a way the hints name (the sphere's t with b^2 + 4ac, with a = 1,
-the far root; Lambert's law without its cosine). They are solution maths, so this module is
+the far root; Lambert's law without its cosine; a texture lookup with v not flipped or
+without bilinear's half-texel shift). They are solution maths, so this module is
 never shipped: ``write_known`` stores the numbers per case in
 ``reference/<assignment>/known.json`` and a hint only compares numbers with them (it gets
 them as ``inputs["known"]``).
@@ -55,6 +56,64 @@ def lambert(inputs: dict) -> dict:
 def kepler(inputs: dict) -> dict:
     """The distance from the sampled point to the light."""
     return {"dist": float(math.dist(inputs["p"], inputs["x"]))}
+
+
+def _texel(texels, i, j, address):
+    """Texel column i, row j from the top of ``texels`` (rows of [r, g, b]), addressed."""
+    height, width = len(texels), len(texels[0])
+    if address == "repeat":
+        i, j = i % width, j % height
+    else:
+        i, j = min(max(i, 0), width - 1), min(max(j, 0), height - 1)
+    return [float(c) for c in texels[j][i]]
+
+
+def _lookup(texels, u, v, filter, address, texel_address=None, shift=0.5, flip=True, nearest=math.floor):
+    """Worksheet 3's lookup, with the parts a known mistake changes as parameters: the address
+    mode of the texel indices, the half-texel shift of bilinear, the flip of v (row 0 at v = 1)
+    and how nearest picks its texel."""
+    height, width = len(texels), len(texels[0])
+    if address == "repeat":
+        u, v = u - math.floor(u), v - math.floor(v)
+    else:
+        u, v = min(max(u, 0.0), 1.0), min(max(v, 0.0), 1.0)
+    texel_address = texel_address or address
+    x = u * width
+    y = (1.0 - v) * height if flip else v * height
+    if filter == "nearest":
+        return _texel(texels, int(nearest(x)), int(nearest(y)), texel_address)
+    x, y = x - shift, y - shift
+    i, j = math.floor(x), math.floor(y)
+    fx, fy = x - i, y - j
+    corners = [_texel(texels, i + a, j + b, texel_address) for b in (0, 1) for a in (0, 1)]
+    weights = ((1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy)
+    return [float(sum(w * c[k] for w, c in zip(weights, corners))) for k in range(3)]
+
+
+def texture(inputs: dict) -> dict:
+    """An a07 case: for texel(i, j) the texel under the other address mode and counted from
+    the bottom row; for get_color(u, v) the colour with v not flipped, without the half-texel
+    shift (bilinear), rounded to the nearest texel index instead of floored (nearest), and
+    with the other address mode (clamp: the indices wrapped, or u, v and the indices
+    wrapped; repeat: clamped)."""
+    texels, address = inputs["texels"], inputs["address"]
+    other = "clamp" if address == "repeat" else "repeat"
+    if "i" in inputs:
+        i, j = inputs["i"], inputs["j"]
+        return {"other_address": _texel(texels, i, j, other),
+                "row_from_bottom": _texel(texels, i, len(texels) - 1 - j, address)}
+    args = (texels, inputs["u"], inputs["v"], inputs["filter"])
+    known = {"v_not_flipped": _lookup(*args, address, flip=False)}
+    if inputs["filter"] == "bilinear":
+        known["no_half_texel_shift"] = _lookup(*args, address, shift=0.0)
+    else:
+        known["nearest_rounds"] = _lookup(*args, address, nearest=lambda x: math.floor(x + 0.5))
+    if address == "clamp":
+        known["clamp_wraps"] = _lookup(*args, address, texel_address="repeat")
+        known["clamp_is_repeat"] = _lookup(*args, "repeat")
+    else:
+        known["repeat_clamps"] = _lookup(*args, "clamp")
+    return known
 
 
 def known_for(check, observation: dict):

@@ -17,7 +17,7 @@ import os
 import sys
 
 SUBMODULES = ("float3", "ray", "cameras", "shapes", "material", "lights", "shading", "scene",
-              "renderer", "image", "scenes")
+              "renderer", "image", "scenes", "textures")
 HERE = os.path.dirname(os.path.abspath(__file__))
 PACKAGE_NAME = os.path.basename(HERE)
 
