@@ -8,7 +8,9 @@ edges belong to the triangle).
 """
 from __future__ import annotations
 
-from ..float3 import Float3, as_float3
+import math
+
+from ..float3 import Float3, as_float3, normalize
 from ..ray import Ray
 from .plane import Plane
 from .shape import Shape, nonzero_vector, plane_texcoord, positive
@@ -34,6 +36,13 @@ class Disk(Shape):
 
     def normal_at(self, position: Float3) -> Float3:
         return self._plane.normal_at(position)
+
+    def bounds(self):
+        """The disk's exact box: along axis a it reaches radius sqrt(1 - n_a^2) from the centre."""
+        from ..accelerators.bbox import padded
+        n = normalize(self.normal)
+        return padded(self.center, Float3(*(self.radius * math.sqrt(max(0.0, 1.0 - n[a] * n[a]))
+                                            for a in range(3))))
 
     def texcoord(self, position: Float3) -> tuple:
         """The plane's coordinates about the centre (rtfgu.shapes.shape.plane_texcoord)."""

@@ -31,6 +31,11 @@ class Shape(ABC):
     def normal_at(self, position: Float3) -> Float3:
         """The unit geometric normal at a point on the surface."""
 
+    def bounds(self):
+        """The shape's axis-aligned bounding box (rtfgu.accelerators.BBox), or None for a
+        shape without one (a plane): what a BVH holds."""
+        return None
+
     def texcoord(self, position: Float3) -> tuple:
         """The texture coordinates (u, v) of a point on the surface (textures, Suffern ch. 29)."""
         raise NotImplementedError("%s has no texture coordinates" % type(self).__name__)

@@ -49,6 +49,10 @@ class Sphere(Shape):
         return normalize(position - self.center)
         ### END SOLUTION
 
+    def bounds(self):
+        from ..accelerators.bbox import padded
+        return padded(self.center, Float3(self.radius))
+
     def texcoord(self, position: Float3) -> tuple:
         """Suffern's SphericalMap (ch. 29): u = phi / 2 pi with phi = atan2(x, z) in [0, 2 pi),
         v = 1 - theta / pi with theta = acos(y), for (x, y, z) = (p - c) / r."""

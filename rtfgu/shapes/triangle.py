@@ -48,6 +48,10 @@ class Triangle(Shape):
         return normalize(self.n)
         ### END SOLUTION
 
+    def bounds(self):
+        from ..accelerators.bbox import BBox
+        return BBox.of_points((self.v0, self.v1, self.v2))
+
     def texcoord(self, position: Float3) -> tuple:
         """The barycentric (beta, gamma) of the point: p - v0 = beta e0 + gamma e1, so
         beta = ((p - v0) x e1) . n / (n . n) and gamma = (e0 x (p - v0)) . n / (n . n)."""
