@@ -1,5 +1,6 @@
 """``make bench``: speed and error of every rendering path on a few scenes, against the
 lecture layer; prints a table, writes docs/bench.md and the plot docs/bench_speed_error.png.
+Its last section, the samplers' error against render time, comes from benchmarks/sampling.py.
 A script, not a test: nothing is asserted.
 
 Rows are scene x path, a path being backend x precision x sphere formula: the reference
@@ -486,6 +487,14 @@ def main(argv=None):
     except Exception as error:
         hard_md = "## Hard cases\n\n(The hard-case section failed: %s)\n" % error
 
+    import sampling
+    try:
+        sampling_md = sampling.sampling_section(out.parent / "bench_sampling.png", args.quick,
+                                                not args.no_wgpu, log)
+    except Exception as error:
+        sampling_md = "%s\n## Sampling\n\n(The sampling section failed: %s)\n%s\n" % (
+            sampling.START, error, sampling.END)
+
     versions = "Python %s, numpy %s, numba %s (%d threads), wgpu %s" % (
         platform.python_version(), np.__version__, numba.__version__, numba.get_num_threads(),
         version("wgpu"))
@@ -533,6 +542,8 @@ def main(argv=None):
         *(checks or ["- not measured at these sizes (--quick)"]),
         "",
         hard_md or "",
+        "",
+        sampling_md,
     ])
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(text)
