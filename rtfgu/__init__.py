@@ -16,6 +16,8 @@ from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Samp
 from .scene import Scene
 from .shading import HitInfo, shade
 from .shapes import Shape
+from .shapes.mesh import Mesh
+from .obj import load_obj
 from .textures import Checker, ImageTexture, Texture
 from .image import write_png
 from .registry import SHAPES as _SHAPES
@@ -27,7 +29,7 @@ globals().update({_kind.cls.__name__: _kind.cls for _kind in _SHAPES})
 __all__ = [
     "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON",
     "Camera", "OrthographicCamera", "PinholeCamera",
-    "Shape", "Scene",
+    "Shape", "Mesh", "load_obj", "Scene",
     "Material", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
     "PointLight", "Directional", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "render_passes", "show", "write_png",

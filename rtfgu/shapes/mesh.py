@@ -1,0 +1,217 @@
+"""Triangle meshes (Suffern ch. 23, "Triangle Meshes"): a ``Mesh`` holds the vertices, the
+vertex normals and the faces once, and each face is a ``MeshTriangle`` that refers to its
+three vertices by index.
+
+Suffern's two kinds of mesh triangle differ only in their normal:
+
+* ``FlatMeshTriangle``: the geometric normal (v1 - v0) x (v2 - v0), normalised, the same
+  over the whole face (as ``Triangle``);
+* ``SmoothMeshTriangle``: the vertex normals interpolated with the hit's barycentric
+  coordinates (Suffern's ``interpolate_normal``),
+  n = normalize((1 - beta - gamma) n0 + beta n1 + gamma n2).
+
+Both are intersected by the 02562 ray-triangle test of ``Triangle`` (rtfgu/shapes/triangle.py):
+a mesh triangle holds a ``Triangle`` through its three vertices and asks it, so a mesh
+triangle is hit exactly where ``Triangle`` is, ``intersect_p`` shrinks ``ray.tmax`` the same
+way, and ``texcoord`` gives the same barycentric (beta, gamma).
+
+    mesh = Mesh(vertices, faces, color)            # vertices (n, 3), faces (m, 3) indices
+    scene.shapes += mesh.triangles()               # one Shape per face
+
+A mesh triangle is a lecture-layer shape only: the numba and WGSL paths do not know it yet,
+and ``rtfgu.layout`` refuses a scene that holds one, naming the shape.
+"""
+from __future__ import annotations
+
+from abc import abstractmethod
+
+import numpy as np
+
+from ..float3 import Float3, normalize
+from ..material import Material
+from ..ray import Ray
+from .shape import Shape
+from .triangle import Triangle
+
+
+class Mesh:
+    """Suffern's ``Mesh``: the shared data of a triangle mesh.
+
+    vertices  (n, 3) floats, every one finite.
+    faces     (m, 3) integer indices into ``vertices`` (0-based); a face's front is where
+              (v1 - v0) x (v2 - v0) points, as for ``Triangle``. No face may span zero area.
+    color     one colour for every face, or (m, 3): a colour per face.
+    normals   None (flat shading: ``FlatMeshTriangle``) or (n, 3) vertex normals, non-zero
+              and finite, stored normalised (smooth shading: ``SmoothMeshTriangle``).
+    material  None (``Material()``), one Material for every face, or a sequence of m.
+
+    Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (m).
+    Bad input is a ValueError naming the field and, for a face, its number.
+    """
+
+    def __init__(self, vertices, faces, color, normals=None, material=None):
+        self.vertices = _rows_of_three(vertices, "Mesh.vertices", np.float64)
+        self.faces = _face_indices(faces, len(self.vertices))
+        self.normals = None if normals is None else _unit_normals(normals, len(self.vertices))
+        m = len(self.faces)
+        self.colors = _per_face_colors(color, m)
+        self.materials = _per_face_materials(material, m)
+        _refuse_zero_area(self.vertices, self.faces)
+
+    @property
+    def num_vertices(self) -> int:
+        return len(self.vertices)
+
+    @property
+    def num_triangles(self) -> int:
+        return len(self.faces)
+
+    def triangles(self) -> list:
+        """A ``SmoothMeshTriangle`` per face if the mesh has vertex normals, otherwise a
+        ``FlatMeshTriangle`` per face, in the order of ``faces``."""
+        kind = FlatMeshTriangle if self.normals is None else SmoothMeshTriangle
+        return [kind(self, face) for face in range(len(self.faces))]
+
+
+class MeshTriangle(Shape):
+    """Face ``face`` of ``mesh``: indices ``index0``, ``index1``, ``index2`` into the mesh's
+    vertices (Suffern's ``MeshTriangle``), its colour and material those of the face."""
+
+    def __init__(self, mesh: Mesh, face: int):
+        super().__init__(mesh.colors[face], mesh.materials[face])
+        self.mesh = mesh
+        self.face = face
+        self.index0, self.index1, self.index2 = (int(i) for i in mesh.faces[face])
+        v0, v1, v2 = (mesh.vertices[i] for i in (self.index0, self.index1, self.index2))
+        try:
+            self._triangle = Triangle(v0, v1, v2, self.color, self.material)
+        except ValueError as error:
+            raise ValueError("Mesh.faces[%d]: %s" % (face, error)) from None
+
+    def intersect_p(self, ray: Ray) -> bool:
+        return self._triangle.intersect_p(ray)
+
+    @abstractmethod
+    def normal_at(self, position: Float3) -> Float3:
+        """The unit normal at a point of the face (flat or interpolated)."""
+
+    def texcoord(self, position: Float3) -> tuple:
+        """The barycentric (beta, gamma) of the point, as ``Triangle.texcoord``."""
+        return self._triangle.texcoord(position)
+
+
+class FlatMeshTriangle(MeshTriangle):
+    """Suffern's ``FlatMeshTriangle``: one normal for the whole face, (v1 - v0) x (v2 - v0)."""
+
+    def normal_at(self, position: Float3) -> Float3:
+        return self._triangle.normal_at(position)
+
+
+class SmoothMeshTriangle(MeshTriangle):
+    """Suffern's ``SmoothMeshTriangle``: the vertex normals interpolated with the point's
+    barycentric coordinates, n = normalize((1 - beta - gamma) n0 + beta n1 + gamma n2).
+
+    At a vertex the result is that vertex's normal. Where the interpolation cancels to the
+    zero vector (vertex normals pointing against each other) the face's geometric normal is
+    returned, so that the normal is always a unit vector."""
+
+    def __init__(self, mesh: Mesh, face: int):
+        super().__init__(mesh, face)
+        if mesh.normals is None:
+            raise ValueError("SmoothMeshTriangle needs a Mesh with normals")
+        self.n0, self.n1, self.n2 = (Float3(*mesh.normals[i])
+                                     for i in (self.index0, self.index1, self.index2))
+
+    def normal_at(self, position: Float3) -> Float3:
+        beta, gamma = self.texcoord(position)
+        n = self.n0 * (1.0 - beta - gamma) + self.n1 * beta + self.n2 * gamma
+        if n.length_squared() == 0.0:
+            return self._triangle.normal_at(position)
+        return normalize(n)
+
+
+def _rows_of_three(value, name: str, dtype) -> np.ndarray:
+    try:
+        array = np.asarray(value, dtype=dtype)
+    except (TypeError, ValueError):
+        raise ValueError("%s must be an (n, 3) array of numbers" % name) from None
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError("%s must have shape (n, 3), got %s" % (name, array.shape))
+    if len(array) == 0:
+        raise ValueError("%s is empty" % name)
+    bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
+    if len(bad):
+        raise ValueError("%s[%d] must be finite, got %s" % (name, bad[0], tuple(array[bad[0]])))
+    return array
+
+
+def _face_indices(faces, num_vertices: int) -> np.ndarray:
+    array = np.asarray(faces)
+    if array.ndim != 2 or array.shape[1] != 3:
+        raise ValueError("Mesh.faces must have shape (m, 3), got %s" % (array.shape,))
+    if len(array) == 0:
+        raise ValueError("Mesh.faces is empty: a mesh needs at least one triangle")
+    if not np.issubdtype(array.dtype, np.integer):
+        raise ValueError("Mesh.faces must hold integer vertex indices, got %s" % array.dtype)
+    bad = np.flatnonzero(((array < 0) | (array >= num_vertices)).any(axis=1))
+    if len(bad):
+        raise ValueError("Mesh.faces[%d] = %s refers to a vertex outside 0..%d"
+                         % (bad[0], tuple(int(i) for i in array[bad[0]]), num_vertices - 1))
+    return array.astype(np.int64)
+
+
+def _unit_normals(normals, num_vertices: int) -> np.ndarray:
+    array = _rows_of_three(normals, "Mesh.normals", np.float64)
+    if len(array) != num_vertices:
+        raise ValueError("Mesh.normals must have one row per vertex (%d), got %d"
+                         % (num_vertices, len(array)))
+    length = np.sqrt((array * array).sum(axis=1))
+    bad = np.flatnonzero(length == 0.0)
+    if len(bad):
+        raise ValueError("Mesh.normals[%d] is the zero vector" % bad[0])
+    return array / length[:, None]
+
+
+def _per_face_colors(color, m: int) -> np.ndarray:
+    array = np.asarray(color, dtype=np.float64) if not isinstance(color, Float3) else \
+        np.array([color.x, color.y, color.z])
+    if array.shape == (3,):
+        array = np.repeat(array[None, :], m, axis=0)
+    elif array.shape != (m, 3):
+        raise ValueError("Mesh.color must be one colour or one per face (%d, 3), got shape %s"
+                         % (m, array.shape))
+    bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
+    if len(bad):
+        raise ValueError("Mesh.color[%d] must be finite, got %s" % (bad[0], tuple(array[bad[0]])))
+    return array
+
+
+def _per_face_materials(material, m: int) -> list:
+    if material is None or isinstance(material, Material):
+        return [Material() if material is None else material] * m
+    materials = list(material)
+    if len(materials) != m:
+        raise ValueError("Mesh.material must be one Material or one per face (%d), got %d"
+                         % (m, len(materials)))
+    for i, each in enumerate(materials):
+        if not isinstance(each, Material):
+            raise ValueError("Mesh.material[%d] must be a Material, got %r" % (i, each))
+    return materials
+
+
+def zero_area_faces(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
+    """The numbers of the faces whose n = (v1 - v0) x (v2 - v0) has n . n == 0, the test
+    ``Triangle`` refuses a triangle by (the same products, so both agree)."""
+    v0, v1, v2 = vertices[faces[:, 0]], vertices[faces[:, 1]], vertices[faces[:, 2]]
+    e0, e1 = v1 - v0, v2 - v0
+    n = np.stack([e0[:, 1] * e1[:, 2] - e0[:, 2] * e1[:, 1],
+                  e0[:, 2] * e1[:, 0] - e0[:, 0] * e1[:, 2],
+                  e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]], axis=1)
+    return np.flatnonzero(n[:, 0] * n[:, 0] + n[:, 1] * n[:, 1] + n[:, 2] * n[:, 2] == 0.0)
+
+
+def _refuse_zero_area(vertices: np.ndarray, faces: np.ndarray) -> None:
+    bad = zero_area_faces(vertices, faces)
+    if len(bad):
+        raise ValueError("Mesh.faces[%d] = %s spans zero area (collinear or repeated vertices)"
+                         % (bad[0], tuple(int(i) for i in faces[bad[0]])))
