@@ -223,6 +223,13 @@ def test_no_twin_no_hidden_probe_no_hidden_reference_and_no_solving_hint_in_the_
         assert n in names, n
     setup = (release / "setup.cfg").read_text()
     assert "pytest" in setup and "mpmath" not in setup and "numba" not in setup   # numba: its path is left out
+    # Every other runtime dependency and data file of the staff package (textures' images, meshes).
+    import configparser
+    staff = configparser.ConfigParser()
+    staff.read(Path(__file__).resolve().parent.parent / "setup.cfg")
+    for requirement in staff["options"]["install_requires"].split():
+        assert requirement.startswith("numba") or requirement in setup, requirement
+    assert staff["options.package_data"]["rtfgu"].strip() in setup
     makefile = (release / "Makefile").read_text()
     for target in ("check:", "render:", "test:"):
         assert target in makefile

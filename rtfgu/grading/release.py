@@ -262,7 +262,7 @@ install_requires =
 include = rtfgu, rtfgu.*, rtfgu_checker, rtfgu_checker.*
 
 [options.package_data]
-rtfgu = wgsl/*.wgsl
+rtfgu = %(package_data)s
 rtfgu_checker = reference/*/*
 
 [options.extras_require]
@@ -274,6 +274,17 @@ testpaths = tests
 addopts = -ra
 """
 
+
+
+def _staff_requirements(package_dir) -> tuple:
+    """The staff setup.cfg's runtime dependencies and the package's data files, so that a
+    release installs what the package it carries needs (textures' images, meshes, trimesh)."""
+    import configparser
+
+    config = configparser.ConfigParser()
+    config.read(Path(package_dir).parent / "setup.cfg")
+    requires = [line.strip() for line in config["options"]["install_requires"].splitlines() if line.strip()]
+    return requires, config["options.package_data"]["rtfgu"].strip()
 
 def _student_readme(reveal, assignments) -> str:
     ids = ", ".join(sorted(get_assignment(r).short for r in reveal)) or "none"
@@ -335,13 +346,14 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
         written.append(target)
-    requires = ["numpy>=1.24", "Pillow>=10", "wgpu>=0.19"]
-    if (package / "kernels").is_dir():
-        requires.insert(1, "numba>=0.59")
+    requires, package_data = _staff_requirements(package_dir)
+    if not (package / "kernels").is_dir():
+        requires = [r for r in requires if not r.startswith("numba")]
     extra = {
         "README.md": _student_readme(reveal, list(ASSIGNMENTS.values())),
         "Makefile": STUDENT_MAKEFILE,
-        "setup.cfg": STUDENT_SETUP % {"requires": "\n".join("    " + r for r in requires)},
+        "setup.cfg": STUDENT_SETUP % {"requires": "\n".join("    " + r for r in requires),
+                                      "package_data": package_data},
         "pyproject.toml": (Path(package_dir).parent / "pyproject.toml").read_text(),
         "tests/test_visible.py": STUDENT_TEST,
         "assignments/README.md": index_readme(),
