@@ -210,3 +210,24 @@ def test_any_order_inside_the_leaves_gives_the_loops_hit():
         for o, d in rays:
             a, b = Ray(o, d, 0.0, math.inf), Ray(o, d, 0.0, math.inf)
             assert (bvh.intersect(b), b.tmax) == (loop_hit(shapes, a), a.tmax)
+
+
+def test_the_bvh_over_the_bunny_finds_the_loops_hits():
+    """A real mesh: 3674 triangles sharing edges and vertices."""
+    import rtfgu
+    from rtfgu.obj import mesh_path
+
+    triangles = rtfgu.load_obj(mesh_path("bunny.obj")).triangles()
+    bvh = BVH(triangles)
+    assert bvh.depth() < 30
+    rng = random.Random(1)
+    box = bvh.root.bbox
+    hits = 0
+    for _ in range(60):
+        o = Float3(*(rng.uniform(box.p0[a] - 0.1, box.p1[a] + 0.1) for a in range(3)))
+        target = Float3(*(rng.uniform(box.p0[a], box.p1[a]) for a in range(3)))
+        a, b = Ray(o, target - o, 0.0, math.inf), Ray(o, target - o, 0.0, math.inf)
+        want = loop_hit(triangles, a)
+        assert (bvh.intersect(b), b.tmax) == (want, a.tmax)
+        hits += want >= 0
+    assert hits > 20

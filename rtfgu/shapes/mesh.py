@@ -95,6 +95,9 @@ class MeshTriangle(Shape):
     def normal_at(self, position: Float3) -> Float3:
         """The unit normal at a point of the face (flat or interpolated)."""
 
+    def bounds(self):
+        return self._triangle.bounds()
+
     def texcoord(self, position: Float3) -> tuple:
         """The barycentric (beta, gamma) of the point, as ``Triangle.texcoord``."""
         return self._triangle.texcoord(position)
