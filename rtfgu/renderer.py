@@ -16,6 +16,7 @@ from .float3 import Float3
 from .ray import Ray
 from .sampling import Jittered, NRooks, concentric_map
 from .sampling.random import LENS_SET, check_seed
+from .sampling.sampler import sampler_of
 from .shading import MAX_DEPTH, HitInfo, shade
 
 BACKENDS = ("reference", "numba", "wgpu")
@@ -115,7 +116,7 @@ def pixel_sampler(scene, spp):
             raise ValueError("spp: %s" % error) from None
     if spp == 1:
         return None
-    return Jittered(spp) if math.isqrt(spp) ** 2 == spp else NRooks(spp)
+    return sampler_of(Jittered if math.isqrt(spp) ** 2 == spp else NRooks, spp)
 
 
 def check_size(width, height) -> None:

@@ -177,3 +177,17 @@ def test_show_displays_once_and_updates_per_pass(monkeypatch):
     image = rtfgu.show(dof_scene(), W, H, backend="numba", spp=9, passes=3)
     assert calls == [("display", (W, H), True), ("update", (W, H)), ("update", (W, H))]
     assert np.array_equal(image, render(dof_scene(), W, H, "numba", spp=9))
+
+
+def test_a_sampler_asked_for_again_is_made_once():
+    """spp=N makes the sets of the scene's kind once; the next render, pass or notebook
+    refresh reuses them (making them is pure Python)."""
+    from rtfgu.renderer import pixel_sampler
+
+    scene = SCENES["default_antialiasing_4"]()
+    first, again = pixel_sampler(scene, 64), pixel_sampler(SCENES["default_antialiasing_4"](), 64)
+    assert first is again and type(first) is type(scene.sampler) and first.num_samples == 64
+    assert pixel_sampler(scene, 36) is not first
+    plain = SCENES["default_lambertian"]()
+    assert pixel_sampler(plain, 16) is pixel_sampler(plain, 16)
+    assert type(pixel_sampler(plain, 5)).__name__ == "NRooks"

@@ -14,6 +14,7 @@ rtfgu/sampling/maps.py.
 """
 from __future__ import annotations
 
+import functools
 import math
 from abc import ABC, abstractmethod
 
@@ -89,9 +90,18 @@ class Sampler(ABC):
         return hemisphere_map(*self.sample_unit_square(pixel, index, seed, dimension), e)
 
     def with_num_samples(self, num_samples: int) -> "Sampler":
-        """The same kind of sampler with another number of samples (render(..., spp=N))."""
-        return type(self)(num_samples, self.num_sets, self.seed)
+        """The same kind of sampler with another number of samples (render(..., spp=N)),
+        made once per kind, count, number of sets and seed (sampler_of)."""
+        return sampler_of(type(self), num_samples, self.num_sets, self.seed)
 
     def __repr__(self) -> str:
         return "%s(%d, num_sets=%d, seed=%d)" % (type(self).__name__, self.num_samples,
                                                  self.num_sets, self.seed)
+
+
+@functools.lru_cache(maxsize=32)
+def sampler_of(cls, num_samples: int, num_sets: int = 83, seed: int = 0) -> "Sampler":
+    """``cls(num_samples, num_sets, seed)``, kept for the next render that asks for it:
+    making the sets is pure Python (Suffern's loops) and a progressive render or a notebook
+    asks for the same sampler pass after pass. Rendering reads a sampler and never changes it."""
+    return cls(num_samples, num_sets, seed)
