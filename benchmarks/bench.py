@@ -1,6 +1,7 @@
 """``make bench``: speed and error of every rendering path on a few scenes, against the
 lecture layer; prints a table, writes docs/bench.md and the plot docs/bench_speed_error.png.
-Its last section, the samplers' error against render time, comes from benchmarks/sampling.py.
+Its last sections come from benchmarks/sampling.py (the samplers' error against render
+time) and benchmarks/meshes.py (the numba BVH over meshes against Embree and Mitsuba 3).
 A script, not a test: nothing is asserted.
 
 Rows are scene x path, a path being backend x precision x sphere formula: the reference
@@ -495,6 +496,13 @@ def main(argv=None):
         sampling_md = "%s\n## Sampling\n\n(The sampling section failed: %s)\n%s\n" % (
             sampling.START, error, sampling.END)
 
+    import meshes
+    try:
+        meshes_md = meshes.meshes_section(out.parent / "bench_meshes.png", args.quick, log)
+    except Exception as error:
+        meshes_md = "%s\n## Meshes and the BVH\n\n(The mesh section failed: %s)\n%s\n" % (
+            meshes.START, error, meshes.END)
+
     versions = "Python %s, numpy %s, numba %s (%d threads), wgpu %s" % (
         platform.python_version(), np.__version__, numba.__version__, numba.get_num_threads(),
         version("wgpu"))
@@ -544,6 +552,7 @@ def main(argv=None):
         hard_md or "",
         "",
         sampling_md,
+        meshes_md,
     ])
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(text)

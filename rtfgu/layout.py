@@ -22,6 +22,11 @@ it, or the next free column. For example
     ImageTexture (X, 8)  [width, height, offset, filter_mode], [address_mode, scale, 0, 0]
     Checker     (C, 8)   [color1, size], [color2, scale]
 
+Mesh triangles (the registry's ``bvh`` kind) are laid out as a FlatMesh instead: the vertices
+of every mesh once, a row per face ``[i0, i1, i2, scene index]`` (int32) in the order of
+the leaves of the scene's BVH (rtfgu.accelerators.flat_bvh), and the vertex normals when a
+mesh is smooth. ``shapes["mesh"]`` is (faces, their scene indices).
+
 A shape table comes with an int32 index: each row's place in Scene.shapes, which is also
 its material row (and decides ties: the earlier shape wins). ``shaders`` holds each
 shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds every image texture's
@@ -30,7 +35,9 @@ is its first texel).
 """
 from __future__ import annotations
 
+import hashlib
 import math
+import weakref
 from types import SimpleNamespace
 from dataclasses import dataclass, field
 
@@ -38,7 +45,7 @@ import numpy as np
 
 from .cameras import OrthographicCamera, PinholeCamera, ThinLens
 from .ray import RAY_EPSILON
-from .registry import (LIGHTS, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
+from .registry import (LIGHTS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
                        shape_kind_of, texture_kind_of)
 
 DTYPES = {"float64": np.float64, "float32": np.float32}
@@ -81,7 +88,7 @@ CAMERA_WIDTH = CAMERA_ROWS * 4
 
 # Every row as a record: name -> (row width, ((field, components, column), ...)). The WGSL
 # structs are generated from these records (rtfgu/wgsl/structs.py).
-RECORDS = {kind.record: pack_fields(kind.fields) for kind in SHAPES + LIGHTS + TEXTURES}
+RECORDS = {kind.record: pack_fields(kind.fields) for kind in ROW_SHAPES + LIGHTS + TEXTURES}
 RECORDS["Material"] = pack_fields(MATERIAL_FIELDS)
 for _name, _fields in CAMERA_FIELDS.items():
     RECORDS[_name] = (CAMERA_WIDTH, pack_fields(_fields)[1])
@@ -106,6 +113,7 @@ PLANE = SHAPE_IDS["plane"]
 TRIANGLE = SHAPE_IDS["triangle"]
 SPHERE = SHAPE_IDS["sphere"]
 DISK = SHAPE_IDS["disk"]
+MESH = SHAPE_IDS["mesh"]
 
 ORTHOGRAPHIC = 0
 PINHOLE = 1
@@ -153,6 +161,27 @@ FAR = 1.0e30
 
 
 @dataclass
+class FlatMesh:
+    """Every mesh triangle of a scene: ``vertices`` (V, 3) in the scene's float type, each
+    mesh's once; ``faces`` (F, 4) int32 [i0, i1, i2, scene index] in the BVH's leaf order;
+    ``normals`` (V, 3) vertex normals (zero for a flat mesh's vertices) or None when every
+    mesh is flat; ``bvh`` the FlatBVH over the faces (its build_seconds: 0 when it came from
+    the scene's cache)."""
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    normals: np.ndarray
+    bvh: object
+    build_seconds: float = 0.0
+
+    @property
+    def nbytes(self) -> int:
+        """The bytes of the BVH and the triangle data (vertices, faces, normals)."""
+        return self.vertices.nbytes + self.faces.nbytes + self.bvh.nbytes + (
+            0 if self.normals is None else self.normals.nbytes)
+
+
+@dataclass
 class FlatScene:
     """A scene as flat arrays, in one float dtype. ``shapes`` maps every registered shape
     kind's name to (table, index), empty for a kind the scene lacks; ``lights`` every light
@@ -176,6 +205,8 @@ class FlatScene:
     # The render's FlatSampler (compile_sampler), set by the path that renders; None: one
     # sample through each pixel's centre.
     sampler: object = None
+    # The mesh triangles (FlatMesh), None in a scene without any.
+    mesh: object = None
 
     def table(self, kind: str) -> np.ndarray:
         return self.shapes[kind][0]
@@ -230,6 +261,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     camera_kind, camera = compile_camera(scene.camera)
 
     rows = {kind.name: ([], []) for kind in SHAPES}
+    mesh_faces = []
     materials, shaders = [], []
     texture_rows = {kind.name: [] for kind in TEXTURES}
     texels = []
@@ -240,7 +272,10 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         if kind is None:
             raise ValueError("Scene.shapes[%d]: the flat layout knows %s, got %s"
                              % (i, ", ".join(k.record for k in SHAPES), type(shape).__name__))
-        rows[kind.name][0].append(pack_row(kind.record, shape))
+        if kind.bvh:
+            mesh_faces.append((i, shape))
+        else:
+            rows[kind.name][0].append(pack_row(kind.record, shape))
         rows[kind.name][1].append(i)
         features.add(kind.name)
         m = shape.material
@@ -286,12 +321,21 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     def table(rows, record):
         return np.array(rows, dtype=dtype).reshape(len(rows), width(record))
 
+    mesh = compile_mesh(scene, mesh_faces, dtype) if mesh_faces else None
+    if mesh is not None and mesh.normals is not None:
+        features.add("smooth_mesh")
+    shapes = {kind.name: (table(rows[kind.name][0], kind.record),
+                          np.array(rows[kind.name][1], dtype=np.int32)) for kind in ROW_SHAPES}
+    for kind in SHAPES:
+        if kind.bvh:
+            faces = mesh.faces if mesh is not None else np.zeros((0, 4), dtype=np.int32)
+            shapes[kind.name] = (faces, faces[:, 3])
+
     flat = FlatScene(
         dtype=dtype,
         camera_kind=camera_kind,
         camera=camera.astype(dtype),
-        shapes={kind.name: (table(rows[kind.name][0], kind.record),
-                            np.array(rows[kind.name][1], dtype=np.int32)) for kind in SHAPES},
+        shapes=shapes,
         materials=table(materials, "Material"),
         shaders=np.array(shaders, dtype=np.int32),
         lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
@@ -301,9 +345,12 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features=frozenset(features),
         textures={kind.name: table(texture_rows[kind.name], kind.record) for kind in TEXTURES},
         texels=np.array(texels or [0.0, 0.0, 0.0], dtype=dtype),
+        mesh=mesh,
     )
     arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]
-    arrays += [(kind.table, flat.table(kind.name)) for kind in SHAPES]
+    arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]
+    if mesh is not None:
+        arrays.append(("mesh vertices", mesh.vertices))
     arrays += [(kind.table, flat.lights[kind.name]) for kind in LIGHTS]
     arrays += [(kind.table, flat.textures[kind.name]) for kind in TEXTURES] + [("texels", flat.texels)]
     for name, array in arrays:
@@ -311,6 +358,53 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             raise ValueError("Scene: %s is not finite in %s (a value overflows the precision)"
                              % (name, precision))
     return flat
+
+
+# Each scene's last BVH: (key, FlatBVH), the key a hash of its faces and vertices, so that a
+# scene compiled again (another precision, another render, a notebook cell run twice) does
+# not build it again.
+_BVH_CACHE = weakref.WeakKeyDictionary()
+
+
+def compile_mesh(scene, mesh_faces, dtype) -> FlatMesh:
+    """The FlatMesh of the mesh triangles ``mesh_faces`` ((scene index, MeshTriangle), ...),
+    with the scene's BVH over them (built, or taken from the scene's cache)."""
+    from .accelerators import flat_bvh
+    from .shapes.mesh import SmoothMeshTriangle
+
+    blocks = {}     # (id(mesh), smooth) -> first vertex: a mesh's vertices are laid out once
+    vertex_parts, normal_parts, smooth_any = [], [], False
+    faces = np.empty((len(mesh_faces), 4), dtype=np.int64)
+    count = 0
+    for n, (i, shape) in enumerate(mesh_faces):
+        smooth = isinstance(shape, SmoothMeshTriangle)
+        key = (id(shape.mesh), smooth)
+        if key not in blocks:
+            blocks[key] = count
+            vertex_parts.append(shape.mesh.vertices)
+            normal_parts.append(shape.mesh.normals if smooth else np.zeros_like(shape.mesh.vertices))
+            smooth_any |= smooth
+            count += len(shape.mesh.vertices)
+        first = blocks[key]
+        faces[n] = (shape.index0 + first, shape.index1 + first, shape.index2 + first, i)
+    vertices = np.concatenate(vertex_parts)
+    digest = hashlib.sha1(vertices.tobytes())
+    digest.update(faces.tobytes())
+    key = digest.hexdigest()
+    cached = _BVH_CACHE.get(scene)
+    build_seconds = 0.0
+    if cached is not None and cached[0] == key:
+        bvh = cached[1]
+    else:
+        bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, faces))
+        build_seconds = bvh.build_seconds
+        try:
+            _BVH_CACHE[scene] = (key, bvh)
+        except TypeError:   # a scene object that cannot be weakly referenced: no cache
+            pass
+    return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
+                    normals=np.concatenate(normal_parts).astype(dtype) if smooth_any else None,
+                    bvh=bvh, build_seconds=build_seconds)
 
 
 @dataclass

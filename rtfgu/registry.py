@@ -30,6 +30,7 @@ from .directional_light import Directional
 from .lights import PointLight
 from .material import BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
 from .shapes.disk import Disk
+from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
@@ -59,6 +60,10 @@ class ShapeKind(_Rows):
     numba_module: str = "rtfgu.kernels.intersect"
     from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
     uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
+    # A mesh kind: its rows are the faces of meshes, found through a BVH and not by a loop
+    # over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
+    # ``numba_module``, WGSL ``mesh.wgsl``); its arrays are rtfgu.layout.FlatMesh's.
+    bvh: bool = False
 
     @property
     def wgsl_file(self) -> str:
@@ -103,7 +108,10 @@ SHAPES = (
     ShapeKind("sphere", Sphere, (("center", 3), ("radius", 1)), formulas=("slide", "robust"),
               from_eye=True),
     ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
+    # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
+    ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
 )
+ROW_SHAPES = tuple(kind for kind in SHAPES if not kind.bvh)   # the kinds laid out a row per shape
 
 SHADERS = (
     ShaderKind(BASE_COLOR, "base_color"),

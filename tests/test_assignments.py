@@ -87,7 +87,8 @@ def test_readmes_name_the_task_formulas_slides_and_images():
 def test_block_table_covers_the_lecture_layer_files():
     files = {key[0] for key in block_table()}
     for f in ("float3.py", "ray.py", "cameras/orthographic.py", "cameras/pinhole.py", "shapes/plane.py",
-              "shapes/sphere.py", "shapes/triangle.py", "lights.py", "shading.py"):
+              "shapes/sphere.py", "shapes/triangle.py", "lights.py", "shading.py", "textures/image_texture.py",
+              "accelerators/bbox.py", "accelerators/bvh.py"):
         assert f in files
         assert (PACKAGE_DIR / f).is_file()
 
@@ -99,3 +100,16 @@ def test_wgsl_stubs_name_their_todo_and_keep_the_signature():
         assert "return TODO_a06_%s;" % name in text
         assert "fn %s(r: Ray, hit: ptr<function, HitInfo>" % name in text
         assert "BEGIN SOLUTION" not in text
+
+
+def test_a08_stubs_the_slab_test_and_the_traversal_and_keeps_the_build():
+    files = student_files("a08")
+    bvh, bbox = files["accelerators/bvh.py"], files["accelerators/bbox.py"]
+    for name in ("def _build", "def _best_split", "def _median_split", "def leaves", "LEAF_SIZE = 4"):
+        assert name in bvh, name
+    assert "raise NotImplementedError('a08: BVH.intersect')" in bvh and "stack.append(near)" not in bvh
+    assert "raise NotImplementedError('a08: BBox.hit')" in bbox and "\n            t_far *= WIDEN\n" not in bbox
+    for name in ("def of_points", "def union", "def surface_area", "WIDEN = ", "def padded"):
+        assert name in bbox, name
+    # the solution's lines are those of the lecture layer, without the markers
+    assert "\n            t_far *= WIDEN\n" in solution_files("a08")["accelerators/bbox.py"]

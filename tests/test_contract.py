@@ -15,12 +15,14 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 
+import numpy as np
 import pytest
 
 from rtfgu import Disk, Float3, OrthographicCamera, Plane, Scene, Sphere, Triangle
 from rtfgu.lights import PointLight
 from rtfgu.material import LAMBERTIAN, Material
 from rtfgu.registry import SHADERS, SHAPES, shape_kind_of
+from rtfgu.shapes.mesh import Mesh
 from rtfgu.shading import AMBIENT_FRACTION, DIFFUSE_FRACTION, SPAWN_EPSILON
 
 INF = math.inf
@@ -126,6 +128,17 @@ def exact_sphere(shape, case):
     return None
 
 
+def exact_mesh(shape, case):
+    """A mesh face: the triangle through its vertices (the watertight test it uses has the
+    slide triangle's exact answer: both accept the closed triangle)."""
+    return exact_triangle(shape._triangle, case)
+
+
+def mesh_face(v0, v1, v2, material):
+    """Face 0 of a one-face mesh (the registry's "mesh" kind)."""
+    return Mesh(np.array([v0, v1, v2], dtype=float), np.array([(0, 1, 2)]), GREY, material=material).triangles()[0]
+
+
 @dataclass(frozen=True)
 class KindCases:
     shape: object        # a function of the material: the kind's shape for `cases`
@@ -185,6 +198,20 @@ SHAPE_CASES = {
          Case("hit at tmax", (0.5, 0.0, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
         exact_disk,
         lambda m: Disk((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 1.0, GREY, m)),
+    "mesh": KindCases(
+        lambda m: mesh_face((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), m),
+        (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 1.0), (0.5, 0.25, -1.0)),
+         Case("hit on the edge beta + gamma = 1", (1.0, 1.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the edge gamma = 0", (1.0, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on a vertex", (0.0, 2.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the edge beta = 0", (0.0, 0.5, 2.0), (0.0, 0.0, -1.0)),
+         Case("miss beyond the edge", (1.25, 1.0, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beside the face", (-0.25, 0.5, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the face", (0.5, 0.25, 1.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_mesh,
+        lambda m: mesh_face((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), m)),
 }
 
 SHAPE_NAMES = [kind.name for kind in SHAPES]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import csv
 import json
+import math
 import os
 import shutil
 import subprocess
@@ -84,6 +85,14 @@ PLANTED = [
     ("a07_v_not_flipped", "a07", {"7.3": "upside down", "7.4": "upside down", "7.5": "upside down",
                                   "7.6": "upside down", "7.7": "pixels", "7.8": "pixels", "7.9": "upside down",
                                   "7.10": "upside down", "7.11": "pixels", "7.12": "pixels"}),
+    ("a08_slab_no_swap", "a08", {"8.2": "swap t_near and t_far", "8.3": "swap t_near and t_far",
+                                 "8.4": "swap t_near and t_far", "8.5": "never visited", "8.6": "found nothing",
+                                 "8.7": "never visited", "8.9": "swap t_near and t_far",
+                                 "8.10": "swap t_near and t_far", "8.11": "never visited", "8.12": "never visited"}),
+    ("a08_slab_ignores_tmax", "a08", {"8.3": "start with t1 = ray.tmax"}),
+    ("a08_first_hit_found", "a08", {"8.7": "stopped at the first hit found", "8.8": "earlier one",
+                                    "8.11": "first hit found"}),
+    ("a08_no_tie_rule", "a08", {"8.8": "math.nextafter", "8.11": "math.nextafter"}),
 ]
 
 
@@ -100,6 +109,90 @@ def test_planted_bugs_lose_the_tests_that_should_catch_them_and_keep_the_rest(tm
     for test in result.tests:
         if test.name.startswith("image:"):
             assert Path(test.image).is_file()
+
+
+def test_the_a08_planted_bugs_score_less_than_full_marks_and_the_solution_full_marks(solved, tmp_path):
+    """The figures of a08 (16 points): every planted bug loses points, the solution none."""
+    _, _, solution = solved["a08_bvh"]
+    assert solution.score == solution.max_score == 16
+    scores = {}
+    for name in ("a08_slab_no_swap", "a08_slab_ignores_tmax", "a08_first_hit_found", "a08_no_tie_rule"):
+        result = grade("a08", make_submission(name, tmp_path / name), None, time_limit=LIMIT)
+        scores[name] = result.score
+    assert all(0 < score < 16 for score in scores.values()), scores
+    assert scores["a08_slab_no_swap"] < scores["a08_first_hit_found"] < scores["a08_slab_ignores_tmax"], scores
+
+
+def test_a08_box_references_are_the_exact_slab_test():
+    """Every stored answer of a08's box tests is that of exact arithmetic (the slab test in
+    fractions, rtfgu.grading.mistakes.slab_exact): the same hit or miss and, for a hit, the
+    entry t to within two ulps (exactly, where every number is a short multiple of a power of
+    two). The rounding cases are real: without widening t_far the float test misses them."""
+    from rtfgu.grading.checks import checks_for
+    from rtfgu.grading.mistakes import _slab_float, slab_exact
+
+    stored = json.loads((REFERENCE_DIR / "a08_bvh" / "observations.json").read_text())
+    checked, exact_to_the_bit, rescued = 0, 0, 0
+    for check in checks_for("a08"):
+        if check.known != "slab":
+            continue
+        for case in stored[check.slug]["cases"]:
+            i, t = case["in"], case["out"]["t"]
+            args = (i["p0"], i["p1"], i["o"], i["d"], i["tmin"], i["tmax"])
+            want = slab_exact(*args)
+            if math.isinf(want):
+                assert t == want, case["label"]
+            else:
+                assert abs(t - want) <= 2 * math.ulp(want), (case["label"], t, want)
+            exact_to_the_bit += t == want
+            rescued += math.isfinite(want) and math.isinf(_slab_float(*args, widen=False))
+            checked += 1
+    assert checked >= 55 and exact_to_the_bit >= checked - 3 and rescued >= 3
+    # the exact test itself, on a face, an edge, a zero-thickness box and a -0 component
+    assert slab_exact([0, 0, 0], [1, 1, 1], [-1, 0, 0.5], [1, 0, 0], 0, math.inf) == 1.0
+    assert slab_exact([0, 0, 0], [1, 1, 1], [-1, -1, 0.5], [1, 1, 0], 0, math.inf) == 1.0
+    assert slab_exact([0, 0, 0], [1, 1, 1], [-1, -1.5, 0.5], [1, 1, 0], 0, math.inf) == 1.5
+    assert slab_exact([0, 0, 0], [1, 1, 1], [-1, -2.5, 0.5], [1, 1, 0], 0, math.inf) == math.inf
+    assert slab_exact([0, 0, 1], [2, 2, 1], [1, 1, 3], [0, 0, -1], 0, math.inf) == 2.0
+    assert slab_exact([0, 0, 0], [1, 1, 1], [-1, 0.5, 0.5], [1, -0.0, 0], 0, 0.5) == math.inf
+
+
+def test_a08_bvh_references_are_the_exact_closest_hit():
+    """Every stored answer of a08's BVH tests is the exact closest hit over the scene's shapes
+    (each shape's test in rationals, rtfgu.hardcases.exact; the least t in [tmin, tmax), of
+    equal ts the earlier shape), whatever order the BVH was put in. The ties are real."""
+    from rtfgu.grading.checks import checks_for
+    from rtfgu.grading.probes import a08, a08_hidden
+    from rtfgu.hardcases import exact
+
+    scenes = dict(a08.SCENES, **a08_hidden.SCENES)
+    stored = json.loads((REFERENCE_DIR / "a08_bvh" / "observations.json").read_text())
+    checked, hits, ties = 0, 0, 0
+    for check in checks_for("a08"):
+        if not check.probe[1].startswith("observe_bvh"):
+            continue
+        for case in stored[check.slug]["cases"]:
+            i = case["in"]
+            ray = (i["o"], i["d"], i["tmin"], i["tmax"])
+            found = []
+            for shape in scenes[i["scene"]]():
+                if shape[0] == "sphere":
+                    found.append(exact.sphere(*ray, shape[1], shape[2]))
+                else:
+                    found.append(exact.triangle(*ray, *shape[1:]))
+            best = min(range(len(found)), key=lambda k: (found[k], k), default=-1)
+            if best >= 0 and found[best] == exact.MISS:
+                best = -1
+            assert case["out"]["shape"] == best, case["label"]
+            if best < 0:
+                assert case["out"]["ray.tmax"] == i["tmax"], case["label"]
+            else:
+                t = found[best][0] + found[best][1]
+                assert abs(case["out"]["ray.tmax"] - t) <= 1e-12 * abs(t), case["label"]
+                hits += 1
+                ties += found.count(found[best]) > 1
+            checked += 1
+    assert checked >= 240 and hits >= 120 and ties >= 30, (checked, hits, ties)
 
 
 def test_every_planted_submission_is_the_solution_with_its_one_described_bug():

@@ -48,18 +48,22 @@ def random_rays(count: int, seed: int = 7):
         yield origin, target - origin
 
 
-def test_a_mesh_triangle_is_hit_exactly_where_triangle_is_hit():
+def test_a_mesh_triangle_is_the_watertight_test_with_the_normal_and_texcoord_of_triangle():
+    from rtfgu.robust import intersect_triangle_watertight
+
     mesh = octahedron()
     hits = 0
     for shape, (origin, direction) in itertools.product(mesh.triangles(), random_rays(300)):
         v0, v1, v2 = (Float3(*mesh.vertices[i]) for i in (shape.index0, shape.index1, shape.index2))
         triangle = Triangle(v0, v1, v2, GREY)
-        ours, theirs = Ray(origin, direction), Ray(origin, direction)
+        ours, watertight, slide = Ray(origin, direction), Ray(origin, direction), Ray(origin, direction)
         hit = shape.intersect_p(ours)
-        assert hit == triangle.intersect_p(theirs)
-        assert ours.tmax == theirs.tmax                         # bit for bit, inf on a miss
+        assert hit == intersect_triangle_watertight(watertight, v0, v1, v2)
+        assert ours.tmax == watertight.tmax                     # bit for bit, inf on a miss
+        assert hit == triangle.intersect_p(slide)               # no ray of these passes an edge
         if hit:
             hits += 1
+            assert ours.tmax == pytest.approx(slide.tmax, rel=1e-14)
             p = ours(ours.tmax)
             assert components(shape.normal_at(p)) == components(triangle.normal_at(p))
             assert shape.texcoord(p) == triangle.texcoord(p)
@@ -188,13 +192,23 @@ def test_a_shared_edge_is_hit_by_exactly_one_triangle(point, direction):
         assert components(hit.normal) == (0.0, 0.0, 1.0)
 
 
-def test_the_flat_layout_refuses_mesh_triangles_until_they_are_registered():
+def test_the_flat_layout_holds_each_mesh_once_with_its_faces_in_bvh_order():
     from rtfgu.layout import compile_scene
 
     scene = Scene(rtfgu.PinholeCamera(Float3(0, 0, 3), Float3(0, 0, 0), Float3(0, 1, 0), 1.0, 1.0))
-    scene.shapes = SQUARE.triangles()
-    with pytest.raises(ValueError, match=r"Scene.shapes\[0\].*FlatMeshTriangle"):
-        compile_scene(scene)
+    scene.shapes = [rtfgu.Sphere(Float3(0, 0, -5), 1.0, GREY)] + SQUARE.triangles() + octahedron().triangles()
+    flat = compile_scene(scene, "float32")
+    assert "mesh" in flat.features and flat.mesh.vertices.dtype == np.float32
+    assert len(flat.mesh.vertices) == 4 + 6 and flat.mesh.normals is None
+    faces = flat.mesh.faces
+    assert sorted(faces[:, 3]) == list(range(1, 11))             # every face, as its scene index
+    for row in faces:                                            # each face names its own vertices
+        shape = scene.shapes[row[3]]
+        first = 0 if shape.mesh is SQUARE else 4
+        assert tuple(row[:3] - first) == (shape.index0, shape.index1, shape.index2)
+    assert flat.mesh.build_seconds > 0
+    again = compile_scene(scene, "float64")                      # the scene's BVH is cached
+    assert again.mesh.bvh is flat.mesh.bvh and again.mesh.build_seconds == 0.0
 
 
 # --- load_obj -----------------------------------------------------------------------------

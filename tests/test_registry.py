@@ -40,7 +40,7 @@ def test_no_kernel_function_takes_more_than_twelve_parameters():
     assert not too_many, "kernel functions with more than %d parameters: %s" % (MAX_PARAMETERS, too_many)
 
 
-@pytest.mark.parametrize("kind", registry.SHAPES, ids=lambda k: k.name)
+@pytest.mark.parametrize("kind", registry.ROW_SHAPES, ids=lambda k: k.name)
 def test_a_shape_kind_brings_its_numba_functions_and_wgsl_piece(kind):
     module = importlib.import_module(kind.numba_module)
     fields = [name for name, _ in kind.fields]
@@ -58,6 +58,18 @@ def test_a_shape_kind_brings_its_numba_functions_and_wgsl_piece(kind):
     assert getattr(rtfgu, kind.record) is kind.cls
     init = inspect.signature(kind.cls.__init__).parameters
     assert "color" in init and "material" in init
+
+
+@pytest.mark.parametrize("kind", [k for k in registry.SHAPES if k.bvh], ids=lambda k: k.name)
+def test_a_mesh_kind_brings_its_traversal_normal_and_texcoord_on_both_paths(kind):
+    module = importlib.import_module(kind.numba_module)
+    for name in ("mesh_closest", "mesh_any", "normal_mesh", "texcoord_mesh"):
+        assert callable(getattr(module, name)), name
+    text = read_piece(kind.wgsl_file)
+    for name in ("mesh_closest", "mesh_any", "mesh_normal", "texcoord_mesh"):
+        assert re.search(r"fn %s\(" % name, text), "%s defines no fn %s" % (kind.wgsl_file, name)
+    assert kind.record not in layout.RECORDS            # no row: FlatMesh's arrays instead
+    assert getattr(rtfgu, kind.record) is kind.cls
 
 
 def test_kind_ids_are_places_in_the_registry_and_every_kind_has_a_wgsl_count():

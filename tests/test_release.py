@@ -25,17 +25,21 @@ TRIVIAL = re.compile(r"^(return|return (True|False|result|None|hit)|return (true
 
 def solution_lines(revealed=()) -> dict:
     """Every non-trivial line of every solution block of an assignment not in ``revealed``
-    (short ids) -> "file:function" it stands in."""
+    (short ids) -> "file:function" it stands in. A line that the given code of the same file
+    also holds (``while stack:`` in the BVH's build and its traversal) reveals nothing."""
     lines = {}
     for relpath in sorted({key[0] for key in block_table()}):
         text = source_text(relpath)
         rows = text.split("\n")
-        for qualname, begin, end, _ in find_blocks(text, relpath):
+        blocks = find_blocks(text, relpath)
+        inside = {i for _, begin, end, _ in blocks for i in range(begin, end + 1)}
+        given = {row.strip() for i, row in enumerate(rows) if i not in inside}
+        for qualname, begin, end, _ in blocks:
             if block_table()[(relpath, qualname)][0].short in revealed:
                 continue
             for line in rows[begin + 1:end]:
                 s = line.strip()
-                if s and not s.startswith(("#", "//")) and not TRIVIAL.match(s):
+                if s and not s.startswith(("#", "//")) and not TRIVIAL.match(s) and s not in given:
                     lines[s] = "%s:%s" % (relpath, qualname)
     return lines
 
@@ -68,7 +72,7 @@ def test_the_student_package_has_no_solution_line_no_twin_and_no_grader(tmp_path
     assert "raise NotImplementedError" not in (package / "float3.py").read_text()
     assert "raise NotImplementedError('a03: Sphere.intersect_p')" in (package / "shapes" / "sphere.py").read_text()
     # every solution revealed: the twins ship
-    full = build_package(tmp_path / "all", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07"))
+    full = build_package(tmp_path / "all", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07", "a08"))
     assert (full / "kernels" / "intersect.py").is_file() and (full / "robust.py").is_file()
     # the numba and WGSL paths look textures up as a07 does: they ship once a07 is revealed
     before = build_package(tmp_path / "a06", reveal=("a01", "a02", "a03", "a04", "a05", "a06"))
@@ -76,6 +80,11 @@ def test_the_student_package_has_no_solution_line_no_twin_and_no_grader(tmp_path
     assert "raise NotImplementedError('a07: ImageTexture.get_color')" in (
         before / "textures" / "image_texture.py").read_text()
     assert (full / "kernels" / "textures.py").is_file() and (full / "wgsl" / "image_texture.wgsl").is_file()
+    # the numba path traverses a BVH as a08 does: it ships once a08 is revealed
+    a07 = build_package(tmp_path / "a07", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07"))
+    assert not (a07 / "kernels").exists()
+    assert "raise NotImplementedError('a08: BVH.intersect')" in (a07 / "accelerators" / "bvh.py").read_text()
+    assert "raise NotImplementedError('a08: BBox.hit')" in (a07 / "accelerators" / "bbox.py").read_text()
 
 
 def test_the_probes_hold_no_hint_and_import_nothing_of_the_grader():
@@ -100,7 +109,12 @@ TWIN_NAMES = {
     "a05": ("in_shadow", "phong", "brdf_phong", "mirror", "transparent", "glossy"),
     "a06": ("intersect_plane", "intersect_sphere", "intersect_triangle"),
     "a07": ("texel", "_texel", "get_color", "texture_image_texture"),
+    "a08": ("bbox_hit", "hit_bbox", "box_hit", "box_entry", "slab_test", "intersect_bbox", "intersect_box",
+            "intersect_bvh", "bvh_intersect", "traverse_bvh", "bvh_closest", "mesh_closest"),
 }
+# Block names too common to stand for their assignment in a twin's function names (BBox.hit,
+# BVH.intersect: intersect_disk is no BVH traversal); their twins go by the names above.
+GENERIC_BLOCK_NAMES = {"hit", "intersect"}
 TWIN_FOLDERS = ("kernels", "wgsl", "hardcases")
 _DEF = re.compile(r"^\s*(?:def|fn)\s+(?P<name>\w+)\s*\(", re.M)
 
@@ -113,7 +127,7 @@ def _assigned_names() -> dict:
             names.setdefault(name, set()).add(short)
     for (_, qualname), (a, _) in block_table().items():
         name = qualname.split(".")[-1]
-        if not name.startswith("__"):
+        if not name.startswith("__") and name not in GENERIC_BLOCK_NAMES:
             names.setdefault(name, set()).add(a.short)
     return names
 
@@ -164,6 +178,11 @@ def test_a_twin_without_its_marker_or_with_the_wrong_one_is_found():
     assert [p[1] for p in unmarked_twins({"wgsl/phong.wgsl": wrong})] == ["brdf_phong"]
     # the student's own file: the function around its solution block ships stubbed
     assert unmarked_twins({"wgsl/intersect_sphere.wgsl": files["wgsl/intersect_sphere.wgsl"]}) == []
+    # a08's twins go by their own names: a BVH's slab test is one, the scene's loop is none
+    slab = "def box_entry(nodes, n, origin, inv, tmin, tmax):\n    pass\n"
+    assert unmarked_twins({"kernels/bvh.py": slab}) == [("kernels/bvh.py", "box_entry", ["a08"])]
+    assert unmarked_twins({"kernels/bvh.py": "# release: solves a08\n" + slab}) == []
+    assert unmarked_twins({"wgsl/x.wgsl": "fn intersect_scene(r: Ray) -> bool {\n}\n"}) == []
 
 
 # --- the student repository -------------------------------------------------------------------

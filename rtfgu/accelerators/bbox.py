@@ -49,6 +49,7 @@ class BBox:
 
     def hit(self, ray: Ray) -> float:
         """The t at which the ray enters the box within [tmin, tmax], or inf if it misses."""
+        ### BEGIN SOLUTION
         t0, t1 = ray.tmin, ray.tmax
         for a in range(3):
             o, w = ray.origin[a], ray.direction[a]
@@ -66,6 +67,7 @@ class BBox:
             if t0 > t1:
                 return math.inf
         return t0
+        ### END SOLUTION
 
 
 # How much a curved shape's box grows: a shape's own test may accept, by rounding, a grazing

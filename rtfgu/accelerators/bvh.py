@@ -132,6 +132,7 @@ class BVH:
     def intersect(self, ray: Ray) -> int:
         """The number of the nearest shape the ray hits in [tmin, tmax) (ties: the earlier
         shape), ray.tmax shrunk to its t; -1 and ray.tmax unchanged on a miss."""
+        ### BEGIN SOLUTION
         best = -1
         if self.root is None:
             return best
@@ -160,6 +161,7 @@ class BVH:
             stack.append(far)
             stack.append(near)
         return best
+        ### END SOLUTION
 
     def depth(self) -> int:
         def depth(node):

@@ -8,7 +8,8 @@ markers and this table says which assignment each belongs to and what its TODO t
 The order is that of both courses: lecture 01 (Float3, Ray, orthographic camera, plane,
 sphere) and 02562 weeks 1-3 (pinhole camera, triangle, Kepler and Lambert, shadows, Phong,
 mirror, refraction), then the intersection functions again in WGSL, then 02562 worksheet 3's
-texture lookup (Suffern ch. 29).
+texture lookup (Suffern ch. 29), then bounding boxes and the BVH (Suffern ch. 19 and 22,
+02562 worksheet 6).
 """
 from __future__ import annotations
 
@@ -310,8 +311,61 @@ A07 = Assignment(
            "blends them; repeat tiles the plane, clamp stretches the edge texels to the horizon."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07)
-ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07)}
+A08 = Assignment(
+    id="a08_bvh",
+    title="Bounding boxes and the BVH: the slab test and nearest-first traversal",
+    blocks=(
+        Block("accelerators/bbox.py", "BBox.hit",
+              "The slab test. Start with t0, t1 = ray.tmin, ray.tmax. For each axis a in 0, 1, 2 (a Float3\n"
+              "indexes as v[a]), with o = ray.origin[a] and w = ray.direction[a]:\n"
+              "if w == 0 the ray stays in the slab for every t or for none: return math.inf when o < p0[a]\n"
+              "or o > p1[a], else go on with the next axis (no division). Otherwise\n"
+              "t_near = (p0[a] - o) / w, t_far = (p1[a] - o) / w, swapped when t_near > t_far (w < 0);\n"
+              "t_far *= WIDEN; t0 = max(t0, t_near), t1 = min(t1, t_far); return math.inf as soon as t0 > t1.\n"
+              "Return t0, where the ray enters the box. The ray is not changed."),
+        Block("accelerators/bvh.py", "BVH.intersect",
+              "best = -1; an empty BVH (self.root is None) returns it. Keep a stack, starting with [self.root].\n"
+              "Pop a node; skip it when node.bbox.hit(ray) > ray.tmax (entered beyond the nearest hit so far).\n"
+              "Leaf: for k in node.first .. node.first + node.count - 1, shape i = self.order[k]: if best < 0\n"
+              "or i > best, a hit of self.shapes[i].intersect_p(ray) makes best = i; if i < best (an earlier\n"
+              "shape, which wins an equal t) raise ray.tmax to math.nextafter(ray.tmax, math.inf) first and\n"
+              "put it back if the shape misses. Inner node: push the child whose box the ray enters later,\n"
+              "then the nearer one (popped first). When the stack is empty, return best."),
+    ),
+    task=("Write the slab test of an axis-aligned bounding box, `BBox.hit(ray)`, and the traversal of\n"
+          "the bounding volume hierarchy, `BVH.intersect(ray)`; the BVH's build (the binned surface area\n"
+          "heuristic) is given. `BBox.hit` returns the t at which the ray enters the box within\n"
+          "[tmin, tmax] (tmin itself when the ray starts inside), or `math.inf` when it misses, and\n"
+          "changes nothing. The box is closed: a ray along a face or through an edge or a corner hits it.\n"
+          "`BVH.intersect` returns the number of the shape hit (its place in the list the BVH was built\n"
+          "from) with `ray.tmax` shrunk to its t, or -1 with `ray.tmax` as it was. It must find exactly\n"
+          "what the scene's loop over all shapes finds: the least t in [tmin, tmax), and of equal ts the\n"
+          "earlier shape, in whatever order the tree meets them. The first hit found is not always the\n"
+          "nearest: keep going until every node that the ray enters before `ray.tmax` has been visited."),
+    formulas=("- Slab test (Kay and Kajiya 1986, in the form of Williams et al. 2005, \"An Efficient and Robust\n"
+              "  Ray-Box Intersection Algorithm\"; Suffern ch. 19, \"Bounding Boxes\"): along axis a the ray is in\n"
+              "  the slab p0[a] <= o[a] + t w[a] <= p1[a] for t between t_near = (p0[a] - o[a]) / w[a] and\n"
+              "  t_far = (p1[a] - o[a]) / w[a], swapped when w[a] < 0; it is in the box for\n"
+              "  t0 = max(tmin, t_near over a) <= t <= t1 = min(tmax, t_far over a): a hit at t0 if t0 <= t1\n"
+              "- w[a] = 0: the ray is in the slab for every t if p0[a] <= o[a] <= p1[a], for none otherwise\n"
+              "- Widening (PBRT-v4 section 6.1.2, \"Ray-Bounds Intersections\"): t_far *= 1 + 2 gamma_3 with\n"
+              "  gamma_n = n u / (1 - n u) and u = 2^-53 (`WIDEN`), so that rounding never makes the box test\n"
+              "  miss a ray that exactly touches the box, or a hit the shape's own test finds\n"
+              "- Traversal (Suffern ch. 22 accelerates with a grid, PBRT-v4 section 7.3 with a BVH): visit the\n"
+              "  nearer child's box first and skip a node whose box the ray enters beyond the nearest hit so\n"
+              "  far (t_enter > ray.tmax); the closest hit is the least t, ties to the earlier shape"),
+    slides=("Suffern ch. 19: Bounding Boxes (the ray-box slab test)",
+            "Suffern ch. 22: acceleration schemes (grids; why a ray need not test every object)",
+            "02562 worksheet 6: bounding volume hierarchy (BVH) for triangle meshes"),
+    extra=("The tests build scenes of spheres and triangles with the given `BVH(shapes)` (the build sits\n"
+           "above `intersect` in `rtfgu/accelerators/bvh.py`: a node's `bbox`, `left` and `right`, a leaf's\n"
+           "shapes `order[first:first + count]`) and compare your traversal with the scene's loop over all\n"
+           "shapes; they need assignments 1 and 3 (your own or the revealed solutions). `BBox.hit`'s tests\n"
+           "need only assignment 1. There is no image to hand in."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08)}
 
 
 def register(assignment: Assignment) -> None:

@@ -1,10 +1,11 @@
 """Known mistakes, computed on the staff side from a test's inputs: the numbers a student's
 code gives when it errs in a way the hints name (the sphere's t with b^2 + 4ac, with a = 1,
 the far root; Lambert's law without its cosine; a texture lookup with v not flipped or
-without bilinear's half-texel shift). They are solution maths, so this module is
-never shipped: ``write_known`` stores the numbers per case in
-``reference/<assignment>/known.json`` and a hint only compares numbers with them (it gets
-them as ``inputs["known"]``).
+without bilinear's half-texel shift; a slab test that does not swap t_near and t_far or
+ignores tmax). They are solution maths, so this module is never shipped: ``write_known``
+stores the numbers per case in ``reference/<assignment>/known.json`` and a hint only
+compares numbers with them (it gets them as ``inputs["known"]``). ``slab_exact`` is also
+the exact truth of a08's box tests (tests/test_grading.py holds the references to it).
 
 A check names its function here with ``Check(known="sphere")``.
 """
@@ -114,6 +115,70 @@ def texture(inputs: dict) -> dict:
     else:
         known["repeat_clamps"] = _lookup(*args, "clamp")
     return known
+
+
+def slab_exact(p0, p1, o, d, tmin, tmax, swap=True, use_tmin=True, use_tmax=True, zero_axes=True,
+               closed=True, result="enter"):
+    """The slab test (Williams et al. 2005) in rationals (every input float converts to a
+    Fraction without rounding): the t at which the ray o + t d enters the box [p0, p1] within
+    [tmin, tmax], as a float, or inf if it misses. The box and the interval are closed. The
+    keywords switch off one part each, for the known mistakes: the swap of t_near and t_far,
+    tmin or tmax, the check of an axis whose direction component is 0 (``zero_axes``); with
+    ``closed=False`` a touch misses, with ``result="exit"`` the exit t is returned."""
+    from fractions import Fraction as Q
+
+    t0 = Q(float(tmin)) if use_tmin else None                       # None: -infinity
+    t1 = Q(float(tmax)) if use_tmax and not math.isinf(tmax) else None  # None: +infinity
+    for a in range(3):
+        oa, wa, lo, hi = Q(float(o[a])), Q(float(d[a])), Q(float(p0[a])), Q(float(p1[a]))
+        if wa == 0:
+            if not zero_axes:
+                continue
+            if (oa < lo or oa > hi) if closed else (oa <= lo or oa >= hi):
+                return math.inf
+            continue
+        t_near, t_far = (lo - oa) / wa, (hi - oa) / wa
+        if swap and t_near > t_far:
+            t_near, t_far = t_far, t_near
+        t0 = t_near if t0 is None else max(t0, t_near)
+        t1 = t_far if t1 is None else min(t1, t_far)
+        if (t0 > t1) if closed else (t0 >= t1):
+            return math.inf
+    t = t0 if result == "enter" else t1
+    if t is None:
+        return -math.inf if result == "enter" else math.inf
+    return float(t)
+
+
+def _slab_float(p0, p1, o, d, tmin, tmax, widen=True):
+    """The slab test in floats, as BBox.hit computes it, with or without the widening of t_far."""
+    wider = 1.0 + 2.0 * (3 * 2.0 ** -53) / (1 - 3 * 2.0 ** -53)
+    t0, t1 = float(tmin), float(tmax)
+    for a in range(3):
+        if d[a] == 0.0:
+            if o[a] < p0[a] or o[a] > p1[a]:
+                return math.inf
+            continue
+        t_near, t_far = (p0[a] - o[a]) / d[a], (p1[a] - o[a]) / d[a]
+        if t_near > t_far:
+            t_near, t_far = t_far, t_near
+        if widen:
+            t_far *= wider
+        t0, t1 = max(t0, t_near), min(t1, t_far)
+        if t0 > t1:
+            return math.inf
+    return t0
+
+
+def slab(inputs: dict) -> dict:
+    """An a08 box case: BBox.hit's answer without the swap of t_near and t_far, ignoring tmax,
+    ignoring tmin, returning the exit, skipping the axes of direction component 0, with an
+    open box (a touch misses), and (in floats) without widening t_far."""
+    args = (inputs["p0"], inputs["p1"], inputs["o"], inputs["d"], inputs["tmin"], inputs["tmax"])
+    return {"no_swap": slab_exact(*args, swap=False), "ignores_tmax": slab_exact(*args, use_tmax=False),
+            "ignores_tmin": slab_exact(*args, use_tmin=False), "exit": slab_exact(*args, result="exit"),
+            "zero_skipped": slab_exact(*args, zero_axes=False), "open_box": slab_exact(*args, closed=False),
+            "no_widen": _slab_float(*args, widen=False)}
 
 
 def known_for(check, observation: dict):

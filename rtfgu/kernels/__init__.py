@@ -1,4 +1,4 @@
-# release: solves a01 a02 a03 a04 a05 a07
+# release: solves a01 a02 a03 a04 a05 a07 a08
 """The numba path: the lecture layer's renderer as jitted kernels over the flat layout.
 
 ``render_numba(scene, width, height, precision)`` compiles the scene (rtfgu.layout, which
@@ -23,7 +23,7 @@ from ..shading import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel, scene_tuple
+from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel, scene_tuple, shape_arrays
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -68,10 +68,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     ``sampler``: a FlatSampler (rtfgu.layout.compile_sampler) or None; ``samples``: the
     range of sample indices to add."""
     formula_id = sphere_formula_id(formula)
-    shapes = ()
-    for kind in SHAPES:
-        shapes += ((flat.table(kind.name), flat.index(kind.name)) if flat.count(kind.name)
-                   else (None, None))
+    shapes = shape_arrays(flat)
     lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS)
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     camera64 = camera.astype(np.float64)

@@ -22,11 +22,11 @@ from numba import njit
 
 from ..kernels import sphere_formula_id
 from ..layout import CAMERA_WIDTH
-from ..registry import LIGHTS, SHAPES
+from ..registry import LIGHTS
 from ..shading import MAX_DEPTH
 from .camera import gen_ray
 from .float3 import add, lit, scale
-from .render import RECORD_FIELDS, record_bounce, scene_tuple, trace
+from .render import RECORD_FIELDS, record_bounce, scene_tuple, shape_arrays, trace
 
 
 @njit(cache=True, error_model="numpy")
@@ -58,9 +58,7 @@ def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:
     """Records (paths, MAX_DEPTH, RECORD_FIELDS) of the FlatScene ``flat``: of ``pixel``
     (ix, iy, width, height), iy from the bottom, or of every row of ``rays`` ((n, 8):
     origin, direction, tmin, tmax)."""
-    shapes = ()
-    for kind in SHAPES:
-        shapes += (flat.table(kind.name), flat.index(kind.name))
+    shapes = shape_arrays(flat)
     lights = tuple(flat.lights[kind.name] for kind in LIGHTS)
     camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
     scene = scene_tuple(flat)

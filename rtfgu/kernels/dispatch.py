@@ -36,6 +36,42 @@ from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
 # Formula ids, the same for every kind; a kind without a formula uses its slide formula.
 FORMULAS = ("slide", "robust")
 
+# The arrays of a mesh kind in ``shapes``: rtfgu.layout.FlatMesh's, then the BVH's nodes and
+# their int32 view (rtfgu.kernels.mesh). A row kind has two: its table and index.
+MESH_SLOTS = ("vertices", "faces", "normals", "nodes", "links")
+
+
+def slots(kind) -> int:
+    return len(MESH_SLOTS) if kind.bvh else 2
+
+
+def slot_offsets() -> dict:
+    """Each shape kind's first entry in ``shapes``."""
+    out, at = {}, 0
+    for kind in SHAPES:
+        out[kind.name] = at
+        at += slots(kind)
+    return out
+
+
+def _mesh_parts(k: int, kind, at: int) -> list:
+    """scan_, any_hit_, normal_row_ and texcoord_row_ of a mesh kind: the BVH's traversal."""
+    name = kind.name
+    return [
+        _overloaded("scan_" + name, "vertices, faces, nodes, links, origin, direction, tmin, hit", "hit",
+                    "    return mesh_closest(vertices, faces, nodes, links, %d, origin, direction, tmin, hit)" % k,
+                    "The nearest hit among the %s faces (the BVH), given the nearest so far" % name),
+        _overloaded("any_hit_" + name, "vertices, faces, nodes, links, origin, direction, tmin, tmax", "False",
+                    "    return mesh_any(vertices, faces, nodes, links, origin, direction, tmin, tmax)",
+                    "Is any %s face hit in [tmin, tmax)?" % name),
+        _overloaded("normal_row_" + name, "vertices, faces, normals, row, position", "position",
+                    "    return normal_mesh(vertices, faces, normals, row, position)",
+                    "The unit normal of face ``row`` at ``position``"),
+        _overloaded("texcoord_row_" + name, "vertices, faces, row, position", "(position[0], position[0])",
+                    "    return texcoord_mesh(vertices, faces, row, position)",
+                    "The (u, v) of face ``row`` at ``position``"),
+    ]
+
 
 def _row_args(kind, table: str, row: str) -> str:
     """The kind's fields read from ``table[row]`` in its registry order."""
@@ -170,14 +206,19 @@ def _normal(kind) -> str:
                        "The unit normal of row ``row`` of the %ss at ``position``" % kind.name)
 
 
-def _by_kind(name, row_function, what, default) -> str:
-    """``name(shapes, kind, row, position)``: ``row_function<kind>`` of the kind hit."""
+def _by_kind(name, row_function, what, default, mesh_slots) -> str:
+    """``name(shapes, kind, row, position)``: ``row_function<kind>`` of the kind hit; a mesh
+    kind's function takes its ``mesh_slots`` (places in MESH_SLOTS) instead of a table."""
+    at = slot_offsets()
+    lines = []
+    for k, kind in enumerate(SHAPES):
+        arrays = ", ".join("shapes[%d]" % (at[kind.name] + m) for m in mesh_slots) if kind.bvh \
+            else "shapes[%d]" % at[kind.name]
+        lines.append("    if kind == %d:\n        return %s%s(%s, row, position)" % (k, row_function, kind.name, arrays))
     return "\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def %s(shapes, kind, row, position):" % name,
-        '    """%s of row ``row`` of shape kind ``kind``."""' % what]
-        + ["    if kind == %d:\n        return %s%s(shapes[%d], row, position)" % (k, row_function, kind.name, 2 * k)
-           for k, kind in enumerate(SHAPES)] + ["    return " + default])
+        '    """%s of row ``row`` of shape kind ``kind``."""' % what] + lines + ["    return " + default])
 
 
 def _direct(light) -> str:
@@ -217,6 +258,9 @@ def source() -> str:
     imports = {}
     for kind in SHAPES:
         names = imports.setdefault(kind.numba_module, set())
+        if kind.bvh:
+            names.update(("mesh_closest", "mesh_any", "normal_mesh", "texcoord_mesh"))
+            continue
         names.update(kind.formula_function(f) for f in kind.formulas)
         names.add("normal_" + kind.name)
         if kind.from_eye:
@@ -236,21 +280,33 @@ def source() -> str:
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
-                 ["texcoord_" + k.name for k in SHAPES] + ["texture_" + t.name for t in TEXTURES]),
+                 ["texcoord_" + k.name for k in SHAPES if not k.bvh] + ["texture_" + t.name for t in TEXTURES]),
              "from rtfgu.shading import SPAWN_EPSILON"]
     for module, names in sorted(imports.items()):
         header.append("from %s import %s" % (module, ", ".join(sorted(names))))
     parts = [header[0] + "\n" + "\n".join(header[1:])]
+    at = slot_offsets()
     for k, kind in enumerate(SHAPES):
-        parts += [_scan(k, kind), _any_hit(kind), _normal(kind), _texcoord(kind)]
+        parts += _mesh_parts(k, kind, at[kind.name]) if kind.bvh else \
+            [_scan(k, kind), _any_hit(kind), _normal(kind), _texcoord(kind)]
     for texture in TEXTURES:
         parts.append(_texture_lookup(texture))
 
     calls = []
+    shadow_calls = []
     for k, kind in enumerate(SHAPES):
+        a = at[kind.name]
+        if kind.bvh:
+            mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d]" % (a, a + 1, a + 3, a + 4)
+            calls.append("    hit = scan_%s(%s, origin, direction, tmin, hit)" % (kind.name, mesh))
+            shadow_calls.append("    if any_hit_%s(%s, position, w_i, tmin, tmax):\n        return True"
+                                % (kind.name, mesh))
+            continue
         eye_args = "terms, candidates, n_candidates, " if kind.from_eye else ""
         calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
-                     % (kind.name, 2 * k, 2 * k + 1, eye_args))
+                     % (kind.name, a, a + 1, eye_args))
+        shadow_calls.append("    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
+                            % (kind.name, a))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula):",
@@ -260,11 +316,10 @@ def source() -> str:
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
         '    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""']
-        + ["    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
-           % (kind.name, 2 * k) for k, kind in enumerate(SHAPES)] + ["    return False"]))
-    parts.append(_by_kind("shape_normal", "normal_row_", "normal_at(position)", "position"))
+        + shadow_calls + ["    return False"]))
+    parts.append(_by_kind("shape_normal", "normal_row_", "normal_at(position)", "position", (0, 1, 2)))
     parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
-                          "position[0], position[0]"))
+                          "position[0], position[0]", (0, 1)))
     # The colour of the surface hit: the material's, or its texture's at the hit.
     texture_params = ", ".join(t.table for t in TEXTURES)
     lookups = ["        if texture == %d:\n            return lookup_%s(%s, int(mat[MAT_TEXTURE_ROW]), texels, u, v, color)"
@@ -349,7 +404,7 @@ def kernel_version() -> str:
     package = Path(__file__).resolve().parent.parent
     files = sorted(Path(__file__).resolve().parent.glob("*.py"))
     files += [package / name for name in ("layout.py", "registry.py", "shading.py", "material.py", "ray.py",
-                                          "sampling/random.py")]
+                                          "sampling/random.py", "accelerators/flat_bvh.py")]
     for path in files:
         digest.update(path.name.encode())
         digest.update(path.read_bytes())

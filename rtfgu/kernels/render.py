@@ -29,12 +29,12 @@ from numba.extending import overload
 
 from ..layout import THIN_LENS
 from ..material import BASE_COLOR
-from ..registry import TEXTURES
+from ..registry import SHAPES, TEXTURES
 from ..sampling.random import LENS_SET, PIXEL_SET
 from ..shading import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
-from .dispatch import intersect_scene, shade, shape_normal, surface_color
+from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, surface_color
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, scale
 from .sampling import concentric_map, pixel_sample
@@ -50,6 +50,21 @@ SECONDARY = 2
 # A row of record_bounce: [origin (3), direction (3), t, scene index, kind, shader,
 # normal (3), colour added (3)].
 RECORD_FIELDS = 16
+
+
+def shape_arrays(flat) -> tuple:
+    """The kernels' ``shapes``: table, index per row kind, the FlatMesh's arrays and the BVH
+    (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks."""
+    shapes = ()
+    for kind in SHAPES:
+        if kind.bvh:
+            mesh = flat.mesh
+            shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links)
+                       if mesh is not None else (None,) * len(MESH_SLOTS))
+        else:
+            shapes += ((flat.table(kind.name), flat.index(kind.name)) if flat.count(kind.name)
+                       else (None, None))
+    return shapes
 
 
 def scene_tuple(flat) -> tuple:

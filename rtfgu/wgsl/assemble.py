@@ -127,7 +127,7 @@ def each_kinds(flat, features, formula):
     """For ``// #each``: per list, the substitutions of each kind the scene has."""
     shapes = []
     for kind in SHAPES:
-        if kind.name not in features:
+        if kind.name not in features or kind.bvh:   # a mesh kind has no rows to loop over
             continue
         args = ", ".join("rec." + name for name, _ in kind.fields)
         shapes.append({"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper(),
@@ -184,6 +184,8 @@ def binding_data(flat, name: str) -> np.ndarray:
     for kind in TEXTURES:
         if name == kind.table:
             return flat.textures[kind.name]
+    if name in MESH_BINDINGS:
+        return MESH_BINDINGS[name](flat)
     for kind in SHAPES:
         if name == kind.table:
             return flat.table(kind.name)
@@ -193,6 +195,15 @@ def binding_data(flat, name: str) -> np.ndarray:
         if name == kind.table:
             return flat.lights[kind.name]
     raise KeyError("no scene array is bound as %r" % name)
+
+
+# The FlatMesh arrays of a scene with mesh triangles (intersect_mesh.wgsl), all in storage.
+MESH_BINDINGS = {
+    "mesh_vertices": lambda flat: flat.mesh.vertices,
+    "mesh_faces": lambda flat: flat.mesh.faces,
+    "mesh_normals": lambda flat: flat.mesh.normals,
+    "bvh_nodes": lambda flat: flat.mesh.bvh.nodes,
+}
 
 
 @dataclass(frozen=True)
@@ -210,6 +221,9 @@ class Binding:
         data = binding_data(flat, self.name)
         if self.is_index:
             return _packed_index(data).tobytes()
+        if self.name in ("mesh_faces", "bvh_nodes"):   # int32 rows, and nodes that hold int32 bits
+            raw = np.ascontiguousarray(data).tobytes()
+            return raw + bytes(self.size - len(raw))
         packed = np.zeros(self.size // 4, dtype=np.float32)  # an empty array still binds 16 bytes
         packed[:data.size] = np.ascontiguousarray(data, dtype=np.float32).reshape(-1)
         return packed.tobytes()
@@ -316,6 +330,14 @@ def _bindings(flat, features, scene_buffer: str) -> list:
         for kind in SHAPES:
             if kind.name not in features:
                 continue
+            if kind.bvh:
+                mesh = flat.mesh
+                wanted.append(("mesh_vertices", "array<f32>", mesh.vertices, False))
+                wanted.append(("mesh_faces", "array<vec4i>", mesh.faces, False))
+                if mesh.normals is not None:
+                    wanted.append(("mesh_normals", "array<f32>", mesh.normals, False))
+                wanted.append(("bvh_nodes", "array<BVHNode>", mesh.bvh.nodes, False))
+                continue
             count = "NUM_" + kind.table.upper()
             wanted.append((kind.table, "array<%s, %s>" % (kind.record, count),
                            flat.table(kind.name), False))
@@ -343,7 +365,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
         size = len(_packed_index(data)) * 4 if is_index else max(data.size, 4) * 4
         if name == "camera":
             kind = "uniform"
-        elif name in ("samples", "shuffled", "texels"):   # arrays of 8 and 4 bytes: storage only
+        elif name in ("samples", "shuffled", "texels") or name in MESH_BINDINGS:   # storage only
             kind = "storage"
         else:
             kind = scene_buffer if size <= MAX_UNIFORM_BYTES else "storage"

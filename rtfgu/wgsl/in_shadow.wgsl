@@ -13,5 +13,10 @@ fn in_shadow(position: vec3f, w_i: vec3f, dist: f32) -> bool
         }
     }
     // #end
+    // #if mesh
+    if (mesh_any(shadow_ray)) {
+        return true;
+    }
+    // #endif
     return false;
 }

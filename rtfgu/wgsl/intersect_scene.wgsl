@@ -69,6 +69,12 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
         }
     }
     // #end
+    // #if mesh
+    // The mesh triangles: through the BVH (intersect_mesh.wgsl), with the same tie rule.
+    if (mesh_closest(r, hit, &shape, &row)) {
+        kind = MESH;
+    }
+    // #endif
     // #if debug
     hit_shape = shape;
     // #endif

@@ -50,5 +50,10 @@ fn shape_texcoord(kind: i32, row: u32, p: vec3f) -> vec2f
         return texcoord_$kind(p, $args);
     }
     // #end
+    // #if mesh
+    if (kind == MESH) {
+        return texcoord_mesh(p, row);
+    }
+    // #endif
     return vec2f(0.0);
 }

@@ -1,0 +1,923 @@
+"""The mesh section of docs/bench.md: rtfgu's numba BVH over triangle meshes against Embree
+(through embreex) and Mitsuba 3, on the same meshes and the same rays, in one run; and
+Mitsuba 3 on the 64 spheres of the first table. Writes the plot docs/bench_meshes.png.
+
+``benchmarks/bench.py`` puts ``meshes_section()`` into docs/bench.md; run alone,
+
+    python benchmarks/meshes.py [--quick]
+
+measures this section only and replaces it in docs/bench.md (the text between START and END;
+appended when the file has none). A script, not a test: nothing is asserted, and a peer that
+cannot be installed or run is named in the section with the reason instead of a figure.
+
+Meshes (MESHES): an icosphere subdivided ICOSPHERE_SUBDIVISIONS times (1.3 M triangles) whose
+vertices are moved along their radius by a smooth, seeded noise (displaced_icosphere), and
+the Stanford bunny shipped with rtfgu. Rays, per mesh (RAY_SETS), float64 and seeded:
+PRIMARY x PRIMARY primary rays of a pinhole camera whose square view the mesh fills, and
+INCOHERENT rays from points uniform in the mesh's bounding box in directions uniform on the
+sphere. Every ray is a unit direction, so t is a distance; tmin = 0, tmax = inf; closest hit.
+The float32 paths (rtfgu float32, Embree, Mitsuba) get the same rays rounded to float32 and
+the vertices rounded to float32; rtfgu float64 gets the float64 ones.
+
+The paths (``System.paths``):
+  rtfgu numba    rtfgu.accelerators.flat_bvh.build over the faces' boxes, the faces permuted
+                 into leaf order, and rtfgu.kernels.mesh.mesh_closest called per ray by a
+                 prange kernel (closest_hits); float64 and float32 on the one node table.
+  Embree         embreex.rtcore_scene.EmbreeScene (robust=True) with one
+                 embreex.mesh_construction.TriangleMesh; ``scene.run(origins, directions,
+                 output=1)`` traces its rays one by one (rtcIntersect1) without the GIL, so
+                 the rays are cut into EMBREE_CHUNKS parts run on numba's thread count of
+                 Python threads; a second row runs it on one thread. Embree is the reference
+                 of the error columns.
+  Mitsuba 3      ``llvm_ad_rgb`` (``scalar_rgb`` when the LLVM backend is missing: the rays are
+                 then traced one by one from Python, on the first SCALAR_RAYS rays only): one
+                 mi.Mesh filled from the arrays (vertex_positions, faces) in a scene of
+                 mi.load_dict, and ``scene.ray_intersect_preliminary`` on all rays at once.
+
+Timing: every path is run once first (the warm-up: numba and Dr.Jit compile then), then RUNS
+rounds time each path once (round-robin, so a change in the machine's load hits all alike);
+the median is quoted. A time covers tracing the rays and returning t and the face: not making
+the rays, nor turning them into Dr.Jit arrays for Mitsuba (done once, before the timing).
+Build: from the vertex and face arrays to a structure ready to trace, median of BUILD_RUNS
+after a warm-up build; rtfgu: triangle_bounds + flat_bvh.build + the permuted faces; Embree:
+a new scene, TriangleMesh and the commit (done by the first ``run``, of one ray); Mitsuba:
+mi.Mesh, its buffers and mi.load_dict. Bytes per triangle: rtfgu's node table + the (F, 4)
+int32 faces + the vertices, over the triangles; the peers do not say what they keep.
+
+Error against Embree (reported, not asserted): the share of rays that one path hits and the
+other misses; of rays both hit, the share hitting another face, and of those the share whose
+t differs by more than TOL relative (another surface, not a shared edge or vertex); the
+largest relative difference in t on rays that hit the same face, and on all rays both hit.
+Embree computes in float32, so float32 rounding is in every difference.
+
+The 64 spheres (bench.py's random_spheres_64 at 1024 x 1024): rtfgu.render with the numba
+backend (the figure of the first table: it makes the rays and writes the image too) and the
+spheres-only kernel of benchmarks/spheres_only.py, against Mitsuba's
+``ray_intersect_preliminary`` on 64 ``sphere`` shapes and the camera's primary rays (made by
+rtfgu.kernels.camera.gen_ray, rounded to float32), timed the same way. Error: the share of
+pixels whose sphere (or background) differs from the numba float64 render.
+"""
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import statistics
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from importlib import metadata
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+from numba import njit, prange
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(HERE))
+
+from rtfgu.accelerators import flat_bvh  # noqa: E402
+from rtfgu.kernels.camera import gen_ray  # noqa: E402
+from rtfgu.kernels.float3 import lit  # noqa: E402
+from rtfgu.kernels.mesh import mesh_closest  # noqa: E402
+
+from bench import cpu_model  # noqa: E402
+
+START = "<!-- meshes section: benchmarks/meshes.py -->"
+END = "<!-- end of meshes section -->"
+
+ICOSPHERE_SUBDIVISIONS, QUICK_SUBDIVISIONS = 8, 4
+NOISE_SEED, RAY_SEED = 2562, 1
+PRIMARY, QUICK_PRIMARY = 1024, 128
+INCOHERENT, QUICK_INCOHERENT = 1 << 20, 1 << 14
+RUNS = 5
+BUILD_RUNS = 3
+TOL = 1e-4
+EMBREE_CHUNKS = 64
+SCALAR_RAYS = 1 << 16
+SPHERE_SIZE, QUICK_SPHERE_SIZE = 1024, 128
+
+
+def version(package: str) -> str:
+    try:
+        return metadata.version(package)
+    except metadata.PackageNotFoundError:
+        return "not installed"
+
+
+# ---- meshes and rays --------------------------------------------------------------------
+
+@dataclass
+class MeshArrays:
+    name: str
+    vertices: np.ndarray  # (V, 3) float64
+    faces: np.ndarray     # (F, 3) int64
+    about: str
+
+
+def displaced_icosphere(subdivisions: int, seed: int = NOISE_SEED) -> MeshArrays:
+    """trimesh's icosphere with each vertex p moved to p (1 + n(p)): n is 0.1 times a sum of
+    12 plane waves 0.3 / k sin(k f.p + phase) of seeded directions f and wave numbers k in
+    [2, 8], so the surface stays smooth (|grad n| <= 0.03 per wave) and no face loses its
+    area."""
+    import trimesh
+    sphere = trimesh.creation.icosphere(subdivisions=subdivisions)
+    p = np.asarray(sphere.vertices, dtype=np.float64)
+    rng = np.random.default_rng(seed)
+    f = rng.normal(size=(12, 3))
+    f /= np.linalg.norm(f, axis=1)[:, None]
+    k = rng.uniform(2.0, 8.0, 12)
+    phase = rng.uniform(0.0, 2.0 * math.pi, 12)
+    noise = (0.3 / k * np.sin(k * (p @ f.T) + phase)).sum(axis=1) * 0.1
+    faces = np.asarray(sphere.faces, dtype=np.int64)
+    return MeshArrays("displaced icosphere", p * (1.0 + noise)[:, None], faces,
+                      "trimesh.creation.icosphere(subdivisions=%d), radially displaced by a "
+                      "seeded smooth noise (displaced_icosphere, seed %d)" % (subdivisions, seed))
+
+
+def bunny() -> MeshArrays:
+    from rtfgu.obj import load_obj, mesh_path
+    mesh = load_obj(mesh_path("bunny.obj"))
+    return MeshArrays("bunny", np.asarray(mesh.vertices, dtype=np.float64),
+                      np.asarray(mesh.faces, dtype=np.int64),
+                      "the Stanford bunny shipped with rtfgu (rtfgu/meshes/bunny.obj)")
+
+
+@dataclass
+class Rays:
+    name: str
+    origins: np.ndarray     # (n, 3) float64
+    directions: np.ndarray  # (n, 3) float64, unit
+    origins32: np.ndarray = field(init=False)
+    directions32: np.ndarray = field(init=False)
+
+    def __post_init__(self):
+        self.origins32 = np.ascontiguousarray(self.origins, dtype=np.float32)
+        self.directions32 = np.ascontiguousarray(self.directions, dtype=np.float32)
+
+    def of(self, precision: str):
+        if precision == "float64":
+            return self.origins, self.directions
+        return self.origins32, self.directions32
+
+    def __len__(self):
+        return len(self.origins)
+
+
+def normalized(v: np.ndarray) -> np.ndarray:
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+def primary_rays(vertices: np.ndarray, size: int, view=(0.35, -0.3, -1.0)) -> Rays:
+    """size x size rays of a pinhole camera looking along ``view`` at the centre of the
+    mesh's box from 2.5 box diagonals away, with the narrowest square view that holds every
+    vertex: the mesh touches two opposite edges of the image. Row 0 is the top."""
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    w = normalized(np.asarray(view, dtype=np.float64))
+    eye = (lo + hi) / 2 - w * 2.5 * np.linalg.norm(hi - lo)
+    u = normalized(np.cross(w, (0.0, 1.0, 0.0)))
+    v = np.cross(u, w)
+    rel = vertices - eye
+    depth = rel @ w
+    half = max(np.abs(rel @ u / depth).max(), np.abs(rel @ v / depth).max())
+    s = (2 * (np.arange(size) + 0.5) / size - 1) * half
+    sx, sy = np.meshgrid(s, -s)
+    directions = normalized(sx[..., None] * u + sy[..., None] * v + w).reshape(-1, 3)
+    return Rays("%dx%d primary" % (size, size), np.broadcast_to(eye, directions.shape).copy(),
+                directions)
+
+
+def incoherent_rays(vertices: np.ndarray, count: int, seed: int = RAY_SEED) -> Rays:
+    """Origins uniform in the mesh's box, directions uniform on the sphere (normalised
+    Gaussians)."""
+    rng = np.random.default_rng(seed)
+    origins = rng.uniform(vertices.min(axis=0), vertices.max(axis=0), (count, 3))
+    return Rays("%s incoherent" % count_label(count), origins,
+                normalized(rng.normal(size=(count, 3))))
+
+
+def count_label(n: int) -> str:
+    """1048576 -> "1 M", 16384 -> "16 k"."""
+    if n % (1 << 20) == 0:
+        return "%d M" % (n >> 20)
+    if n % (1 << 10) == 0:
+        return "%d k" % (n >> 10)
+    return str(n)
+
+
+# ---- the paths --------------------------------------------------------------------------
+
+@dataclass
+class Path_:
+    """One way to trace: ``prepare(rays)`` once, untimed; ``run(prepared)`` is timed;
+    ``result(raw)`` gives t (inf on a miss) and the face index (-1) as numpy arrays."""
+    system: str
+    precision: str
+    threads: int
+    run: Callable
+    prepare: Callable = None
+    result: Callable = None
+    note: str = ""
+
+    @property
+    def label(self) -> str:
+        return "%s %s" % (self.system, self.precision)
+
+
+class System:
+    """A ray tracer under test: ``build(mesh)`` makes its structure and returns the seconds
+    it took (the last build is kept); ``paths()`` traces with it."""
+    name = ""
+    about = ""
+
+    def build(self, mesh: MeshArrays) -> float:
+        raise NotImplementedError
+
+    def paths(self) -> list:
+        raise NotImplementedError
+
+    def bytes_per_triangle(self) -> dict:
+        return {}
+
+    def build_note(self) -> str:
+        return ""
+
+
+@njit(parallel=True, error_model="numpy")
+def closest_hits(vertices, faces4, nodes, links, origins, directions, t_out, face_out):
+    """The nearest face of every ray (origins[i], directions[i]) in [0, inf): its t (inf on
+    a miss) and its index in the mesh's face list (-1)."""
+    for i in prange(origins.shape[0]):
+        origin = (origins[i, 0], origins[i, 1], origins[i, 2])
+        direction = (directions[i, 0], directions[i, 1], directions[i, 2])
+        tmin = lit(0, origins[i, 0])
+        hit = mesh_closest(vertices, faces4, nodes, links, 0, origin, direction, tmin,
+                           (lit(math.inf, tmin), -1, -1, -1))
+        t_out[i] = hit[0]
+        face_out[i] = hit[1]
+
+
+class Rtfgu(System):
+    name = "rtfgu numba"
+
+    def __init__(self, threads):
+        self.threads = threads
+        self.tree_seconds = []
+
+    def build(self, mesh):
+        if getattr(self, "mesh", None) is not mesh:
+            self.mesh, self.tree_seconds = mesh, []
+        start = time.perf_counter()
+        lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+        bvh = flat_bvh.build(lo, hi)
+        faces4 = np.empty((len(mesh.faces), 4), dtype=np.int32)
+        faces4[:, :3] = mesh.faces[bvh.order]
+        faces4[:, 3] = bvh.order
+        seconds = time.perf_counter() - start
+        self.tree_seconds.append(bvh.build_seconds)
+        self.bvh, self.faces4 = bvh, faces4
+        self.vertices = {"float64": np.ascontiguousarray(mesh.vertices, dtype=np.float64),
+                         "float32": np.ascontiguousarray(mesh.vertices, dtype=np.float32)}
+        return seconds
+
+    def paths(self):
+        def path(precision):
+            def run(rays):
+                origins, directions = rays.of(precision)
+                t = np.empty(len(origins), dtype=origins.dtype)
+                face = np.empty(len(origins), dtype=np.int64)
+                closest_hits(self.vertices[precision], self.faces4, self.bvh.nodes,
+                             self.bvh.links, origins, directions, t, face)
+                return t, face
+            return Path_(self.name, precision, self.threads, run)
+        return [path("float64"), path("float32")]
+
+    def bytes_per_triangle(self):
+        n = len(self.faces4)
+        return {p: (self.bvh.nbytes + self.faces4.nbytes + v.nbytes) / n
+                for p, v in self.vertices.items()}
+
+    def build_note(self):
+        return "flat_bvh.build alone: %.3g s (median); %d nodes, depth %d" % (
+            statistics.median(self.tree_seconds[1:] or self.tree_seconds),
+            self.bvh.num_nodes, self.bvh.depth())
+
+
+class Embree(System):
+    name = "Embree"
+
+    def __init__(self, threads):
+        from embreex import mesh_construction, rtcore_scene
+        self.rtcore_scene, self.mesh_construction = rtcore_scene, mesh_construction
+        self.threads = threads
+        self.pool = ThreadPoolExecutor(threads)
+        self.about = ("embreex %s (Embree 4, robust scene flag; its run traces one ray at a "
+                      "time with rtcIntersect1)" % version("embreex"))
+
+    def build(self, mesh):
+        self.scene = None  # the previous scene is released before the next one is built
+        vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float32)
+        faces = np.ascontiguousarray(mesh.faces, dtype=np.int32)
+        one = np.zeros((1, 3), dtype=np.float32)
+        start = time.perf_counter()
+        scene = self.rtcore_scene.EmbreeScene(robust=True)
+        self.mesh_construction.TriangleMesh(scene, vertices, faces)
+        scene.run(one, one + np.float32(1), output=1)  # embreex commits at the first run
+        seconds = time.perf_counter() - start
+        self.scene = scene
+        return seconds
+
+    def trace(self, rays, threads):
+        origins, directions = rays.of("float32")
+        cuts = np.linspace(0, len(origins), EMBREE_CHUNKS + 1).astype(int)
+
+        def part(k):
+            a, b = cuts[k], cuts[k + 1]
+            return self.scene.run(origins[a:b], directions[a:b], output=1)
+        if threads == 1:
+            parts = [part(k) for k in range(EMBREE_CHUNKS)]
+        else:
+            parts = list(self.pool.map(part, range(EMBREE_CHUNKS)))
+        face = np.concatenate([p["primID"] for p in parts]).astype(np.int64)
+        t = np.concatenate([p["tfar"] for p in parts])
+        t[face < 0] = np.inf  # a miss keeps tfar at embreex's 1e37
+        return t, face
+
+    def paths(self):
+        out = [Path_(self.name, "float32", self.threads,
+                     lambda rays: self.trace(rays, self.threads),
+                     note="%d Python threads over %d parts" % (self.threads, EMBREE_CHUNKS))]
+        if self.threads > 1:
+            out.append(Path_(self.name, "float32", 1, lambda rays: self.trace(rays, 1),
+                             note="one thread"))
+        return out
+
+
+def load_mitsuba():
+    """(mitsuba module, variant, why not LLVM or ""). The LLVM variant is tried on a small
+    scene, since it can import without the LLVM library and fail at the first kernel."""
+    import drjit as dr
+    import mitsuba as mi
+    try:
+        mi.set_variant("llvm_ad_rgb")
+        scene = mi.load_dict({"type": "scene", "s": {"type": "sphere"}})
+        ray = mi.Ray3f(mi.Point3f(0, 0, 5), mi.Vector3f(0, 0, -1))
+        t = scene.ray_intersect_preliminary(ray).t
+        dr.eval(t)
+        if abs(float(t.numpy()[0]) - 4.0) > 1e-5:
+            raise RuntimeError("a test ray hit at t = %s, not 4" % t)
+        return mi, "llvm_ad_rgb", ""
+    except Exception as error:
+        mi.set_variant("scalar_rgb")
+        return mi, "scalar_rgb", "llvm_ad_rgb failed: %s" % str(error).splitlines()[0]
+
+
+class Mitsuba(System):
+    name = "Mitsuba 3"
+
+    def __init__(self, threads):
+        import drjit as dr
+        self.dr = dr
+        self.mi, self.variant, self.why = load_mitsuba()
+        self.llvm = self.variant.startswith("llvm")
+        self.threads = dr.thread_count() if self.llvm else 1
+        self.about = "mitsuba %s, drjit %s, variant %s (%sintersected by %s)" % (
+            version("mitsuba"), version("drjit"), self.variant,
+            "all rays in one Dr.Jit kernel on %d threads, " % self.threads if self.llvm else "",
+            "its own Embree 3" if getattr(self.mi, "MI_ENABLE_EMBREE", False)
+            else "its own kd-tree")
+        if self.why:
+            self.about += "; %s" % self.why
+
+    def build(self, mesh):
+        mi = self.mi
+        self.scene = None
+        vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float32).ravel()
+        faces = np.ascontiguousarray(mesh.faces, dtype=np.uint32).ravel()
+        start = time.perf_counter()
+        shape = mi.Mesh("mesh", len(mesh.vertices), len(mesh.faces), has_vertex_normals=False,
+                        has_vertex_texcoords=False)
+        params = mi.traverse(shape)
+        # The buffers' own types: mi.Float and mi.UInt in the LLVM variant, dynamic arrays in
+        # the scalar one.
+        params["vertex_positions"] = type(params["vertex_positions"])(vertices)
+        params["faces"] = type(params["faces"])(faces)
+        params.update()
+        self.scene = mi.load_dict({"type": "scene", "mesh": shape})
+        return time.perf_counter() - start
+
+    def ray_array(self, origins, directions):
+        mi = self.mi
+        ray = mi.Ray3f(o=mi.Point3f(*(mi.Float(origins[:, i]) for i in range(3))),
+                       d=mi.Vector3f(*(mi.Float(directions[:, i]) for i in range(3))))
+        self.dr.eval(ray)
+        return ray
+
+    def intersect(self, ray):
+        pi = self.scene.ray_intersect_preliminary(ray)
+        self.dr.eval(pi.t, pi.prim_index, pi.shape)
+        self.dr.sync_thread()  # LLVM kernels run asynchronously
+        return pi
+
+    def paths(self):
+        mi = self.mi
+        if self.llvm:
+            def prepare(rays):
+                return self.ray_array(*rays.of("float32"))
+
+            def result(pi):
+                t = pi.t.numpy().astype(np.float32)
+                face = pi.prim_index.numpy().astype(np.int64)
+                face[~np.isfinite(t)] = -1
+                return t, face
+            return [Path_(self.name, "float32", self.threads, self.intersect, prepare, result)]
+
+        def prepare_scalar(rays):
+            origins, directions = rays.of("float32")
+            return origins[:SCALAR_RAYS].tolist(), directions[:SCALAR_RAYS].tolist()
+
+        def run_scalar(prepared):
+            t, face = [], []
+            for o, d in zip(*prepared):
+                pi = self.scene.ray_intersect_preliminary(mi.Ray3f(mi.Point3f(o), mi.Vector3f(d)))
+                t.append(pi.t)
+                face.append(pi.prim_index if math.isfinite(pi.t) else -1)
+            return np.array(t, dtype=np.float32), np.array(face, dtype=np.int64)
+        return [Path_(self.name, "float32", 1, run_scalar, prepare_scalar,
+                      note="scalar_rgb from Python, on at most the first %d rays" % SCALAR_RAYS)]
+
+
+# ---- measuring --------------------------------------------------------------------------
+
+@dataclass
+class Measured:
+    mesh: str
+    triangles: int
+    rays: str
+    path: Path_
+    count: int = 0
+    times: list = field(default_factory=list)
+    first_call: float = float("nan")
+    t: np.ndarray = None
+    face: np.ndarray = None
+    error: dict = None
+    failed: str = ""
+    reference: bool = False  # the others' error is measured against this one
+
+    @property
+    def rate(self) -> float:
+        return self.count / statistics.median(self.times)
+
+
+@dataclass
+class Built:
+    mesh: str
+    triangles: int
+    system: str
+    seconds: float = None
+    first: float = None
+    per_triangle: dict = None
+    note: str = ""
+    failed: str = ""
+
+
+def compare(t, face, t_ref, face_ref) -> dict:
+    """The error columns of ``t, face`` against the reference on the same rays (the first
+    len(t) of them)."""
+    t = np.asarray(t, dtype=np.float64)
+    t_ref = np.asarray(t_ref[:len(t)], dtype=np.float64)
+    face_ref = face_ref[:len(t)]
+    hit, hit_ref = face >= 0, face_ref >= 0
+    both = hit & hit_ref
+    with np.errstate(invalid="ignore"):  # inf - inf on rays both miss; not read
+        rel = np.abs(t - t_ref) / np.maximum(np.abs(t_ref), np.finfo(np.float64).tiny)
+    other = both & (face != face_ref)
+    same = both & (face == face_ref)
+    return {"hit_miss": float(np.mean(hit != hit_ref)),
+            "other_face": float(np.sum(other)) / max(1, int(np.sum(both))),
+            "other_far": float(np.sum(other & (rel > TOL))) / max(1, int(np.sum(both))),
+            "rel_same": float(rel[same].max()) if same.any() else float("nan"),
+            "rel_both": float(rel[both].max()) if both.any() else float("nan"),
+            "hits": float(np.mean(hit_ref))}
+
+
+def timed(fn, *args):
+    start = time.perf_counter()
+    result = fn(*args)
+    return result, time.perf_counter() - start
+
+
+def measure_builds(system, mesh, runs, log):
+    """(median seconds of ``runs`` builds after a warm-up one, the warm-up's seconds)."""
+    first = system.build(mesh)
+    seconds = [system.build(mesh) for _ in range(runs)]
+    log("  %s: build %.3g s (first %.3g s)" % (system.name, statistics.median(seconds), first))
+    return statistics.median(seconds), first
+
+
+def round_robin(measured, prepared, runs, log, what):
+    for number in range(runs):
+        for m in measured:
+            if not m.failed:
+                m.times.append(timed(m.path.run, prepared[id(m)])[1])
+        log("  %s: round %d of %d done" % (what, number + 1, runs))
+
+
+def bench_mesh(mesh, systems, ray_sets, runs, build_runs, log):
+    """(build rows, trace rows) of one mesh: every system built, then every path timed on
+    every ray set."""
+    builds, measured, built = [], [], []
+    for system in systems:
+        row = Built(mesh.name, len(mesh.faces), system.name)
+        try:
+            row.seconds, row.first = measure_builds(system, mesh, build_runs, log)
+            row.per_triangle, row.note = system.bytes_per_triangle(), system.build_note()
+            built.append(system)
+        except Exception as error:
+            row.failed = str(error).splitlines()[0] if str(error) else repr(error)
+            log("  %s: build failed: %s" % (system.name, row.failed))
+        builds.append(row)
+    for rays in ray_sets:
+        rows, prepared = [], {}
+        for system in built:
+            for path in system.paths():
+                m = Measured(mesh.name, len(mesh.faces), rays.name, path)
+                try:
+                    prepared[id(m)] = path.prepare(rays) if path.prepare else rays
+                    raw, m.first_call = timed(path.run, prepared[id(m)])  # the warm-up
+                    m.t, m.face = path.result(raw) if path.result else raw
+                    m.count = len(m.t)
+                except Exception as error:
+                    m.failed = str(error).splitlines()[0] if str(error) else repr(error)
+                    log("  %s on %s: failed: %s" % (path.label, rays.name, m.failed))
+                rows.append(m)
+        log("%s, %s: warm-up done" % (mesh.name, rays.name))
+        round_robin(rows, prepared, runs, log, "%s, %s" % (mesh.name, rays.name))
+        reference = next((m for m in rows if m.path.system == Embree.name and not m.failed),
+                         None)
+        if reference is not None:
+            reference.reference = True
+        for m in rows:
+            if reference is not None and not m.failed:
+                m.error = compare(m.t, m.face, reference.t, reference.face)
+        for m in rows:
+            m.t = m.face = None  # the arrays of 1 M rays are not kept past their comparison
+        measured += rows
+    return builds, measured
+
+
+# ---- the 64 spheres ---------------------------------------------------------------------
+
+@njit(parallel=True, error_model="numpy")
+def camera_rays(camera_kind, camera, width, height, origins, directions):
+    """The primary ray of every pixel as rtfgu's render makes it (pixel centres; row 0 of
+    the image, the first ``width`` rays, is the top)."""
+    for iy in prange(height):
+        for ix in range(width):
+            sx = 2.0 * (ix + 0.5) / width - 1.0
+            sy = 2.0 * (iy + 0.5) / height - 1.0
+            origin, direction, _, _ = gen_ray(camera_kind, camera, sx, sy)
+            k = (height - 1 - iy) * width + ix
+            for c in range(3):
+                origins[k, c] = origin[c]
+                directions[k, c] = direction[c]
+
+
+def bench_spheres(mitsuba, size, runs, log):
+    """Rows (label, precision, threads, rays/s, pixels differing, what is timed, note) for
+    the 64-sphere scene."""
+    from rtfgu.layout import CAMERA_WIDTH, MAT_COLOR, SPHERE_RADIUS, compile_scene
+    from rtfgu.renderer import render
+
+    import scenes as bench_scenes
+    import spheres_only
+
+    scene = bench_scenes.random_spheres_64()
+    flat = compile_scene(scene, "float64")
+    spheres = flat.table("sphere")
+    colors = np.vstack([flat.materials[:, MAT_COLOR:MAT_COLOR + 3], flat.background[None, :3]])
+    reference = render(scene, size, size, backend="numba", precision="float64")
+
+    def differ(image):
+        return float(np.mean(np.any(np.abs(image - reference) > 1e-6, axis=2)))
+
+    rows = []  # [label, precision, threads, run, prepared, times, differ, timed what, note]
+    import numba
+    for precision in ("float64", "float32"):
+        def run_render(_, precision=precision):
+            return render(scene, size, size, backend="numba", precision=precision)
+        rows.append(["rtfgu.render numba (slide)", precision, numba.get_num_threads(),
+                     run_render, None, [], differ(run_render(None)),
+                     "whole render: rays, intersection, image", ""])
+        flat_p = compile_scene(scene, precision)
+
+        def run_kernel(_, flat_p=flat_p):
+            return spheres_only.run_spheres_only(flat_p, size, size)
+        rows.append(["spheres-only kernel", precision, numba.get_num_threads(), run_kernel, None,
+                     [], differ(run_kernel(None)), "rays, intersection, image", ""])
+    if isinstance(mitsuba, str):
+        rows.append(["Mitsuba 3", "float32", 0, None, None, [], float("nan"), "-", mitsuba])
+    else:
+        mi, dr = mitsuba.mi, mitsuba.dr
+        try:
+            if not mitsuba.llvm:
+                raise RuntimeError("the scalar variant is not timed on the spheres")
+            camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH), dtype=np.float64)
+            origins = np.empty((size * size, 3))
+            directions = np.empty((size * size, 3))
+            camera_rays(flat.camera_kind, camera, size, size, origins, directions)
+            shapes = {"sphere_%02d" % i: {"type": "sphere", "center": s[:3].tolist(),
+                                          "radius": float(s[SPHERE_RADIUS])}
+                      for i, s in enumerate(spheres)}
+            start = time.perf_counter()
+            mscene = mi.load_dict({"type": "scene", **shapes})
+            load = time.perf_counter() - start
+            # Dr.Jit names a shape by its registry number: map those to the rows of ``spheres``.
+            number = dict(zip(dr.reinterpret_array(mi.UInt32, mscene.shapes_dr()).numpy(),
+                              (int(s.id().split("_")[1]) for s in mscene.shapes())))
+            ray = mitsuba.ray_array(origins.astype(np.float32), directions.astype(np.float32))
+
+            def run_mitsuba(ray):
+                pi = mscene.ray_intersect_preliminary(ray)
+                dr.eval(pi.t, pi.shape)
+                dr.sync_thread()
+                return pi
+            pi = run_mitsuba(ray)
+            hit = dr.reinterpret_array(mi.UInt32, pi.shape).numpy()
+            which = np.array([number.get(h, len(spheres)) for h in range(max(number) + 1)])
+            index = np.where(hit == 0, len(spheres), which[np.minimum(hit, len(which) - 1)])
+            image = colors[index].reshape(size, size, 3)
+            rows.append(["Mitsuba 3 ray_intersect_preliminary", "float32", mitsuba.threads,
+                         run_mitsuba, ray, [], differ(image), "intersection only",
+                         "scene load %.3g s" % load])
+        except Exception as error:
+            rows.append(["Mitsuba 3", "float32", 0, None, None, [], float("nan"), "-",
+                         "not run: %s" % str(error).splitlines()[0]])
+    for number in range(runs):
+        for row in rows:
+            if row[3] is not None:
+                row[5].append(timed(row[3], row[4])[1])
+        log("  64 spheres: round %d of %d done" % (number + 1, runs))
+    return [(label, precision, threads, size * size / statistics.median(times) if times else None,
+             d, what, note)
+            for label, precision, threads, _, _, times, d, what, note in rows]
+
+
+# ---- the section ------------------------------------------------------------------------
+
+def fmt_rate(x) -> str:
+    return "-" if x is None else ("%.2f M" % (x / 1e6) if x >= 1e5 else "%.0f k" % (x / 1e3))
+
+
+def fmt_share(x) -> str:
+    if x is None or x != x:
+        return "-"
+    return "0" if x == 0 else "%.2g %%" % (100 * x)
+
+
+def fmt_rel(x) -> str:
+    return "-" if x is None or x != x else ("0" if x == 0 else "%.1e" % x)
+
+
+def trace_table(measured) -> list:
+    lines = ["| mesh | rays | path | precision | threads | rays/s | / Embree | hit/miss differ "
+             "| other face | ... at another t | max rel dt, same face | max rel dt, both hit "
+             "| note |",
+             "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+    groups = list(dict.fromkeys((m.mesh, m.rays) for m in measured))
+    measured = sorted(measured, key=lambda m: groups.index((m.mesh, m.rays)))
+    embree = {(m.mesh, m.rays): m.rate for m in measured
+              if m.path.system == Embree.name and m.path.threads > 1 and not m.failed}
+    embree1 = {(m.mesh, m.rays): m.rate for m in measured
+               if m.path.system == Embree.name and not m.failed}
+    for m in measured:
+        p = m.path
+        if m.failed:
+            lines.append("| %s | %s | %s | %s | %s | - | - | - | - | - | - | - | not run: %s |"
+                         % (m.mesh, m.rays, p.system, p.precision, p.threads or "-", m.failed))
+            continue
+        base = embree.get((m.mesh, m.rays)) or embree1.get((m.mesh, m.rays))
+        e = m.error or {}
+        lines.append("| %s | %s | %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            m.mesh, m.rays, p.system, p.precision, p.threads, fmt_rate(m.rate),
+            "%.2f" % (m.rate / base) if base else "-", fmt_share(e.get("hit_miss")),
+            fmt_share(e.get("other_face")), fmt_share(e.get("other_far")),
+            fmt_rel(e.get("rel_same")), fmt_rel(e.get("rel_both")),
+            "; ".join(x for x in (p.note, "the reference: %s of the rays hit" % fmt_share(
+                e["hits"]) if m.reference else "") if x)))
+    return lines
+
+
+def build_table(builds) -> list:
+    lines = ["| mesh | triangles | system | build (median) | first build | / Embree "
+             "| bytes per triangle | note |",
+             "|---|---:|---|---:|---:|---:|---:|---|"]
+    embree = {b.mesh: b.seconds for b in builds if b.system == Embree.name}
+    for b in builds:
+        if b.seconds is None:
+            lines.append("| %s | %d | %s | - | - | - | - | not run: %s |" % (
+                b.mesh, b.triangles, b.system, b.failed))
+            continue
+        lines.append("| %s | %d | %s | %.3g s | %.3g s | %s | %s | %s |" % (
+            b.mesh, b.triangles, b.system, b.seconds, b.first,
+            "%.2f" % (b.seconds / embree[b.mesh]) if embree.get(b.mesh) else "-",
+            ", ".join("%.1f (%s)" % (n, p) for p, n in b.per_triangle.items()) or "-", b.note))
+    return lines
+
+
+def sphere_table(rows, size) -> list:
+    lines = ["| path | precision | threads | rays/s | timed | pixels differing from numba "
+             "float64 | note |", "|---|---|---:|---:|---|---:|---|"]
+    for label, precision, threads, rate, d, what, note in rows:
+        lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
+            label, precision, threads or "-", fmt_rate(rate), what, fmt_share(d), note))
+    return lines
+
+
+def plot(measured, title, path):
+    import matplotlib
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+    import matplotlib.ticker
+
+    groups = list(dict.fromkeys((m.mesh, m.rays) for m in measured))
+    labels = list(dict.fromkeys("%s %s, %d thr." % (m.path.system, m.path.precision,
+                                                   m.path.threads)
+                                for m in measured if not m.failed))
+    fig, ax = plt.subplots(figsize=(9, 4.2))
+    width = 0.8 / max(1, len(labels))
+    for j, label in enumerate(labels):
+        xs, ys = [], []
+        for i, g in enumerate(groups):
+            for m in measured:
+                if (m.mesh, m.rays) == g and not m.failed and label == "%s %s, %d thr." % (
+                        m.path.system, m.path.precision, m.path.threads):
+                    xs.append(i + (j - (len(labels) - 1) / 2) * width)
+                    ys.append(m.rate / 1e6)
+        ax.bar(xs, ys, width, label=label, color=plt.get_cmap("tab10")(j))
+    ax.set_xticks(range(len(groups)))
+    ax.set_xticklabels(["%s\n%s" % g for g in groups], fontsize=8)
+    ax.set_yscale("log")
+    ax.yaxis.set_major_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.yaxis.set_minor_formatter(matplotlib.ticker.FormatStrFormatter("%g"))
+    ax.tick_params(axis="y", which="minor", labelsize=7)
+    ax.set_ylabel("million rays/s (closest hit; median)")
+    ax.grid(True, axis="y", which="both", alpha=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    ax.set_title("rtfgu's numba BVH, Embree and Mitsuba 3 on %s" % title, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def meshes_section(plot_path=None, quick=False, log=print) -> str:
+    """Measure, write the plot at ``plot_path`` (None: no plot), and return the markdown
+    section (from START to END) for a file in ``plot_path``'s folder."""
+    import numba
+    started = time.perf_counter()
+    load_start = os.getloadavg()
+    threads = numba.get_num_threads()
+    runs, build_runs = (1, 1) if quick else (RUNS, BUILD_RUNS)
+    primary = QUICK_PRIMARY if quick else PRIMARY
+    incoherent = QUICK_INCOHERENT if quick else INCOHERENT
+    sphere_size = QUICK_SPHERE_SIZE if quick else SPHERE_SIZE
+
+    systems, missing = [Rtfgu(threads)], {}
+    for cls, package in ((Embree, "embreex"), (Mitsuba, "mitsuba")):
+        try:
+            systems.append(cls(threads))
+        except Exception as error:  # the section says which peer did not run, and why
+            missing[cls.name] = "%s: %s (`make bench` installs the bench extra)" % (
+                package, str(error).splitlines()[0] if str(error) else repr(error))
+            log("%s: not run: %s" % (cls.name, missing[cls.name]))
+    mitsuba = next((s for s in systems if isinstance(s, Mitsuba)), None)
+
+    meshes = [displaced_icosphere(QUICK_SUBDIVISIONS if quick else ICOSPHERE_SUBDIVISIONS),
+              bunny()]
+    builds, measured = [], []
+    for mesh in meshes:
+        log("meshes: %s, %d triangles" % (mesh.name, len(mesh.faces)))
+        ray_sets = [primary_rays(mesh.vertices, primary),
+                    incoherent_rays(mesh.vertices, incoherent)]
+        b, m = bench_mesh(mesh, systems, ray_sets, runs, build_runs, log)
+        builds += b + [Built(mesh.name, len(mesh.faces), name, failed=why)
+                       for name, why in missing.items()]
+        measured += m
+        for rays in ray_sets:
+            measured += [Measured(mesh.name, len(mesh.faces), rays.name,
+                                  Path_(name, "float32", 0, None), failed=why)
+                         for name, why in missing.items()]
+
+    log("meshes: the 64 spheres at %dx%d" % (sphere_size, sphere_size))
+    sphere_rows = bench_spheres(mitsuba or "not run: %s" % missing.get(Mitsuba.name),
+                                sphere_size, runs, log)
+    load_end = os.getloadavg()
+
+    machine = "%s, %d cores, numba %d threads" % (cpu_model(), os.cpu_count(), threads)
+    figure = []
+    if plot_path is not None:
+        try:
+            plot(measured, machine, Path(plot_path))
+            figure = ["![rays/s per mesh, ray set and path](%s)" % Path(plot_path).name, ""]
+        except ImportError as error:  # no matplotlib: the tables still get written
+            figure = ["(No plot: %s. `make bench` installs matplotlib.)" % error, ""]
+    first_calls = {}
+    for m in measured:
+        if m.path.system == Rtfgu.name and not m.failed:
+            first_calls.setdefault(m.path.precision, m.first_call)
+    peers = [s.about for s in systems if s.about] + [
+        "%s not run (%s)" % kv for kv in missing.items()]
+    lines = [
+        START,
+        "## Meshes and the BVH",
+        "",
+        "Generated by benchmarks/meshes.py%s (also part of `make bench`); never edited by hand."
+        % (" --quick" if quick else ""),
+        "",
+        "- Meshes: %s." % "; ".join("**%s**, %d triangles: %s" % (
+            m.name, len(m.faces), m.about) for m in meshes),
+        "- Rays per mesh, closest hit in [0, inf), unit directions, seeded: %dx%d primary rays "
+        "of a pinhole camera whose square view the mesh fills; %d incoherent rays (origins "
+        "uniform in the mesh's bounding box, directions uniform on the sphere). float32 paths "
+        "get the rays and vertices rounded to float32." % (primary, primary, incoherent),
+        "- Peers: %s." % "; ".join(peers),
+        "- Time: median of %d round(s) after a warm-up run of every path (so numba's and "
+        "Dr.Jit's compile is excluded; rtfgu's first calls, compile included: %s); a round "
+        "times every path once (round-robin). Timed: tracing and returning t and the face, "
+        "not making the rays. Build: median of %d after a warm-up build, from the arrays to "
+        "a structure ready to trace (Embree: scene, TriangleMesh, commit; Mitsuba: mi.Mesh "
+        "and mi.load_dict)." % (runs, ", ".join("%s %.1f s" % kv for kv in first_calls.items())
+                                or "-", build_runs),
+        "- Error against Embree (float32, the multi-threaded row), reported, not asserted: "
+        "rays one path hits and the other misses (share of all rays); rays both hit on "
+        "another face (share of rays both hit), and of those the ones whose t differs by "
+        "more than %g relative (another surface, not a shared edge or vertex); the largest "
+        "relative t difference on the same face and on all rays both hit." % TOL,
+        "- Machine: %s; load average %.2f at the start, %.2f at the end; %.0f s in all."
+        % (machine, load_start[0], load_end[0], time.perf_counter() - started),
+        "",
+        *figure,
+        "### Rays per second and error against Embree",
+        "",
+        *trace_table(measured),
+        "",
+        "/ Embree: this row's rays/s over those of Embree on %d threads on the same rays. "
+        "A relative t difference is large where t is small: an incoherent ray can start a "
+        "hair from a face, and rounding its origin to float32 moves it by up to 6e-8 of its "
+        "coordinates." % threads,
+        "",
+        "### Build time and size",
+        "",
+        *build_table(builds),
+        "",
+        "rtfgu's bytes per triangle: the BVH's nodes (32 bytes each) + the faces (16 bytes) + "
+        "the vertices in that precision, over the triangles.",
+        "",
+        "### The 64 spheres",
+        "",
+        "random_spheres_64 (benchmarks/scenes.py) at %dx%d, primary rays only (flat colours); "
+        "rtfgu's rows are the paths of the first table, timed again here in the same run. "
+        "Mitsuba traces the camera's rays made by rtfgu.kernels.camera.gen_ray, rounded to "
+        "float32, through 64 `sphere` shapes." % (sphere_size, sphere_size),
+        "",
+        *sphere_table(sphere_rows, sphere_size),
+        "",
+        END,
+    ]
+    return "\n".join(lines) + "\n"
+
+
+def replace_section(text: str, section: str) -> str:
+    """``text`` with its mesh section replaced by ``section``, or ``section`` appended."""
+    if START in text and END in text:
+        before, rest = text.split(START, 1)
+        after = rest.split(END, 1)[1].lstrip("\n")
+        return before + section + ("\n" + after if after else "")
+    return text.rstrip("\n") + "\n\n" + section
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default=str(ROOT / "docs" / "bench.md"))
+    parser.add_argument("--quick", action="store_true",
+                        help="a check that everything runs: a %d-times subdivided icosphere, "
+                             "%dx%d and %d rays, 1 run" % (QUICK_SUBDIVISIONS, QUICK_PRIMARY,
+                                                          QUICK_PRIMARY, QUICK_INCOHERENT))
+    args = parser.parse_args(argv)
+    out = Path(args.out)
+    started = time.perf_counter()
+
+    def log(message):
+        print("[%5.0f s] %s" % (time.perf_counter() - started, message), flush=True)
+
+    section = meshes_section(out.parent / "bench_meshes.png", args.quick, log)
+    print(section)
+    out.write_text(replace_section(out.read_text() if out.exists() else "", section))
+    log("wrote %s" % out)
+
+
+if __name__ == "__main__":
+    main()

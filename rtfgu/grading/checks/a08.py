@@ -1,0 +1,114 @@
+"""a08: bounding boxes and the BVH (Suffern ch. 19, "Bounding Boxes", and ch. 22; Williams et
+al. 2005's slab test, widened as in PBRT-v4 section 6.1.2; PBRT-v4 section 7.3's traversal).
+The probes are in rtfgu/grading/probes/a08.py (visible) and a08_hidden.py; the box hints
+compare with the known mistakes of rtfgu.grading.mistakes.slab, the BVH hints compare the
+student's hit with the reference hit."""
+from __future__ import annotations
+
+import math
+
+from . import Check, register
+
+BOX = ("accelerators/bbox.py",)
+
+NO_SWAP = ("with a negative direction component the ray meets p1[a] before p0[a], so t_near = (p0[a] - o[a]) / w[a] "
+           "is the larger of the two: swap t_near and t_far when t_near > t_far")
+IGNORES_TMAX = ("your box test looks beyond ray.tmax: start with t1 = ray.tmax, not infinity, so that a box the ray "
+                "enters after tmax is a miss (math.inf)")
+IGNORES_TMIN = ("start with t0 = ray.tmin: a ray that starts inside the box enters it at tmin, and a box behind the "
+                "ray (every t < tmin) is a miss")
+EXIT = ("you returned where the ray leaves the box; BBox.hit returns where it enters, t0, the largest of tmin and "
+        "the t_near of the three axes")
+ZERO = ("where a direction component is 0 the ray never crosses that slab: it is inside it for every t when "
+        "p0[a] <= o[a] <= p1[a] and the box is missed otherwise; do not skip the axis without looking at o[a]")
+OPEN = ("the box and [tmin, tmax] are closed: a ray along a face, through an edge or a corner, or with tmax "
+        "exactly where it enters, hits; return math.inf only when t0 > t1 (not >=), or o[a] < p0[a] or o[a] > p1[a]")
+NO_WIDEN = ("this ray touches the box exactly, where it enters one slab and leaves another, and rounding puts t_near a "
+            "hair after t_far: multiply t_far by WIDEN (1 + 2 gamma_3, PBRT-v4 section 6.1.2) before comparing")
+
+BOX_HINTS = (("no_swap", NO_SWAP), ("ignores_tmax", IGNORES_TMAX), ("ignores_tmin", IGNORES_TMIN), ("exit", EXIT),
+             ("zero_skipped", ZERO), ("open_box", OPEN), ("no_widen", NO_WIDEN))
+
+
+def _same(got, want) -> bool:
+    if not isinstance(got, (int, float)) or isinstance(got, bool) or not isinstance(want, (int, float)):
+        return False
+    if math.isinf(want) or math.isinf(got):
+        return got == want
+    return abs(got - want) <= 1e-9 + 1e-6 * abs(want)
+
+
+def hint_box(inputs, want, got):
+    """Names the known mistake (rtfgu.grading.mistakes.slab) whose t the student's is."""
+    if not _same(got.get("ray.tmin"), inputs["tmin"]) or not _same(got.get("ray.tmax"), inputs["tmax"]):
+        return "BBox.hit must not change the ray: it only says where the ray enters the box"
+    known = inputs.get("known") or {}
+    for key, text in BOX_HINTS:
+        if key in known and not _same(known[key], want["t"]) and _same(got.get("t"), known[key]):
+            return text
+    return None
+
+
+def hint_traversal(inputs, want, got):
+    """Compares the student's hit (shape number, t) with the reference hit."""
+    shape, t = got.get("shape"), got.get("ray.tmax")
+    best, best_t = want["shape"], want["ray.tmax"]
+    if not isinstance(shape, int) or not isinstance(t, float):
+        return None
+    if best >= 0 and shape >= 0 and t > best_t:
+        return ("your hit (shape %d at t = %.6g) is not the nearest (shape %d at t = %.6g), so the node that holds "
+                "the nearest was never visited: either the traversal stopped at the first hit found (keep taking nodes "
+                "off the stack until it is empty, and skip only a node whose box the ray enters beyond ray.tmax) or "
+                "BBox.hit missed that node's box (its own tests say whether)" % (shape, t, best, best_t))
+    if best >= 0 and shape > best and t == best_t:
+        return ("shapes %d and %d are both hit at t = %.6g, and the earlier one, %d, wins (the scene's loop keeps the "
+                "first of equal hits): a shape with a smaller number than the best so far must be tested with "
+                "ray.tmax raised to math.nextafter(ray.tmax, math.inf), so that an equal t counts, and tmax put "
+                "back if it misses" % (best, shape, t, best))
+    if best >= 0 and shape < 0:
+        return ("your traversal found nothing, but the ray hits shape %d at t = %.6g: it skipped a node that the ray "
+                "enters before ray.tmax (check BBox.hit and the test that skips a node) or did not test every "
+                "shape of a leaf, self.order[first:first + count]" % (best, best_t))
+    if best < 0 and shape < 0 and t != best_t:
+        return "on a miss BVH.intersect must leave ray.tmax as it was"
+    if best >= 0 and shape >= 0 and t < best_t:
+        return ("your t is less than the nearest hit's: a shape tested with ray.tmax raised (the tie rule) must get "
+                "the old tmax back when it misses, and ray.tmin is the start of every shape's test")
+    return None
+
+
+register("a08_bvh", [
+    Check("BBox.hit: rays that enter the box, and where", 2, ("a08", "observe_box_enter"),
+          hint=hint_box, known="slab", needs=BOX),
+    Check("BBox.hit: negative direction components (t_near and t_far swap)", 1, ("a08", "observe_box_negative"),
+          hint=hint_box, known="slab", needs=BOX),
+    Check("BBox.hit: misses and the ray's interval [tmin, tmax]", 2, ("a08", "observe_box_interval"),
+          hint=hint_box, known="slab", needs=BOX),
+    Check("BBox.hit: direction components of 0 (a ray parallel to a slab)", 1, ("a08", "observe_box_zero"),
+          hint=hint_box, known="slab", needs=BOX),
+    Check("BVH.intersect: the nearest shape of a scene and its t", 2, ("a08", "observe_bvh_nearest"),
+          hint=hint_traversal),
+    Check("BVH.intersect: misses leave ray.tmax alone; tmin and tmax; an empty BVH", 1,
+          ("a08", "observe_bvh_misses_and_interval"), hint=hint_traversal),
+    Check("BVH.intersect: the nearest hit, not the first one found", 2, ("a08", "observe_bvh_nearest_not_first"),
+          hint=hint_traversal),
+    Check("BVH.intersect: two shapes hit at the same t: the earlier wins, in any visiting order", 1,
+          ("a08", "observe_bvh_tie"), hint=hint_traversal),
+    # ### BEGIN HIDDEN
+    Check("BBox.hit: faces, edges, corners, and boxes of zero thickness", 1,
+          ("a08_hidden", "observe_box_edges_and_flat"), visibility="hidden", hint=hint_box, known="slab", needs=BOX),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
+    Check("BBox.hit: from the box's boundary, and where rounding decides (t_far widened)", 1,
+          ("a08_hidden", "observe_box_boundary_and_rounding"), visibility="hidden", hint=hint_box, known="slab",
+          needs=BOX),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
+    Check("BVH.intersect: copies far apart in the list: the first copy wins, in any visiting order", 1,
+          ("a08_hidden", "observe_bvh_ties"), visibility="hidden", hint=hint_traversal),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
+    Check("BVH.intersect: a random scene of 120 shapes, 150 rays", 1, ("a08_hidden", "observe_bvh_random"),
+          visibility="hidden", hint=hint_traversal),
+    # ### END HIDDEN
+])

@@ -1,0 +1,303 @@
+# release: solves a03 a08
+"""Triangle meshes on the numba path: the watertight test per face and the BVH traversal
+(rtfgu.accelerators.flat_bvh's node table) that finds the nearest face.
+
+The mesh arrives as (rtfgu.layout.compile_scene):
+
+    vertices  (V, 3)  float    every mesh's vertices, once each
+    faces     (F, 4)  int32    [i0, i1, i2, scene index], in the BVH's leaf order
+    normals   (V, 3)  float    vertex normals (zero for a flat mesh's vertices), or None
+    nodes     (N, 8)  float32  the BVH (flat_bvh), links its int32 view
+
+A face is hit where rtfgu.robust.intersect_triangle_watertight hits it (Woop, Benthin and
+Wald 2013): two faces that share an edge compute its edge function from the same two
+vertices, so a ray through the edge hits one of them, in float32 too. The ray's shear
+(the permutation kx, ky, kz and Sx, Sy, Sz) is computed once per ray, not once per face.
+Its normal and (u, v) are those of SmoothMeshTriangle / FlatMeshTriangle (rtfgu.shapes.mesh).
+
+The traversal (rtfgu.accelerators.bvh.BVH.intersect): the nearer child first, a stack of the
+farther ones with the distance at which the ray enters them, so that a node entered beyond
+the nearest hit so far is dropped when it is popped. The stack lives in the caller's frame
+(``_stack_pointer``, an array over it made where it is used: numba returns no such array): the render kernel allocates nothing per ray.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit, types
+from numba.core import cgutils
+from numba.extending import intrinsic, overload
+
+from ..accelerators.flat_bvh import MAX_DEPTH
+from .dispatch_support import as_python
+from .float3 import cross, dot, length, lit, lit_per_precision, normalize, scale, sub, add
+
+# 1 + 2 gamma_3 (PBRT-v4 section 6.1.2): the far end of a slab interval is widened by it, so
+# that rounding never drops a box whose face the triangle test would hit (BBox.hit).
+WIDEN64 = 1.0 + 2.0 * (3 * 2.0 ** -53) / (1 - 3 * 2.0 ** -53)
+WIDEN32 = 1.0 + 2.0 * (3 * 2.0 ** -24) / (1 - 3 * 2.0 ** -24)
+
+
+@intrinsic
+def _stack_pointer(typingctx, dtype):
+    """A pointer to MAX_DEPTH elements of ``dtype`` (a number type, or a value of the float
+    type wanted) on the stack of the function this is inlined into: an LLVM alloca in its
+    entry block, so it costs nothing per call and needs no reference counting."""
+    if isinstance(dtype, types.NumberClass):
+        element = dtype.instance_type
+    elif isinstance(dtype, types.Number):
+        element = dtype
+    else:
+        return None
+
+    def codegen(context, builder, signature, args):
+        return cgutils.alloca_once(builder, context.get_value_type(element), size=MAX_DEPTH)
+    return types.CPointer(element)(dtype), codegen
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _pick(v, k):
+    if k == 0:
+        return v[0]
+    if k == 1:
+        return v[1]
+    return v[2]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def ray_shear(direction):
+    """Woop et al. 2013 section 3: kz the axis of the largest |direction| component, kx and
+    ky the next two (swapped when direction[kz] < 0, to keep the winding), and the shear
+    Sx = d[kx] / d[kz], Sy = d[ky] / d[kz], Sz = 1 / d[kz]."""
+    adx = abs(direction[0])
+    ady = abs(direction[1])
+    adz = abs(direction[2])
+    if adx > ady:
+        kz = 0 if adx > adz else 2
+    else:
+        kz = 1 if ady > adz else 2
+    kx = (kz + 1) % 3
+    ky = (kx + 1) % 3
+    dkz = _pick(direction, kz)
+    if dkz < lit(0, dkz):
+        kx, ky = ky, kx
+    return kx, ky, kz, _pick(direction, kx) / dkz, _pick(direction, ky) / dkz, lit(1, dkz) / dkz
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _vertex(vertices, i, origin):
+    return (vertices[i, 0] - origin[0], vertices[i, 1] - origin[1], vertices[i, 2] - origin[2])
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def intersect_face(vertices, faces, f, origin, shear, tmin, tmax):
+    """t of face ``f`` in [tmin, tmax), else inf: rtfgu.robust.intersect_triangle_watertight
+    with the ray's ``shear`` (ray_shear). A mesh has no zero-area face (Mesh refuses one)."""
+    kx, ky, kz, Sx, Sy, Sz = shear
+    zero = lit(0, tmin)
+    A = _vertex(vertices, faces[f, 0], origin)
+    B = _vertex(vertices, faces[f, 1], origin)
+    C = _vertex(vertices, faces[f, 2], origin)
+    Az = _pick(A, kz)
+    Bz = _pick(B, kz)
+    Cz = _pick(C, kz)
+    ax = _pick(A, kx) - Sx * Az
+    ay = _pick(A, ky) - Sy * Az
+    bx = _pick(B, kx) - Sx * Bz
+    by = _pick(B, ky) - Sy * Bz
+    cx = _pick(C, kx) - Sx * Cz
+    cy = _pick(C, ky) - Sy * Cz
+    U = cx * by - cy * bx
+    V = ax * cy - ay * cx
+    W = bx * ay - by * ax
+    if U == zero or V == zero or W == zero:
+        # Woop et al. section 3: an edge function that rounds to zero is recomputed in
+        # double (a no-op in float64).
+        U = lit(np.float64(cx) * np.float64(by) - np.float64(cy) * np.float64(bx), tmin)
+        V = lit(np.float64(ax) * np.float64(cy) - np.float64(ay) * np.float64(cx), tmin)
+        W = lit(np.float64(bx) * np.float64(ay) - np.float64(by) * np.float64(ax), tmin)
+    if (U < zero or V < zero or W < zero) and (U > zero or V > zero or W > zero):
+        return lit(math.inf, tmin)
+    det = U + V + W
+    if det == zero:
+        return lit(math.inf, tmin)
+    T = U * (Sz * Az) + V * (Sz * Bz) + W * (Sz * Cz)
+    t = T / det
+    if t >= tmin and t < tmax:
+        return t
+    return lit(math.inf, tmin)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def box_entry(nodes, n, origin, inv, tmin, tmax):
+    """BBox.hit for node ``n``: the t at which the ray enters its box within [tmin, tmax],
+    or inf. ``inv`` = 1 / direction (inf for a zero component); a NaN from 0 * inf (the
+    origin on a face of the slab the ray runs in) fails every comparison, so it narrows
+    nothing."""
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    t0 = tmin
+    t1 = tmax
+    for a in range(3):
+        near = (lit(nodes[n, a], tmin) - origin[a]) * inv[a]
+        far = (lit(nodes[n, 4 + a], tmin) - origin[a]) * inv[a]
+        if near > far:
+            near, far = far, near
+        far = far * widen
+        if near > t0:
+            t0 = near
+        if far < t1:
+            t1 = far
+    if t0 > t1:
+        return lit(math.inf, tmin)
+    return t0
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _inverse(direction):
+    one = lit(1, direction[0])
+    return (one / direction[0], one / direction[1], one / direction[2])
+
+
+# mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
+# they are shared by every render kernel (each scene's kinds compile a kernel of their own).
+@njit(cache=True, error_model="numpy")
+def mesh_closest(vertices, faces, nodes, links, kind, origin, direction, tmin, hit):
+    """The nearest face hit, given the nearest hit so far ``hit`` = (t, scene index, kind,
+    row): of equal ts the face earlier in Scene.shapes wins (an earlier face is tested up to
+    the next float above the best t)."""
+    tmax, best, best_kind, best_row = hit
+    inf = lit(math.inf, tmin)
+    shear = ray_shear(direction)
+    inv = _inverse(direction)
+    node_stack = _stack_pointer(np.int32)
+    entry_stack = _stack_pointer(tmin)
+    sp = 0
+    node = 0
+    if box_entry(nodes, 0, origin, inv, tmin, tmax) == inf:
+        return hit
+    while True:
+        count = links[node, 7]
+        if count > 0:
+            first = links[node, 3]
+            for f in range(first, first + count):
+                idx = faces[f, 3]
+                limit = tmax if idx > best else np.nextafter(tmax, inf)
+                t = intersect_face(vertices, faces, f, origin, shear, tmin, limit)
+                if t < tmax or (t == tmax and idx < best):
+                    tmax = t
+                    best = idx
+                    best_kind = kind
+                    best_row = f
+            node = -1
+        else:
+            left = links[node, 3]
+            t_left = box_entry(nodes, left, origin, inv, tmin, tmax)
+            t_right = box_entry(nodes, left + 1, origin, inv, tmin, tmax)
+            if t_left <= t_right:
+                near, far, t_far = left, left + 1, t_right
+                node = near if t_left != inf else -1
+            else:
+                near, far, t_far = left + 1, left, t_left
+                node = near
+            if t_far != inf:
+                if node < 0:
+                    node = far
+                else:
+                    node_stack[sp] = far
+                    entry_stack[sp] = t_far
+                    sp += 1
+        while node < 0 and sp > 0:
+            sp -= 1
+            if entry_stack[sp] <= tmax:
+                node = node_stack[sp]
+        if node < 0:
+            break
+    return tmax, best, best_kind, best_row
+
+
+@njit(cache=True, error_model="numpy")
+def mesh_any(vertices, faces, nodes, links, origin, direction, tmin, tmax):
+    """A shadow ray: is any face hit in [tmin, tmax)?"""
+    inf = lit(math.inf, tmin)
+    shear = ray_shear(direction)
+    inv = _inverse(direction)
+    node_stack = _stack_pointer(np.int32)
+    sp = 0
+    node = 0 if box_entry(nodes, 0, origin, inv, tmin, tmax) != inf else -1
+    while node >= 0:
+        count = links[node, 7]
+        if count > 0:
+            first = links[node, 3]
+            for f in range(first, first + count):
+                if intersect_face(vertices, faces, f, origin, shear, tmin, tmax) < tmax:
+                    return True
+            node = -1
+        else:
+            left = links[node, 3]
+            hit_left = box_entry(nodes, left, origin, inv, tmin, tmax) != inf
+            hit_right = box_entry(nodes, left + 1, origin, inv, tmin, tmax) != inf
+            if hit_left and hit_right:
+                node_stack[sp] = left + 1
+                sp += 1
+                node = left
+            elif hit_left:
+                node = left
+            elif hit_right:
+                node = left + 1
+            else:
+                node = -1
+        if node < 0 and sp > 0:
+            sp -= 1
+            node = node_stack[sp]
+    return False
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _face_frame(vertices, faces, f, like):
+    v0 = (lit(vertices[faces[f, 0], 0], like), lit(vertices[faces[f, 0], 1], like), lit(vertices[faces[f, 0], 2], like))
+    v1 = (lit(vertices[faces[f, 1], 0], like), lit(vertices[faces[f, 1], 1], like), lit(vertices[faces[f, 1], 2], like))
+    v2 = (lit(vertices[faces[f, 2], 0], like), lit(vertices[faces[f, 2], 1], like), lit(vertices[faces[f, 2], 2], like))
+    e0 = sub(v1, v0)
+    e1 = sub(v2, v0)
+    return v0, e0, e1, cross(e0, e1)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def texcoord_mesh(vertices, faces, f, position):
+    """MeshTriangle.texcoord: the barycentric (beta, gamma) of the point (Triangle.texcoord)."""
+    v0, e0, e1, n = _face_frame(vertices, faces, f, position[0])
+    d = sub(position, v0)
+    nn = dot(n, n)
+    return dot(cross(d, e1), n) / nn, dot(cross(e0, d), n) / nn
+
+
+def normal_mesh(vertices, faces, normals, f, position):
+    """The unit normal of face ``f`` at ``position``: FlatMeshTriangle's without vertex
+    normals (``normals`` None), else SmoothMeshTriangle's (typed by the overload below)."""
+    return as_python(_typed_normal_mesh, vertices, faces, normals, f, position)
+
+
+@overload(normal_mesh, inline="always")
+def _typed_normal_mesh(vertices, faces, normals, f, position):
+    if isinstance(normals, types.NoneType):
+        def flat(vertices, faces, normals, f, position):
+            return normalize(_face_frame(vertices, faces, f, position[0])[3])
+        return flat
+
+    def smooth(vertices, faces, normals, f, position):
+        v0, e0, e1, n = _face_frame(vertices, faces, f, position[0])
+        d = sub(position, v0)
+        nn = dot(n, n)
+        beta = dot(cross(d, e1), n) / nn
+        gamma = dot(cross(e0, d), n) / nn
+        one = lit(1, beta)
+        i0, i1, i2 = faces[f, 0], faces[f, 1], faces[f, 2]
+        n0 = (lit(normals[i0, 0], one), lit(normals[i0, 1], one), lit(normals[i0, 2], one))
+        n1 = (lit(normals[i1, 0], one), lit(normals[i1, 1], one), lit(normals[i1, 2], one))
+        n2 = (lit(normals[i2, 0], one), lit(normals[i2, 1], one), lit(normals[i2, 2], one))
+        m = add(add(scale(n0, one - beta - gamma), scale(n1, beta)), scale(n2, gamma))
+        if dot(m, m) == lit(0, one):
+            return normalize(n)
+        return normalize(m)
+    return smooth

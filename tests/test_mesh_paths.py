@@ -1,0 +1,187 @@
+"""Mesh triangles on every path (the registry's "mesh" kind: a BVH over the faces): no ray
+leaks through a shared edge or vertex of a closed mesh, the nearest face, its normal and the
+tie rule are the lecture layer's, shadow rays stop at faces, and the BVH and its layout hold
+what they promise (every face in one leaf, boxes that hold their faces in float32 too, at most
+64 bytes per triangle)."""
+from __future__ import annotations
+
+import math
+import random
+
+import numpy as np
+import pytest
+import trimesh
+
+from rtfgu import Float3, OrthographicCamera, Plane, PointLight, Scene, Sphere, Triangle
+from rtfgu.accelerators import flat_bvh
+from rtfgu.layout import compile_scene
+from rtfgu.material import LAMBERTIAN, Material
+from rtfgu.shapes.mesh import Mesh
+
+GREY = (0.5, 0.5, 0.5)
+T_CLOSE = {"float64": 1e-12, "float32": 2e-5}
+
+
+def icosphere(subdivisions: int, **kwargs) -> Mesh:
+    sphere = trimesh.creation.icosphere(subdivisions=subdivisions)
+    return Mesh(np.asarray(sphere.vertices), np.asarray(sphere.faces), GREY, **kwargs)
+
+
+def scene_of(*shapes) -> Scene:
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    for shape in shapes:
+        scene.shapes += shape.triangles() if isinstance(shape, Mesh) else [shape]
+    return scene
+
+
+# --- shared edges and vertices: a closed mesh holds every ray from inside ----------------
+
+def edge_and_vertex_rays(mesh: Mesh, origin) -> list:
+    """From ``origin`` (inside the mesh) through every vertex and every edge's midpoint."""
+    o = np.asarray(origin, dtype=float)
+    targets = list(mesh.vertices)
+    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in mesh.faces for a in range(3)}
+    targets += [(mesh.vertices[i] + mesh.vertices[j]) * 0.5 for i, j in sorted(edges)]
+    return [(tuple(o), tuple(t - o), 0.0, math.inf) for t in targets]
+
+
+@pytest.mark.parametrize("origin", [(0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)])
+def test_no_ray_from_inside_a_closed_mesh_leaks_through_an_edge_or_a_vertex(path, origin):
+    mesh = icosphere(2)                    # 320 faces, 480 shared edges, 162 shared vertices
+    rays = edge_and_vertex_rays(mesh, origin)
+    leaks = [ray for ray, bounces in zip(rays, path.trace(scene_of(mesh), rays)) if bounces[0].shape is None]
+    assert not leaks, "%s: %d of %d rays leak, e.g. %s" % (path, len(leaks), len(rays), leaks[:3])
+
+
+# --- the nearest face, its normal, ties --------------------------------------------------
+
+def random_rays(count: int, seed: int = 3):
+    rng = random.Random(seed)
+    rays = []
+    for _ in range(count):
+        o = [rng.uniform(-3.0, 3.0) for _ in range(3)]
+        target = [rng.uniform(-1.0, 1.0) for _ in range(3)]
+        rays.append((tuple(o), tuple(t - a for t, a in zip(target, o)), 0.0, math.inf))
+    return rays
+
+
+@pytest.mark.parametrize("smooth", [False, True], ids=["flat", "smooth"])
+def test_the_nearest_face_and_its_normal_are_the_lecture_layers(path, smooth):
+    sphere = trimesh.creation.icosphere(subdivisions=2)
+    mesh = Mesh(np.asarray(sphere.vertices) * 0.75, np.asarray(sphere.faces), GREY,
+                normals=np.asarray(sphere.vertex_normals) if smooth else None)
+    scene = scene_of(Sphere(Float3(0.5, 0.0, 0.0), 0.5, GREY), mesh,
+                     Triangle((-2, -2, -0.25), (2, -2, -0.25), (0, 2, -0.25), GREY))
+    rays = random_rays(120)
+    want = path.reference.trace(scene, rays)
+    got = path.trace(scene, rays)
+    hits = 0
+    for ray, a, b in zip(rays, want, got):
+        assert a[0].shape == b[0].shape, (path, ray)
+        if a[0].shape is not None:
+            hits += 1
+            assert b[0].t == pytest.approx(a[0].t, rel=T_CLOSE[path.precision]), (path, ray)
+            if a[0].normal is not None:
+                assert b[0].normal == pytest.approx(a[0].normal, abs=1e-5 if path.precision == "float32" else 1e-12)
+    assert hits > 60
+
+
+@pytest.mark.parametrize("order", ["triangle first", "mesh first"])
+def test_a_face_and_a_triangle_at_the_same_t_go_to_the_earlier_shape(path, order):
+    square = Mesh(np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0)], float),
+                  np.array([(0, 1, 2), (1, 3, 2)]), GREY)
+    triangle = Triangle((0, 0, 0), (1, 0, 0), (0, 1, 0), (1.0, 0.0, 0.0))
+    scene = scene_of(triangle, square) if order == "triangle first" else scene_of(square, triangle)
+    rays = [((x, y, 2.0), (0.0, 0.0, -1.0), 0.0, math.inf) for x, y in ((0.25, 0.25), (0.125, 0.5), (0.5, 0.25))]
+    winner = 0
+    for bounces in path.trace(scene, rays):
+        assert bounces[0].t == 2.0
+        assert bounces[0].shape == winner, (path, order, bounces[0])
+
+
+def test_two_copies_of_a_mesh_at_the_same_place_show_the_earlier_one(path):
+    mesh = icosphere(1)
+    scene = scene_of(mesh, mesh)
+    rays = random_rays(40, seed=5)
+    for ray, bounces in zip(rays, path.trace(scene, rays)):
+        if bounces[0].shape is not None:
+            assert bounces[0].shape < len(mesh.faces), (path, ray, bounces[0].shape)
+
+
+def test_a_mesh_casts_shadows_and_a_light_in_front_of_it_lights_the_floor(path):
+    square = Mesh(np.array([(-1, 1, -1), (1, 1, -1), (-1, 1, 1), (1, 1, 1)], float),
+                  np.array([(0, 2, 1), (1, 2, 3)]), GREY, material=Material(LAMBERTIAN))
+    floor = Plane(Float3(0, 0, 0), Float3(0, 1, 0), Float3(1.0), Material(LAMBERTIAN))
+    ray = [((0.0, 0.5, 0.0), (0.0, -1.0, 0.0), 0.0, math.inf)]
+    above = scene_of(floor, square)
+    above.lights.append(PointLight(Float3(0, 4, 0), Float3(16.0)))
+    between = scene_of(floor, square)
+    between.lights.append(PointLight(Float3(0, 0.75, 0), Float3(16.0)))
+    shadowed = path.trace(above, ray)[0][0].color
+    lit = path.trace(between, ray)[0][0].color
+    assert lit[0] > shadowed[0] + 1.0, (path, lit, shadowed)
+    assert shadowed == pytest.approx(path.reference.trace(above, ray)[0][0].color, rel=1e-5)
+
+
+# --- the BVH and the layout ----------------------------------------------------------
+
+def leaves(bvh):
+    links = bvh.links
+    return [(links[n, 3], links[n, 7]) for n in range(bvh.num_nodes) if links[n, 7] > 0]
+
+
+@pytest.mark.parametrize("subdivisions", [0, 3])
+def test_every_face_is_in_one_leaf_and_every_box_holds_its_faces(subdivisions):
+    mesh = icosphere(subdivisions)
+    lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+    bvh = flat_bvh.build(lo, hi)
+    assert sorted(bvh.order) == list(range(len(lo)))
+    assert sum(count for _, count in leaves(bvh)) == len(lo)
+    assert bvh.num_nodes <= 2 * len(lo) - 1 and bvh.depth() <= flat_bvh.MAX_DEPTH
+    links, nodes = bvh.links, bvh.nodes.astype(np.float64)
+    for n in range(bvh.num_nodes):
+        if links[n, 7] > 0:
+            faces = bvh.order[links[n, 3]:links[n, 3] + links[n, 7]]
+            assert (nodes[n, :3] <= lo[faces]).all() and (nodes[n, 4:7] >= hi[faces]).all()
+            # float32 vertices (each rounded to nearest) stay inside the rounded-out box
+            v32 = mesh.vertices[mesh.faces[faces]].astype(np.float32).astype(np.float64)
+            assert (nodes[n, :3] <= v32.min(axis=1)).all() and (nodes[n, 4:7] >= v32.max(axis=1)).all()
+        else:
+            left = links[n, 3]
+            for child in (left, left + 1):
+                assert (nodes[n, :3] <= nodes[child, :3]).all() and (nodes[n, 4:7] >= nodes[child, 4:7]).all()
+
+
+def test_faces_with_one_centroid_are_split_in_halves_down_to_leaves():
+    v = np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0)], float)
+    lo, hi = flat_bvh.triangle_bounds(v, np.array([(0, 1, 2)] * 100))
+    bvh = flat_bvh.build(lo, hi)
+    assert max(count for _, count in leaves(bvh)) <= 4 and sorted(bvh.order) == list(range(100))
+
+
+def test_the_build_without_numba_is_the_same_tree():
+    mesh = icosphere(1)
+    lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+    jitted = flat_bvh.build(lo, hi)
+    build = flat_bvh._build
+    try:
+        flat_bvh._build = build.py_func
+        plain = flat_bvh.build(lo, hi)
+    finally:
+        flat_bvh._build = build
+    assert np.array_equal(jitted.nodes.view(np.int32), plain.nodes.view(np.int32))
+    assert np.array_equal(jitted.order, plain.order)
+
+
+def test_bad_boxes_are_refused():
+    with pytest.raises(ValueError, match="not finite"):
+        flat_bvh.build(np.array([[0.0, np.nan, 0.0]]), np.array([[1.0, 1.0, 1.0]]))
+    with pytest.raises(ValueError, match=r"\(P, 3\)"):
+        flat_bvh.build(np.zeros((0, 3)), np.zeros((0, 3)))
+
+
+def test_a_mesh_takes_at_most_64_bytes_per_triangle_with_its_bvh_in_float32():
+    mesh = icosphere(5)                                          # 20480 faces
+    flat = compile_scene(scene_of(mesh), "float32")
+    per_triangle = flat.mesh.nbytes / len(mesh.faces)
+    assert per_triangle <= 64, per_triangle
