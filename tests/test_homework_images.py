@@ -55,7 +55,7 @@ def diff_image(got: np.ndarray, ref: np.ndarray) -> np.ndarray:
 def test_homework_image_matches_reference(name, reference_images_dir, output_dir,
                                           update_reference_images):
     fn = SCENES[name]
-    width, height = small_size(fn.size)
+    width, height = small_size(fn.size, min(SIDE, fn.test_side or SIDE))
     linear = rtfgu.render(fn(), width, height, backend="reference")
     got = to_8bit(linear)
     assert got.shape == (height, width, 3)

@@ -31,7 +31,7 @@ def spp_of(name):
 
 def test_size(name):
     w, h = SCENES[name].size
-    scale = SIZE / max(w, h)
+    scale = min(SIZE, SCENES[name].test_side or SIZE) / max(w, h)
     return max(1, round(w * scale)), max(1, round(h * scale))
 
 

@@ -8,9 +8,14 @@ from __future__ import annotations
 SCENES = {}
 
 
-def homework(width: int, height: int):
+def homework(width: int, height: int, test_side: int | None = None):
+    """Register a scene function with its homework image size. ``test_side``: the longer
+    side of the small images the tests render of it, where the lecture layer would take too
+    long at the tests' usual size (a mesh of thousands of faces, each tested by every ray);
+    None: the tests' default."""
     def register(fn):
         fn.size = (width, height)
+        fn.test_side = test_side
         SCENES[fn.__name__] = fn
         return fn
     return register

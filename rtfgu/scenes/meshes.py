@@ -1,0 +1,137 @@
+"""Scenes of triangle meshes (02562 worksheets 5-6, Suffern ch. 23): the Utah teapot under a
+directional light, the Stanford bunny, and the Cornell box, with its two blocks or with a
+mirror and a glass sphere.
+
+The shipped meshes (rtfgu/meshes/README.md) are placed as the worksheets' files are: the
+teapot scaled by 0.2 and standing on y = 0 (6.4 wide, 3.15 high, as worksheet 5's), the
+bunny scaled and moved onto the Stanford scan's bounding box (the npm package's copy is 10
+units high), the Cornell box in its measured millimetres.
+
+The Cornell box's light is its emissive ceiling quad (Ke in cornell_box.mtl). Until an
+area light samples it, the light it casts comes from a point light 1 mm below the quad's
+centre with the intensity the quad sends straight down, I = L_e A (worksheet 5 approximates
+the area light by a light at its centre the same way, with a cosine per light triangle);
+the quad itself shows its emission.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..cameras import PinholeCamera
+from ..directional_light import Directional
+from ..float3 import Float3, normalize
+from ..lights import PointLight
+from ..material import LAMBERTIAN, MIRROR, TRANSPARENT, Material
+from ..obj import load_obj, mesh_path
+from ..scene import Scene
+from ..shapes import Plane, Sphere
+from ..shapes.mesh import Mesh
+from .registry import homework
+
+BACKGROUND = Float3(0.1, 0.3, 0.6)
+# The Stanford bunny's bounding box (bun_zipper.ply), where the npm copy is moved to.
+STANFORD_BUNNY_MIN = np.array([-0.0946899, 0.0329874, -0.0618736])
+STANFORD_BUNNY_MAX = np.array([0.0610091, 0.187321, 0.0587997])
+
+
+def _placed(mesh: Mesh, scale: float, offset) -> Mesh:
+    return Mesh(mesh.vertices * scale + np.asarray(offset, dtype=float), mesh.faces, mesh.colors,
+                normals=mesh.normals, material=mesh.materials)
+
+
+def teapot_mesh(material: Material | None = None) -> Mesh:
+    """The Utah teapot scaled by 0.2, standing on y = 0."""
+    mesh = load_obj(mesh_path("teapot.obj"), material=material, default_color=(0.9, 0.9, 0.9))
+    return _placed(mesh, 0.2, (0.0, -0.2 * mesh.vertices[:, 1].min(), 0.0))
+
+
+def bunny_mesh(material: Material | None = None) -> Mesh:
+    """The bunny on the Stanford scan's bounding box (one scale, the box's centre)."""
+    mesh = load_obj(mesh_path("bunny.obj"), material=material, default_color=(0.9, 0.9, 0.9))
+    lo, hi = mesh.vertices.min(axis=0), mesh.vertices.max(axis=0)
+    scale = float(np.mean((STANFORD_BUNNY_MAX - STANFORD_BUNNY_MIN) / (hi - lo)))
+    offset = (STANFORD_BUNNY_MIN + STANFORD_BUNNY_MAX) / 2 - scale * (lo + hi) / 2
+    return _placed(mesh, scale, offset)
+
+
+MM = 0.001   # the Cornell box's millimetres, in metres
+
+
+def cornell_box_mesh(blocks: bool = True) -> Mesh:
+    """The Cornell box (cornell_box.obj, Lambertian) in metres; without ``blocks``, the two
+    blocks' 20 faces are left out (every vertex of a block face is inside the room, away from
+    walls, floor and ceiling)."""
+    mesh = load_obj(mesh_path("cornell_box.obj"), material=Material(LAMBERTIAN))
+    if blocks:
+        return _placed(mesh, MM, (0.0, 0.0, 0.0))
+    v = mesh.vertices[mesh.faces]                       # (faces, 3 vertices, xyz), in mm
+    inside = ((v[..., 0] > 50) & (v[..., 0] < 500) & (v[..., 2] > 50) & (v[..., 2] < 500)
+              & (v[..., 1] < 400)).all(axis=1)
+    block = inside & ~(v[..., 1] == 0).all(axis=1)
+    keep = ~block
+    return Mesh(mesh.vertices * MM, mesh.faces[keep], mesh.colors[keep],
+                material=[m for m, k in zip(mesh.materials, keep) if k])
+
+
+def cornell_light(mesh: Mesh) -> PointLight:
+    """The point light standing in for the emissive faces of ``mesh``: 1 mm below their
+    centre (they face down), intensity L_e times their area."""
+    emissive = [f for f, m in enumerate(mesh.materials) if m.emission.x > 0 or m.emission.y > 0 or m.emission.z > 0]
+    v = mesh.vertices[mesh.faces[emissive]]
+    area = 0.5 * np.linalg.norm(np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]), axis=1).sum()
+    center = v.reshape(-1, 3).mean(axis=0)
+    emission = mesh.materials[emissive[0]].emission
+    return PointLight(Float3(center[0], center[1] - MM, center[2]), emission * float(area))
+
+
+def _cornell_scene(mesh: Mesh) -> Scene:
+    camera = PinholeCamera(Float3(277.0, 275.0, -570.0) * MM, Float3(277.0, 275.0, 0.0) * MM,
+                           Float3(0.0, 1.0, 0.0), d=1.0)
+    scene = Scene(camera)
+    scene.background = Float3(0.0)
+    scene.shapes += mesh.triangles()
+    scene.lights.append(cornell_light(mesh))
+    return scene
+
+
+@homework(800, 450, test_side=24)
+def teapot() -> Scene:
+    """Worksheet 5: the Utah teapot on a floor under a directional light."""
+    camera = PinholeCamera(Float3(0.15, 1.5, 10.0), Float3(0.15, 1.5, 0.0), Float3(0.0, 1.0, 0.0),
+                           d=2.5, aspect=800 / 450)
+    scene = Scene(camera)
+    scene.background = BACKGROUND
+    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.1, 0.7, 0.0),
+                              Material(LAMBERTIAN)))
+    scene.shapes += teapot_mesh(Material(LAMBERTIAN)).triangles()
+    scene.lights.append(Directional(normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
+    return scene
+
+
+@homework(512, 512, test_side=16)
+def bunny() -> Scene:
+    """Worksheet 6: the Stanford bunny under a directional light."""
+    camera = PinholeCamera(Float3(-0.02, 0.11, 0.6), Float3(-0.02, 0.11, 0.0), Float3(0.0, 1.0, 0.0), d=3.5)
+    scene = Scene(camera)
+    scene.background = BACKGROUND
+    scene.shapes += bunny_mesh(Material(LAMBERTIAN)).triangles()
+    scene.lights.append(Directional(normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
+    return scene
+
+
+@homework(512, 512)
+def cornell_box_blocks() -> Scene:
+    """Worksheet 5: the Cornell box with its two blocks, lit from its ceiling light."""
+    return _cornell_scene(cornell_box_mesh(blocks=True))
+
+
+@homework(512, 512)
+def cornell_box_spheres() -> Scene:
+    """Worksheet 6: the Cornell box with a mirror sphere and a glass sphere (ior 1.5)."""
+    scene = _cornell_scene(cornell_box_mesh(blocks=False))
+    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Material(MIRROR)))
+    scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0),
+                               Material(TRANSPARENT, ior=1.5)))
+    return scene
