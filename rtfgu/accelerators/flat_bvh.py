@@ -76,11 +76,14 @@ def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, 
     stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3] = 0, 0, n_prims, 1
     sp = 1
     n_nodes = 1
-    bin_count = np.zeros(bins, dtype=np.int64)
-    bin_box = np.empty((bins, 6))
+    bin_count = np.zeros((3, bins), dtype=np.int64)
+    bin_box = np.empty((3, bins, 6))
     right_area = np.empty(bins)
     right_count = np.empty(bins, dtype=np.int64)
-    cent = np.empty(3)
+    cent = np.empty((n_prims, 3))
+    for p in range(n_prims):
+        for axis in range(3):
+            cent[p, axis] = 0.5 * (lo[p, axis] + hi[p, axis])
     while sp > 0:
         sp -= 1
         node, first, count, depth = stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3]
@@ -93,7 +96,7 @@ def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, 
             p = order[k]
             b0 = min(b0, lo[p, 0]); b1 = min(b1, lo[p, 1]); b2 = min(b2, lo[p, 2])
             b3 = max(b3, hi[p, 0]); b4 = max(b4, hi[p, 1]); b5 = max(b5, hi[p, 2])
-            x = 0.5 * (lo[p, 0] + hi[p, 0]); y = 0.5 * (lo[p, 1] + hi[p, 1]); z = 0.5 * (lo[p, 2] + hi[p, 2])
+            x = cent[p, 0]; y = cent[p, 1]; z = cent[p, 2]
             c0 = min(c0, x); c1 = min(c1, y); c2 = min(c2, z)
             c3 = max(c3, x); c4 = max(c4, y); c5 = max(c5, z)
         box[node, 0], box[node, 1], box[node, 2] = b0, b1, b2
@@ -101,45 +104,51 @@ def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, 
         if count <= 1:
             links[node, 0], links[node, 1] = first, count
             continue
-        # The binned SAH (rtfgu.accelerators.bvh.BVH._best_split): the cheapest plane.
+        # The binned SAH (rtfgu.accelerators.bvh.BVH._best_split): the cheapest plane. One
+        # pass over the primitives bins them along all three axes at once.
         area = _surface_area(b0, b1, b2, b3, b4, b5)
         best_cost = c_intersect * count
         best_axis = -1
         best_plane = 0.0
+        clo = (c0, c1, c2)
+        extent = (c3 - c0, c4 - c1, c5 - c2)
+        scale = np.zeros(3)
         for axis in range(3):
-            clo = c0 if axis == 0 else (c1 if axis == 1 else c2)
-            chi = c3 if axis == 0 else (c4 if axis == 1 else c5)
-            if not chi > clo:
+            if extent[axis] > 0.0:
+                scale[axis] = bins / extent[axis]
+        bin_count[:, :] = 0
+        bin_box[:, :, 0:3] = np.inf
+        bin_box[:, :, 3:6] = -np.inf
+        for k in range(first, first + count):
+            p = order[k]
+            l0, l1, l2, h0, h1, h2 = lo[p, 0], lo[p, 1], lo[p, 2], hi[p, 0], hi[p, 1], hi[p, 2]
+            for axis in range(3):
+                if scale[axis] == 0.0:
+                    continue
+                j = min(int(scale[axis] * (cent[p, axis] - clo[axis])), bins - 1)
+                bin_count[axis, j] += 1
+                box_j = bin_box[axis, j]
+                box_j[0] = min(box_j[0], l0); box_j[1] = min(box_j[1], l1); box_j[2] = min(box_j[2], l2)
+                box_j[3] = max(box_j[3], h0); box_j[4] = max(box_j[4], h1); box_j[5] = max(box_j[5], h2)
+        for axis in range(3):
+            if scale[axis] == 0.0:
                 continue
-            bin_count[:] = 0
-            for j in range(bins):
-                bin_box[j, 0] = np.inf; bin_box[j, 1] = np.inf; bin_box[j, 2] = np.inf
-                bin_box[j, 3] = -np.inf; bin_box[j, 4] = -np.inf; bin_box[j, 5] = -np.inf
-            scale = bins / (chi - clo)
-            for k in range(first, first + count):
-                p = order[k]
-                c = 0.5 * (lo[p, axis] + hi[p, axis])
-                j = min(int(scale * (c - clo)), bins - 1)
-                bin_count[j] += 1
-                bin_box[j, 0] = min(bin_box[j, 0], lo[p, 0]); bin_box[j, 1] = min(bin_box[j, 1], lo[p, 1])
-                bin_box[j, 2] = min(bin_box[j, 2], lo[p, 2]); bin_box[j, 3] = max(bin_box[j, 3], hi[p, 0])
-                bin_box[j, 4] = max(bin_box[j, 4], hi[p, 1]); bin_box[j, 5] = max(bin_box[j, 5], hi[p, 2])
             # Sweep from the right: area and count of bins j..bins-1.
             r0 = np.inf; r1 = np.inf; r2 = np.inf; r3 = -np.inf; r4 = -np.inf; r5 = -np.inf
             n_right = 0
             for j in range(bins - 1, 0, -1):
-                r0 = min(r0, bin_box[j, 0]); r1 = min(r1, bin_box[j, 1]); r2 = min(r2, bin_box[j, 2])
-                r3 = max(r3, bin_box[j, 3]); r4 = max(r4, bin_box[j, 4]); r5 = max(r5, bin_box[j, 5])
-                n_right += bin_count[j]
+                r0 = min(r0, bin_box[axis, j, 0]); r1 = min(r1, bin_box[axis, j, 1]); r2 = min(r2, bin_box[axis, j, 2])
+                r3 = max(r3, bin_box[axis, j, 3]); r4 = max(r4, bin_box[axis, j, 4]); r5 = max(r5, bin_box[axis, j, 5])
+                n_right += bin_count[axis, j]
                 right_count[j] = n_right
                 right_area[j] = _surface_area(r0, r1, r2, r3, r4, r5) if n_right > 0 else 0.0
             l0 = np.inf; l1 = np.inf; l2 = np.inf; l3 = -np.inf; l4 = -np.inf; l5 = -np.inf
             n_left = 0
             for plane in range(1, bins):
                 j = plane - 1
-                l0 = min(l0, bin_box[j, 0]); l1 = min(l1, bin_box[j, 1]); l2 = min(l2, bin_box[j, 2])
-                l3 = max(l3, bin_box[j, 3]); l4 = max(l4, bin_box[j, 4]); l5 = max(l5, bin_box[j, 5])
-                n_left += bin_count[j]
+                l0 = min(l0, bin_box[axis, j, 0]); l1 = min(l1, bin_box[axis, j, 1]); l2 = min(l2, bin_box[axis, j, 2])
+                l3 = max(l3, bin_box[axis, j, 3]); l4 = max(l4, bin_box[axis, j, 4]); l5 = max(l5, bin_box[axis, j, 5])
+                n_left += bin_count[axis, j]
                 if n_left == 0 or right_count[plane] == 0 or not area > 0.0:
                     continue
                 cost = c_traverse + c_intersect * (_surface_area(l0, l1, l2, l3, l4, l5) * n_left
@@ -147,7 +156,7 @@ def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, 
                 if cost < best_cost:
                     best_cost = cost
                     best_axis = axis
-                    best_plane = clo + (chi - clo) * plane / bins
+                    best_plane = clo[axis] + extent[axis] * plane / bins
         if best_axis < 0:
             if count <= leaf_size:
                 links[node, 0], links[node, 1] = first, count
@@ -171,7 +180,7 @@ def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, 
             j = first + count - 1
             while i <= j:
                 p = order[i]
-                if 0.5 * (lo[p, best_axis] + hi[p, best_axis]) < best_plane:
+                if cent[p, best_axis] < best_plane:
                     i += 1
                 else:
                     order[i] = order[j]
