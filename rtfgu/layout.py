@@ -162,17 +162,21 @@ FAR = 1.0e30
 
 @dataclass
 class FlatMesh:
-    """Every mesh triangle of a scene: ``vertices`` (V, 3) in the scene's float type, each
-    mesh's once; ``faces`` (F, 4) int32 [i0, i1, i2, scene index] in the BVH's leaf order;
-    ``normals`` (V, 3) vertex normals (zero for a flat mesh's vertices) or None when every
-    mesh is flat; ``bvh`` the FlatBVH over the faces (its build_seconds: 0 when it came from
-    the scene's cache)."""
+    """The scene's BVH and what it holds: every mesh triangle and, in a scene with a mesh or
+    with BVH_MIN_SPHERES spheres or more, every sphere. ``vertices`` (V, 3) in the scene's
+    float type, each mesh's once; ``faces`` (F, 4) int32 in the BVH's leaf order, a face
+    [i0, i1, i2, scene index] or a sphere [SPHERE_ROW, row in the sphere table, 0, scene
+    index]; ``normals`` (V, 3) vertex normals (zero for a flat mesh's vertices) or None when
+    every mesh is flat; ``bvh`` the FlatBVH over the rows (its build_seconds: 0 when it came
+    from the scene's cache); ``spheres``: whether it holds the spheres (the sphere table then
+    has no loop of its own)."""
 
     vertices: np.ndarray
     faces: np.ndarray
     normals: np.ndarray
     bvh: object
     build_seconds: float = 0.0
+    spheres: bool = False
 
     @property
     def nbytes(self) -> int:
@@ -321,11 +325,18 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     def table(rows, record):
         return np.array(rows, dtype=dtype).reshape(len(rows), width(record))
 
-    mesh = compile_mesh(scene, mesh_faces, dtype) if mesh_faces else None
-    if mesh is not None and mesh.normals is not None:
-        features.add("smooth_mesh")
     shapes = {kind.name: (table(rows[kind.name][0], kind.record),
                           np.array(rows[kind.name][1], dtype=np.int32)) for kind in ROW_SHAPES}
+    spheres = shapes["sphere"]
+    bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or len(spheres[0]) >= BVH_MIN_SPHERES)
+    mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype) \
+        if mesh_faces or bvh_spheres else None
+    if mesh is not None:
+        features.add("mesh")
+        if mesh.normals is not None:
+            features.add("smooth_mesh")
+        if bvh_spheres:
+            features.add("bvh_spheres")
     for kind in SHAPES:
         if kind.bvh:
             faces = mesh.faces if mesh is not None else np.zeros((0, 4), dtype=np.int32)
@@ -360,16 +371,24 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     return flat
 
 
-# Each scene's last BVH: (key, FlatBVH), the key a hash of its faces and vertices, so that a
-# scene compiled again (another precision, another render, a notebook cell run twice) does
-# not build it again.
+# A scene with this many spheres finds them through the BVH (a scene with a mesh, with any):
+# below it a loop over the spheres (with the eye's per-tile culling) costs less.
+BVH_MIN_SPHERES = 16
+# The first entry of a sphere's row in FlatMesh.faces.
+SPHERE_ROW = -1
+
+# Each scene's last BVH per precision: {precision: (key, FlatBVH)}, the key a hash of its
+# faces, vertices and boxes (a float32 sphere's box is another), so that a scene compiled
+# again (another render, a notebook cell run twice) does not build it again.
 _BVH_CACHE = weakref.WeakKeyDictionary()
 
 
-def compile_mesh(scene, mesh_faces, dtype) -> FlatMesh:
-    """The FlatMesh of the mesh triangles ``mesh_faces`` ((scene index, MeshTriangle), ...),
-    with the scene's BVH over them (built, or taken from the scene's cache)."""
+def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
+    """The FlatMesh of the mesh triangles ``mesh_faces`` ((scene index, MeshTriangle), ...)
+    and, unless ``spheres`` is None, of the sphere table and index ``spheres``, with the
+    scene's BVH over them (built, or taken from the scene's cache)."""
     from .accelerators import flat_bvh
+    from .accelerators.bbox import PAD
     from .shapes.mesh import SmoothMeshTriangle
 
     blocks = {}     # (id(mesh), smooth) -> first vertex: a mesh's vertices are laid out once
@@ -387,24 +406,40 @@ def compile_mesh(scene, mesh_faces, dtype) -> FlatMesh:
             count += len(shape.mesh.vertices)
         first = blocks[key]
         faces[n] = (shape.index0 + first, shape.index1 + first, shape.index2 + first, i)
-    vertices = np.concatenate(vertex_parts)
+    vertices = np.concatenate(vertex_parts) if vertex_parts else np.zeros((0, 3))
+    lo, hi = flat_bvh.triangle_bounds(vertices, faces)
+    if spheres is not None:
+        # A sphere's row: [-1, its row in the sphere table, 0, its place in Scene.shapes];
+        # its box is centre +- radius grown as BBox.padded grows it (by 2^-20 in float32,
+        # whose sphere test accepts grazing hits further out by rounding).
+        table, index = spheres
+        center = table[:, SPHERE_CENTER:SPHERE_CENTER + 3].astype(np.float64)
+        radius = table[:, SPHERE_RADIUS].astype(np.float64)
+        pad = PAD if dtype == np.float64 else 2.0 ** -20
+        reach = radius + pad * (np.abs(center).max(axis=1) + radius)
+        faces = np.concatenate([faces, np.stack([np.full(len(table), SPHERE_ROW), np.arange(len(table)),
+                                                 np.zeros(len(table)), index], axis=1).astype(np.int64)])
+        lo = np.concatenate([lo, center - reach[:, None]])
+        hi = np.concatenate([hi, center + reach[:, None]])
     digest = hashlib.sha1(vertices.tobytes())
     digest.update(faces.tobytes())
+    digest.update(lo.tobytes())
     key = digest.hexdigest()
-    cached = _BVH_CACHE.get(scene)
+    try:
+        cached = _BVH_CACHE.setdefault(scene, {})
+    except TypeError:       # a scene object that cannot be weakly referenced: no cache
+        cached = {}
     build_seconds = 0.0
-    if cached is not None and cached[0] == key:
-        bvh = cached[1]
+    precision = np.dtype(dtype).name
+    if precision in cached and cached[precision][0] == key:
+        bvh = cached[precision][1]
     else:
-        bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, faces))
+        bvh = flat_bvh.build(lo, hi)
         build_seconds = bvh.build_seconds
-        try:
-            _BVH_CACHE[scene] = (key, bvh)
-        except TypeError:   # a scene object that cannot be weakly referenced: no cache
-            pass
+        cached[precision] = (key, bvh)
     return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
                     normals=np.concatenate(normal_parts).astype(dtype) if smooth_any else None,
-                    bvh=bvh, build_seconds=build_seconds)
+                    bvh=bvh, build_seconds=build_seconds, spheres=spheres is not None)
 
 
 @dataclass

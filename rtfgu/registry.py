@@ -60,8 +60,8 @@ class ShapeKind(_Rows):
     numba_module: str = "rtfgu.kernels.intersect"
     from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
     uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
-    # A mesh kind: its rows are the faces of meshes, found through a BVH and not by a loop
-    # over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
+    # A mesh kind: its rows are the faces of meshes, found through the scene's BVH (which
+    # may hold the spheres too, rtfgu.layout.FlatMesh) and not by a loop over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
     # ``numba_module``, WGSL ``mesh.wgsl``); its arrays are rtfgu.layout.FlatMesh's.
     bvh: bool = False
 

@@ -200,15 +200,18 @@ def test_the_flat_layout_holds_each_mesh_once_with_its_faces_in_bvh_order():
     flat = compile_scene(scene, "float32")
     assert "mesh" in flat.features and flat.mesh.vertices.dtype == np.float32
     assert len(flat.mesh.vertices) == 4 + 6 and flat.mesh.normals is None
-    faces = flat.mesh.faces
-    assert sorted(faces[:, 3]) == list(range(1, 11))             # every face, as its scene index
+    rows = flat.mesh.faces
+    assert sorted(rows[:, 3]) == list(range(0, 11))              # every face and the sphere
+    assert rows[rows[:, 3] == 0].tolist() == [[-1, 0, 0, 0]] and flat.mesh.spheres  # with a mesh, in the BVH
+    faces = rows[rows[:, 0] >= 0]
     for row in faces:                                            # each face names its own vertices
         shape = scene.shapes[row[3]]
         first = 0 if shape.mesh is SQUARE else 4
         assert tuple(row[:3] - first) == (shape.index0, shape.index1, shape.index2)
     assert flat.mesh.build_seconds > 0
-    again = compile_scene(scene, "float64")                      # the scene's BVH is cached
+    again = compile_scene(scene, "float32")                      # the scene's BVH is cached
     assert again.mesh.bvh is flat.mesh.bvh and again.mesh.build_seconds == 0.0
+    assert compile_scene(scene, "float64").mesh.build_seconds > 0  # per precision
 
 
 # --- load_obj -----------------------------------------------------------------------------

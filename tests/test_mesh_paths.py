@@ -185,3 +185,52 @@ def test_a_mesh_takes_at_most_64_bytes_per_triangle_with_its_bvh_in_float32():
     flat = compile_scene(scene_of(mesh), "float32")
     per_triangle = flat.mesh.nbytes / len(mesh.faces)
     assert per_triangle <= 64, per_triangle
+
+
+# --- spheres in the BVH ----------------------------------------------------------------
+
+def many_spheres(count: int, seed: int = 11) -> Scene:
+    """``count`` spheres, some mirrors, over a floor, under a point light: shadow and
+    secondary rays meet spheres through the BVH when count >= BVH_MIN_SPHERES."""
+    from rtfgu.material import MIRROR
+
+    rng = random.Random(seed)
+    scene = scene_of(Plane(Float3(0, -1, 0), Float3(0, 1, 0), Float3(0.8), Material(LAMBERTIAN)))
+    for i in range(count):
+        center = Float3(rng.uniform(-1, 1), rng.uniform(-0.8, 0.8), rng.uniform(-1, 1))
+        scene.shapes.append(Sphere(center, rng.uniform(0.05, 0.2), Float3(0.2, 0.5, 0.9),
+                                   Material(MIRROR if i % 3 == 0 else LAMBERTIAN)))
+    scene.lights.append(PointLight(Float3(0.5, 3, 0.5), Float3(10.0)))
+    return scene
+
+
+def test_a_scene_of_many_spheres_finds_them_through_the_bvh_and_a_few_in_a_loop():
+    from rtfgu.layout import BVH_MIN_SPHERES
+
+    many = compile_scene(many_spheres(BVH_MIN_SPHERES))
+    assert many.mesh is not None and many.mesh.spheres and "bvh_spheres" in many.features
+    assert len(many.mesh.faces) == BVH_MIN_SPHERES and (many.mesh.faces[:, 0] == -1).all()
+    few = compile_scene(many_spheres(BVH_MIN_SPHERES - 1))
+    assert few.mesh is None and "bvh_spheres" not in few.features
+
+
+def test_spheres_in_the_bvh_give_the_lecture_layers_hits_shadows_and_reflections(path):
+    from rtfgu.layout import BVH_MIN_SPHERES
+
+    scene = many_spheres(BVH_MIN_SPHERES + 8)
+    rng = random.Random(17)
+    rays = []
+    for i in range(150):                  # from above, toward a sphere (and past it) or the floor
+        o = (rng.uniform(-2, 2), 2.5, rng.uniform(-2, 2))
+        target = scene.shapes[1 + i % (len(scene.shapes) - 1)].center
+        d = (target.x + rng.uniform(-0.2, 0.2) - o[0], target.y - o[1], target.z + rng.uniform(-0.2, 0.2) - o[2])
+        rays.append((o, d, 0.0, math.inf))
+    want = path.reference.trace(scene, rays)
+    got = path.trace(scene, rays)
+    sphere_hits = 0
+    for ray, a, b in zip(rays, want, got):
+        assert [x.shape for x in a] == [y.shape for y in b], (path, ray)
+        for x, y in zip(a, b):
+            assert y.color == pytest.approx(x.color, rel=2e-3 if path.precision == "float32" else 1e-12, abs=1e-5)
+        sphere_hits += sum(1 for x in a if x.shape not in (None, 0))
+    assert sphere_hits > 60

@@ -75,7 +75,8 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     eye = None
     for kind in SHAPES:
         table = flat.table(kind.name)
-        if kind.from_eye and len(table) and flat.camera_kind == PINHOLE:
+        in_bvh = flat.mesh is not None and flat.mesh.spheres
+        if kind.from_eye and len(table) and flat.camera_kind == PINHOLE and not in_bvh:
             # Every primary ray starts at the eye: o - center and c per row once per frame,
             # and a cone per row for the per-tile culling.
             terms = np.zeros((len(table), 4), dtype=flat.dtype)

@@ -55,15 +55,18 @@ def slot_offsets() -> dict:
 
 
 def _mesh_parts(k: int, kind, at: int) -> list:
-    """scan_, any_hit_, normal_row_ and texcoord_row_ of a mesh kind: the BVH's traversal."""
+    """scan_, any_hit_, normal_row_ and texcoord_row_ of a mesh kind: the BVH's traversal
+    (of the faces, and of the spheres when it holds them: rtfgu.layout.FlatMesh)."""
     name = kind.name
     return [
-        _overloaded("scan_" + name, "vertices, faces, nodes, links, origin, direction, tmin, hit", "hit",
-                    "    return mesh_closest(vertices, faces, nodes, links, %d, origin, direction, tmin, hit)" % k,
-                    "The nearest hit among the %s faces (the BVH), given the nearest so far" % name),
-        _overloaded("any_hit_" + name, "vertices, faces, nodes, links, origin, direction, tmin, tmax", "False",
-                    "    return mesh_any(vertices, faces, nodes, links, origin, direction, tmin, tmax)",
-                    "Is any %s face hit in [tmin, tmax)?" % name),
+        _overloaded("scan_" + name, "vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula",
+                    "hit",
+                    "    return mesh_closest(vertices, faces, nodes, links, spheres, %d, origin, direction, tmin, hit, formula)" % k,
+                    "The nearest hit among what the BVH holds, given the nearest so far"),
+        _overloaded("any_hit_" + name, "vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula",
+                    "False",
+                    "    return mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula)",
+                    "Is anything the BVH holds hit in [tmin, tmax)?"),
         _overloaded("normal_row_" + name, "vertices, faces, normals, row, position", "position",
                     "    return normal_mesh(vertices, faces, normals, row, position)",
                     "The unit normal of face ``row`` at ``position``"),
@@ -94,11 +97,12 @@ _KEEP = """            idx = index[i]
 
 
 def _overloaded(name: str, params: str, absent: str, present: str, doc: str,
-                eye_free: str = "", inline: str = "always") -> str:
+                eye_free: str = "", inline: str = "always", absent_on: str = "") -> str:
     """A function typed per call by an overload: the body ``absent`` when its first argument
     is None (a kind the scene lacks), ``present`` otherwise; with ``eye_free``, that body
     instead when ``terms`` is None. The choice is made when numba types the call, so it
-    costs nothing at run time; ``inline="always"`` puts the body into the caller."""
+    costs nothing at run time; ``inline="always"`` puts the body into the caller.
+    ``absent_on``: the argument whose None means absent, if not the first."""
     lines = ["def %s(%s):" % (name, params),
              '    """%s (typed by the overload below)."""' % doc,
              "    return as_python(_typed_%s, %s)" % (name, params),
@@ -106,7 +110,7 @@ def _overloaded(name: str, params: str, absent: str, present: str, doc: str,
              "",
              "@overload(%s, inline=\"%s\")" % (name, inline),
              "def _typed_%s(%s):" % (name, params),
-             "    if isinstance(%s, types.NoneType):" % params.split(",")[0],
+             "    if isinstance(%s, types.NoneType):" % (absent_on or params.split(",")[0]),
              "        def absent(%s):" % params,
              "            return %s" % absent,
              "        return absent"]
@@ -153,7 +157,8 @@ def _scan(k: int, kind) -> str:
     if not kind.from_eye:
         return _overloaded("scan_" + name, "table, index, origin, direction, tmin, hit, formula",
                            "hit", "\n".join(start + _branches(cases) + end),
-                           "The nearest hit among the %ss, given the nearest so far" % name)
+                           "The nearest hit among the %ss, given the nearest so far" % name,
+                           absent_on="index")
     # Primary rays from the eye: the tile's candidate rows, o - center and c per frame.
     radius = layout.offset(kind.record, "radius")
     candidates = ["    for c in range(n_candidates):", "        i = candidates[c]"]
@@ -167,7 +172,7 @@ def _scan(k: int, kind) -> str:
                        "table, index, terms, candidates, n_candidates, origin, direction, tmin, hit, formula",
                        "hit", "\n".join(start + _branches(eye_cases + cases) + end),
                        "The nearest hit among the %ss, given the nearest so far" % name,
-                       eye_free="\n".join(start + _branches(cases) + end))
+                       eye_free="\n".join(start + _branches(cases) + end), absent_on="index")
 
 
 def _any_hit(kind) -> str:
@@ -183,9 +188,9 @@ def _any_hit(kind) -> str:
             loop.append("        return False")
         lines += loop
     lines.append("    return False")
-    return _overloaded("any_hit_" + kind.name, "table, origin, direction, tmin, tmax, formula",
+    return _overloaded("any_hit_" + kind.name, "table, index, origin, direction, tmin, tmax, formula",
                        "False", "\n".join(lines),
-                       "Is any %s hit in [tmin, tmax)?" % kind.name)
+                       "Is any %s hit in [tmin, tmax)?" % kind.name, absent_on="index")
 
 
 def _texcoord(kind) -> str:
@@ -297,16 +302,17 @@ def source() -> str:
     for k, kind in enumerate(SHAPES):
         a = at[kind.name]
         if kind.bvh:
-            mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d]" % (a, a + 1, a + 3, a + 4)
-            calls.append("    hit = scan_%s(%s, origin, direction, tmin, hit)" % (kind.name, mesh))
-            shadow_calls.append("    if any_hit_%s(%s, position, w_i, tmin, tmax):\n        return True"
+            mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d], shapes[%d]" % (
+                a, a + 1, a + 3, a + 4, at["sphere"])
+            calls.append("    hit = scan_%s(%s, origin, direction, tmin, hit, formula)" % (kind.name, mesh))
+            shadow_calls.append("    if any_hit_%s(%s, position, w_i, tmin, tmax, formula):\n        return True"
                                 % (kind.name, mesh))
             continue
         eye_args = "terms, candidates, n_candidates, " if kind.from_eye else ""
         calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
                      % (kind.name, a, a + 1, eye_args))
-        shadow_calls.append("    if any_hit_%s(shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
-                            % (kind.name, a))
+        shadow_calls.append("    if any_hit_%s(shapes[%d], shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
+                            % (kind.name, a, a + 1))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula):",

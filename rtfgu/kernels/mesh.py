@@ -8,6 +8,8 @@ The mesh arrives as (rtfgu.layout.compile_scene):
     faces     (F, 4)  int32    [i0, i1, i2, scene index], in the BVH's leaf order
     normals   (V, 3)  float    vertex normals (zero for a flat mesh's vertices), or None
     nodes     (N, 8)  float32  the BVH (flat_bvh), links its int32 view
+    spheres   the sphere table: a row [SPHERE_ROW, sphere row, 0, scene index] of faces is
+              that sphere, tested by the sphere formula of the render (``formula``: 1 robust)
 
 A face is hit where rtfgu.robust.intersect_triangle_watertight hits it (Woop, Benthin and
 Wald 2013): two faces that share an edge compute its edge function from the same two
@@ -30,7 +32,9 @@ from numba.core import cgutils
 from numba.extending import intrinsic, overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
+from ..layout import SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
 from .dispatch_support import as_python
+from .intersect import intersect_sphere, intersect_sphere_robust
 from .float3 import cross, dot, length, lit, lit_per_precision, normalize, scale, sub, add
 
 # 1 + 2 gamma_3 (PBRT-v4 section 6.1.2): the far end of a slab interval is widened by it, so
@@ -129,6 +133,25 @@ def intersect_face(vertices, faces, f, origin, shear, tmin, tmax):
     return lit(math.inf, tmin)
 
 
+def sphere_prim(spheres, row, origin, direction, tmin, tmax, formula):
+    """t of sphere ``row`` in [tmin, tmax], else inf; inf when ``spheres`` is None (typed by
+    the overload below)."""
+    return as_python(_typed_sphere_prim, spheres, row, origin, direction, tmin, tmax, formula)
+
+
+@overload(sphere_prim, inline="always")
+def _typed_sphere_prim(spheres, row, origin, direction, tmin, tmax, formula):
+    if isinstance(spheres, types.NoneType):
+        return lambda spheres, row, origin, direction, tmin, tmax, formula: lit(math.inf, tmin)
+
+    def test(spheres, row, origin, direction, tmin, tmax, formula):
+        center = (spheres[row, SPHERE_CENTER], spheres[row, SPHERE_CENTER + 1], spheres[row, SPHERE_CENTER + 2])
+        if formula == 1:
+            return intersect_sphere_robust(origin, direction, tmin, tmax, center, spheres[row, SPHERE_RADIUS])
+        return intersect_sphere(origin, direction, tmin, tmax, center, spheres[row, SPHERE_RADIUS])
+    return test
+
+
 @njit(cache=True, error_model="numpy", inline="always")
 def box_entry(nodes, n, origin, inv, tmin, tmax):
     """BBox.hit for node ``n``: the t at which the ray enters its box within [tmin, tmax],
@@ -162,10 +185,11 @@ def _inverse(direction):
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
 # they are shared by every render kernel (each scene's kinds compile a kernel of their own).
 @njit(cache=True, error_model="numpy")
-def mesh_closest(vertices, faces, nodes, links, kind, origin, direction, tmin, hit):
-    """The nearest face hit, given the nearest hit so far ``hit`` = (t, scene index, kind,
-    row): of equal ts the face earlier in Scene.shapes wins (an earlier face is tested up to
-    the next float above the best t)."""
+def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction, tmin, hit, formula):
+    """The nearest face or sphere hit, given the nearest hit so far ``hit`` = (t, scene
+    index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier one is
+    tested up to the next float above the best t). A face is (kind, its row in faces), a
+    sphere (SPHERE, its row in the sphere table)."""
     tmax, best, best_kind, best_row = hit
     inf = lit(math.inf, tmin)
     shear = ray_shear(direction)
@@ -183,12 +207,17 @@ def mesh_closest(vertices, faces, nodes, links, kind, origin, direction, tmin, h
             for f in range(first, first + count):
                 idx = faces[f, 3]
                 limit = tmax if idx > best else np.nextafter(tmax, inf)
-                t = intersect_face(vertices, faces, f, origin, shear, tmin, limit)
+                if faces[f, 0] == SPHERE_ROW:
+                    t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
+                    k, r = SPHERE, faces[f, 1]
+                else:
+                    t = intersect_face(vertices, faces, f, origin, shear, tmin, limit)
+                    k, r = kind, f
                 if t < tmax or (t == tmax and idx < best):
                     tmax = t
                     best = idx
-                    best_kind = kind
-                    best_row = f
+                    best_kind = k
+                    best_row = r
             node = -1
         else:
             left = links[node, 3]
@@ -217,8 +246,8 @@ def mesh_closest(vertices, faces, nodes, links, kind, origin, direction, tmin, h
 
 
 @njit(cache=True, error_model="numpy")
-def mesh_any(vertices, faces, nodes, links, origin, direction, tmin, tmax):
-    """A shadow ray: is any face hit in [tmin, tmax)?"""
+def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula):
+    """A shadow ray: is any face or sphere hit in [tmin, tmax)?"""
     inf = lit(math.inf, tmin)
     shear = ray_shear(direction)
     inv = _inverse(direction)
@@ -230,7 +259,10 @@ def mesh_any(vertices, faces, nodes, links, origin, direction, tmin, tmax):
         if count > 0:
             first = links[node, 3]
             for f in range(first, first + count):
-                if intersect_face(vertices, faces, f, origin, shear, tmin, tmax) < tmax:
+                if faces[f, 0] == SPHERE_ROW:
+                    if sphere_prim(spheres, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
+                        return True
+                elif intersect_face(vertices, faces, f, origin, shear, tmin, tmax) < tmax:
                     return True
             node = -1
         else:

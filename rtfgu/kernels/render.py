@@ -61,9 +61,14 @@ def shape_arrays(flat) -> tuple:
             mesh = flat.mesh
             shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links)
                        if mesh is not None else (None,) * len(MESH_SLOTS))
+        elif flat.count(kind.name) == 0:
+            shapes += (None, None)
+        elif kind.name == "sphere" and flat.mesh is not None and flat.mesh.spheres:
+            # The BVH holds the spheres: no loop of their own (scan and any_hit are absent
+            # without an index), their table kept for the BVH, their normals and (u, v).
+            shapes += (flat.table(kind.name), None)
         else:
-            shapes += ((flat.table(kind.name), flat.index(kind.name)) if flat.count(kind.name)
-                       else (None, None))
+            shapes += (flat.table(kind.name), flat.index(kind.name))
     return shapes
 
 

@@ -8,8 +8,9 @@ main. Two directives shape a file for the scene:
 
 * ``// #if FEATURE`` (``a|b`` for either), ``// #else``, ``// #endif``: the lines are kept
   only when the scene has that feature, e.g. shadows.
-* ``// #each shape`` (or ``light``, ``shader``, ``brdf``) ... ``// #end``: the lines are
-  repeated for every kind of that list that the scene has, with ``$kind``, ``$table``,
+* ``// #each shape`` (or ``row``: the shape kinds not in the BVH; ``light``, ``shader``,
+  ``brdf``) ... ``// #end``: the lines are repeated for every kind of that list that the
+  scene has, with ``$kind``, ``$table``,
   ``$TABLE``, ``$index``, ``$args`` (the row's fields as arguments, from ``rec``), ``$ID``,
   ``$body`` and ``$of`` filled in. This is how intersect_scene, in_shadow, the light loop
   and shade name every kind without a list of kinds of their own.
@@ -132,6 +133,9 @@ def each_kinds(flat, features, formula):
         args = ", ".join("rec." + name for name, _ in kind.fields)
         shapes.append({"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper(),
                        "$index": kind.name + "_index", "$args": args, "$KIND": kind.name.upper()})
+    # The kinds intersect_scene and in_shadow loop over: the BVH holds the others.
+    rows = [entry for entry in shapes
+            if not (entry["$kind"] == "sphere" and "bvh_spheres" in features)]
     lights = [{"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper()}
               for kind in LIGHTS if len(flat.lights[kind.name])]
     shaders, brdfs = [], []
@@ -146,7 +150,7 @@ def each_kinds(flat, features, formula):
             brdfs.append({"$ID": kind.name.upper(), "$of": kind.brdf_of or kind.name})
     textures = [{"$kind": kind.name, "$ID": str(k)} for k, kind in enumerate(TEXTURES)
                 if kind.name in features]
-    return {"shape": shapes, "light": lights, "shader": shaders, "brdf": brdfs, "texture": textures}
+    return {"shape": shapes, "row": rows, "light": lights, "shader": shaders, "brdf": brdfs, "texture": textures}
 
 
 # The largest uniform buffer binding WebGPU guarantees (maxUniformBufferBindingSize).

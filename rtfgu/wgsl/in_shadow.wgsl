@@ -5,7 +5,7 @@ fn in_shadow(position: vec3f, w_i: vec3f, dist: f32) -> bool
 {
     let shadow_ray = Ray(position, w_i, SPAWN_EPSILON, dist - SPAWN_EPSILON);
     var shadow_hit = empty_hit();
-    // #each shape
+    // #each row
     for (var i = 0u; i < NUM_$TABLE; i++) {
         let rec = $table[i];
         if (intersect_$kind(shadow_ray, &shadow_hit, $args)) {

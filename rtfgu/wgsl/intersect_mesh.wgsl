@@ -6,6 +6,8 @@
 //   mesh_normals   3 floats per vertex (zero for a flat mesh's), only if a mesh is smooth
 //   bvh_nodes      the BVH (rtfgu.accelerators.flat_bvh): a leaf has b = its face count and
 //                  a = its first face; an inner node b = 0 and its children at a and a + 1.
+// With the feature bvh_spheres the BVH holds the spheres too: a row [-1, row in spheres, 0,
+// place in Scene.shapes] of mesh_faces is that sphere (rtfgu.layout.FlatMesh).
 // A face is hit where the watertight test hits it (Woop, Benthin and Wald 2013, as in
 // robust_triangle.wgsl, with the ray's shear computed once per ray): faces that share an
 // edge compute its edge function from the same two vertices, so no ray leaks through it.
@@ -172,8 +174,10 @@ fn texcoord_mesh(p: vec3f, f: u32) -> vec2f
 // The nearest face hit before (*r).tmax, nearer child first; of equal ts the face earlier in
 // Scene.shapes wins, as in intersect_scene. Updates *r, *hit, *shape and *row on a hit.
 fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<function, i32>,
-                row: ptr<function, u32>) -> bool
+                kind: ptr<function, i32>, row: ptr<function, u32>) -> bool
 {
+    var sphere_hit = *hit;
+    var face_hit = false;
     let o = (*r).origin;
     let d = (*r).direction;
     let inv = safe_inverse(d);
@@ -190,14 +194,34 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
             var q = *r;
             q.tmax = next_up((*r).tmax);
             for (var f = u32(links.a); f < u32(links.a + links.b); f++) {
+                let face = mesh_faces[f];
+                // #if bvh_spheres
+                if (face.x < 0) {
+                    let rec = spheres[face.y];
+                    var candidate = *hit;
+                    if (intersect_sphere(q, &candidate, rec.center, rec.radius)
+                        && (candidate.dist < (*r).tmax || face.w < *shape)) {
+                        sphere_hit = candidate;
+                        (*r).tmax = candidate.dist;
+                        q.tmax = next_up(candidate.dist);
+                        *shape = face.w;
+                        *kind = SPHERE;
+                        *row = u32(face.y);
+                        found = true;
+                        face_hit = false;
+                    }
+                    continue;
+                }
+                // #endif
                 let t = intersect_face(q, sh, f);
-                let index = mesh_faces[f].w;
-                if (t >= 0.0 && (t < (*r).tmax || index < *shape)) {
+                if (t >= 0.0 && (t < (*r).tmax || face.w < *shape)) {
                     (*r).tmax = t;
                     q.tmax = next_up(t);
-                    *shape = index;
+                    *shape = face.w;
+                    *kind = MESH;
                     *row = f;
                     found = true;
+                    face_hit = true;
                 }
             }
             live = false;
@@ -234,11 +258,13 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
             }
         }
     }
-    if (found) {
+    if (face_hit) {
         (*hit).has_hit = true;
         (*hit).dist = (*r).tmax;
         (*hit).position = (*r).origin + (*r).direction * (*r).tmax;
         (*hit).normal = mesh_normal(*row, (*hit).position);
+    } else if (found) {
+        *hit = sphere_hit;
     }
     return found;
 }
@@ -257,6 +283,17 @@ fn mesh_any(r: Ray) -> bool
         let links = bvh_nodes[node];
         if (links.b > 0) {
             for (var f = u32(links.a); f < u32(links.a + links.b); f++) {
+                // #if bvh_spheres
+                let face = mesh_faces[f];
+                if (face.x < 0) {
+                    let rec = spheres[face.y];
+                    var candidate = empty_hit();
+                    if (intersect_sphere(r, &candidate, rec.center, rec.radius)) {
+                        return true;
+                    }
+                    continue;
+                }
+                // #endif
                 if (intersect_face(r, sh, f) >= 0.0) {
                     return true;
                 }

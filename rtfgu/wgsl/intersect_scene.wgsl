@@ -53,7 +53,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     var q = *r;
     q.tmax = next_up((*r).tmax);
     var candidate = *hit;
-    // #each shape
+    // #each row
     for (var i = 0u; i < NUM_$TABLE; i++) {
         let rec = $table[i];
         if (intersect_$kind(q, &candidate, $args)) {
@@ -70,10 +70,9 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     }
     // #end
     // #if mesh
-    // The mesh triangles: through the BVH (intersect_mesh.wgsl), with the same tie rule.
-    if (mesh_closest(r, hit, &shape, &row)) {
-        kind = MESH;
-    }
+    // The mesh triangles (and the spheres, with bvh_spheres): through the BVH
+    // (intersect_mesh.wgsl), with the same tie rule.
+    mesh_closest(r, hit, &shape, &kind, &row);
     // #endif
     // #if debug
     hit_shape = shape;
