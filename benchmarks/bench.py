@@ -118,6 +118,18 @@ def paths(with_wgpu: bool) -> list:
     return out
 
 
+# ---- sections of docs/bench.md that a part of the bench rewrites on its own -------------
+
+def replace_section(text: str, section: str, start: str, end: str) -> str:
+    """``text`` with the part from the line ``start`` to the line ``end`` replaced by
+    ``section`` (which holds both), or ``section`` appended when there is no such part."""
+    if start in text and end in text:
+        before, rest = text.split(start, 1)
+        after = rest.split(end, 1)[1].lstrip("\n")
+        return before + section + ("\n" + after if after else "")
+    return text.rstrip("\n") + "\n\n" + section
+
+
 # ---- the machine ------------------------------------------------------------------------
 
 def cpu_model() -> str:

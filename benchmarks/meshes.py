@@ -84,7 +84,7 @@ from rtfgu.kernels.camera import gen_ray  # noqa: E402
 from rtfgu.kernels.float3 import lit  # noqa: E402
 from rtfgu.kernels.mesh import mesh_closest  # noqa: E402
 
-from bench import cpu_model  # noqa: E402
+from bench import cpu_model, replace_section  # noqa: E402
 
 START = "<!-- meshes section: benchmarks/meshes.py -->"
 END = "<!-- end of meshes section -->"
@@ -890,15 +890,6 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     return "\n".join(lines) + "\n"
 
 
-def replace_section(text: str, section: str) -> str:
-    """``text`` with its mesh section replaced by ``section``, or ``section`` appended."""
-    if START in text and END in text:
-        before, rest = text.split(START, 1)
-        after = rest.split(END, 1)[1].lstrip("\n")
-        return before + section + ("\n" + after if after else "")
-    return text.rstrip("\n") + "\n\n" + section
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=str(ROOT / "docs" / "bench.md"))
@@ -915,7 +906,7 @@ def main(argv=None):
 
     section = meshes_section(out.parent / "bench_meshes.png", args.quick, log)
     print(section)
-    out.write_text(replace_section(out.read_text() if out.exists() else "", section))
+    out.write_text(replace_section(out.read_text() if out.exists() else "", section, START, END))
     log("wrote %s" % out)
 
 

@@ -48,7 +48,7 @@ import rtfgu  # noqa: E402
 from rtfgu.scenes import SCENES  # noqa: E402
 from rtfgu.scenes.sampling import star  # noqa: E402
 
-from bench import cpu_model, gpu_adapter  # noqa: E402
+from bench import cpu_model, gpu_adapter, replace_section  # noqa: E402
 
 START = "<!-- sampling section: benchmarks/sampling.py -->"
 END = "<!-- end of sampling section -->"
@@ -305,15 +305,6 @@ def sampling_section(plot_path, quick=False, with_wgpu=True, log=print) -> str:
     return "\n".join(lines) + "\n"
 
 
-def replace_section(text: str, section: str) -> str:
-    """``text`` with its sampling section replaced by ``section``, or ``section`` appended."""
-    if START in text and END in text:
-        before, rest = text.split(START, 1)
-        after = rest.split(END, 1)[1].lstrip("\n")
-        return before + section + ("\n" + after if after else "")
-    return text.rstrip("\n") + "\n\n" + section
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=str(ROOT / "docs" / "bench.md"))
@@ -330,7 +321,7 @@ def main(argv=None):
     section = sampling_section(out.parent / "bench_sampling.png", args.quick,
                                not args.no_wgpu, log)
     print(section)
-    out.write_text(replace_section(out.read_text() if out.exists() else "", section))
+    out.write_text(replace_section(out.read_text() if out.exists() else "", section, START, END))
     log("wrote %s" % out)
 
 

@@ -234,3 +234,23 @@ def test_spheres_in_the_bvh_give_the_lecture_layers_hits_shadows_and_reflections
             assert y.color == pytest.approx(x.color, rel=2e-3 if path.precision == "float32" else 1e-12, abs=1e-5)
         sphere_hits += sum(1 for x in a if x.shape not in (None, 0))
     assert sphere_hits > 60
+
+
+def test_a_textured_mesh_takes_its_colour_at_the_faces_barycentrics(path):
+    from rtfgu.textures import Checker
+
+    sphere = trimesh.creation.icosphere(subdivisions=1)
+    checker = Checker(Float3(1.0, 0.25, 0.0), Float3(0.0, 0.5, 1.0), 0.25)
+    mesh = Mesh(np.asarray(sphere.vertices), np.asarray(sphere.faces), GREY,
+                normals=np.asarray(sphere.vertex_normals), material=Material(LAMBERTIAN, texture=checker))
+    scene = scene_of(mesh)
+    scene.lights.append(PointLight(Float3(2, 3, 4), Float3(20.0)))
+    rays = random_rays(60, seed=23)
+    want = path.reference.trace(scene, rays)
+    colours = set()
+    for ray, a, b in zip(rays, want, path.trace(scene, rays)):
+        assert a[0].shape == b[0].shape, (path, ray)
+        if a[0].shape is not None:
+            colours.add(tuple(round(c, 3) for c in a[0].color))
+            assert b[0].color == pytest.approx(a[0].color, rel=2e-3 if path.precision == "float32" else 1e-12, abs=1e-5)
+    assert len(colours) > 5

@@ -35,6 +35,7 @@ from ..accelerators.flat_bvh import MAX_DEPTH
 from ..layout import SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
 from .dispatch_support import as_python
 from .intersect import intersect_sphere, intersect_sphere_robust
+from .robust import _pick, ray_shear
 from .float3 import cross, dot, length, lit, lit_per_precision, normalize, scale, sub, add
 
 # 1 + 2 gamma_3 (PBRT-v4 section 6.1.2): the far end of a slab interval is widened by it, so
@@ -58,35 +59,6 @@ def _stack_pointer(typingctx, dtype):
     def codegen(context, builder, signature, args):
         return cgutils.alloca_once(builder, context.get_value_type(element), size=MAX_DEPTH)
     return types.CPointer(element)(dtype), codegen
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def _pick(v, k):
-    if k == 0:
-        return v[0]
-    if k == 1:
-        return v[1]
-    return v[2]
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def ray_shear(direction):
-    """Woop et al. 2013 section 3: kz the axis of the largest |direction| component, kx and
-    ky the next two (swapped when direction[kz] < 0, to keep the winding), and the shear
-    Sx = d[kx] / d[kz], Sy = d[ky] / d[kz], Sz = 1 / d[kz]."""
-    adx = abs(direction[0])
-    ady = abs(direction[1])
-    adz = abs(direction[2])
-    if adx > ady:
-        kz = 0 if adx > adz else 2
-    else:
-        kz = 1 if ady > adz else 2
-    kx = (kz + 1) % 3
-    ky = (kx + 1) % 3
-    dkz = _pick(direction, kz)
-    if dkz < lit(0, dkz):
-        kx, ky = ky, kx
-    return kx, ky, kz, _pick(direction, kx) / dkz, _pick(direction, ky) / dkz, lit(1, dkz) / dkz
 
 
 @njit(cache=True, error_model="numpy", inline="always")

@@ -131,11 +131,12 @@ def _shear(P, kx, ky, kz, Sx, Sy):
     return _pick(P, kx) - Sx * Pkz, _pick(P, ky) - Sy * Pkz
 
 
-@njit(cache=True, error_model="numpy")
-def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
-    """Watertight ray/triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (non-culling)."""
-    zero = lit(0, tmin)
-    inf = lit(math.inf, tmin)
+@njit(cache=True, error_model="numpy", inline="always")
+def ray_shear(direction):
+    """Woop et al. 2013 section 3: kz the axis of the largest |direction| component, kx and
+    ky the next two (swapped when direction[kz] < 0, to keep the winding, so U, V, W keep
+    their sign convention), and the shear Sx = d[kx] / d[kz], Sy = d[ky] / d[kz],
+    Sz = 1 / d[kz]. The same for every triangle a ray meets (rtfgu.kernels.mesh)."""
     adx = abs(direction[0])
     ady = abs(direction[1])
     adz = abs(direction[2])
@@ -146,11 +147,17 @@ def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
     kx = (kz + 1) % 3
     ky = (kx + 1) % 3
     dkz = _pick(direction, kz)
-    if dkz < zero:
-        kx, ky = ky, kx  # keep the winding, so U, V, W keep their sign convention
-    Sx = _pick(direction, kx) / dkz
-    Sy = _pick(direction, ky) / dkz
-    Sz = lit(1, tmin) / dkz
+    if dkz < lit(0, dkz):
+        kx, ky = ky, kx
+    return kx, ky, kz, _pick(direction, kx) / dkz, _pick(direction, ky) / dkz, lit(1, dkz) / dkz
+
+
+@njit(cache=True, error_model="numpy")
+def triangle_robust(origin, direction, tmin, tmax, v0, v1, v2):
+    """Watertight ray/triangle, Woop, Benthin and Wald, JCGT 2(1), 2013 (non-culling)."""
+    zero = lit(0, tmin)
+    inf = lit(math.inf, tmin)
+    kx, ky, kz, Sx, Sy, Sz = ray_shear(direction)
     A = sub(v0, origin)
     B = sub(v1, origin)
     C = sub(v2, origin)

@@ -126,27 +126,41 @@ fn safe_inverse(d: vec3f) -> vec3f
     return 1.0 / select(d, vec3f(1.0), d == vec3f(0.0));
 }
 
+// The edges e0 = v1 - v0, e1 = v2 - v0 of face f and its v0.
+fn face_frame(f: u32) -> array<vec3f, 3>
+{
+    let face = mesh_faces[f];
+    let v0 = mesh_vertex(face.x);
+    return array<vec3f, 3>(v0, mesh_vertex(face.y) - v0, mesh_vertex(face.z) - v0);
+}
+
+// #if smooth_mesh|textures
+// The barycentric (beta, gamma) of p on face f (Triangle.texcoord).
+fn face_barycentrics(f: u32, p: vec3f) -> vec2f
+{
+    let v = face_frame(f);
+    let n = cross(v[1], v[2]);
+    let d = p - v[0];
+    let nn = dot(n, n);
+    return vec2f(dot(cross(d, v[2]), n) / nn, dot(cross(v[1], d), n) / nn);
+}
+// #endif
+
 // The normal of face f at p: the face's (FlatMeshTriangle), or its vertex normals
 // interpolated with p's barycentrics (SmoothMeshTriangle).
 fn mesh_normal(f: u32, p: vec3f) -> vec3f
 {
-    let face = mesh_faces[f];
-    let v0 = mesh_vertex(face.x);
-    let e0 = mesh_vertex(face.y) - v0;
-    let e1 = mesh_vertex(face.z) - v0;
-    let n = cross(e0, e1);
     // #if smooth_mesh
-    let d = p - v0;
-    let nn = dot(n, n);
-    let beta = dot(cross(d, e1), n) / nn;
-    let gamma = dot(cross(e0, d), n) / nn;
-    let m = mesh_normal_at(face.x) * (1.0 - beta - gamma) + mesh_normal_at(face.y) * beta
-          + mesh_normal_at(face.z) * gamma;
+    let face = mesh_faces[f];
+    let b = face_barycentrics(f, p);
+    let m = mesh_normal_at(face.x) * (1.0 - b.x - b.y) + mesh_normal_at(face.y) * b.x
+          + mesh_normal_at(face.z) * b.y;
     if (dot(m, m) != 0.0) {
         return normalize(m);
     }
     // #endif
-    return normalize(n);
+    let v = face_frame(f);
+    return normalize(cross(v[1], v[2]));
 }
 
 // #if smooth_mesh
@@ -160,14 +174,7 @@ fn mesh_normal_at(i: i32) -> vec3f
 // #if textures
 fn texcoord_mesh(p: vec3f, f: u32) -> vec2f
 {
-    let face = mesh_faces[f];
-    let v0 = mesh_vertex(face.x);
-    let e0 = mesh_vertex(face.y) - v0;
-    let e1 = mesh_vertex(face.z) - v0;
-    let n = cross(e0, e1);
-    let d = p - v0;
-    let nn = dot(n, n);
-    return vec2f(dot(cross(d, e1), n) / nn, dot(cross(e0, d), n) / nn);
+    return face_barycentrics(f, p);
 }
 // #endif
 
