@@ -36,7 +36,7 @@ from ..layout import SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
 from .dispatch_support import as_python
 from .intersect import intersect_sphere, intersect_sphere_robust
 from .robust import _pick, ray_shear
-from .float3 import cross, dot, length, lit, lit_per_precision, normalize, scale, sub, add
+from .float3 import add, cross, dot, lit, lit_per_precision, normalize, scale, sub
 
 # 1 + 2 gamma_3 (PBRT-v4 section 6.1.2): the far end of a slab interval is widened by it, so
 # that rounding never drops a box whose face the triangle test would hit (BBox.hit).
