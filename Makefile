@@ -50,8 +50,10 @@ bench: $(BENCH_STAMP)
 montage: $(STAMP)
 	$(PY) -m rtfgu.montage docs/homework_renders.png docs/samplers.png
 
+# One pytest worker per core (pytest-xdist): most of a cold run is numba compiling kernels,
+# one process at a time; a test file stays on one worker, in its order.
 test: $(STAMP) $(SANDBOX_STAMP)
-	$(PY) -m pytest
+	$(PY) -m pytest -n auto --dist loadfile
 
 clean:
 	rm -rf $(VENV) renders
