@@ -211,6 +211,8 @@ class FlatScene:
     sampler: object = None
     # The mesh triangles (FlatMesh), None in a scene without any.
     mesh: object = None
+    # PathTrace's max_depth (rtfgu.path_trace), 0 for the ray-cast loop.
+    max_depth: int = 0
 
     def table(self, kind: str) -> np.ndarray:
         return self.shapes[kind][0]
@@ -321,6 +323,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add("shadows")
     if scene.show_ray_direction:
         features.add("ray_direction")
+    elif scene.tracer is not None:
+        features.add("path_trace")
 
     def table(rows, record):
         return np.array(rows, dtype=dtype).reshape(len(rows), width(record))
@@ -357,6 +361,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         textures={kind.name: table(texture_rows[kind.name], kind.record) for kind in TEXTURES},
         texels=np.array(texels or [0.0, 0.0, 0.0], dtype=dtype),
         mesh=mesh,
+        max_depth=scene.tracer.max_depth if "path_trace" in features else 0,
     )
     arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]

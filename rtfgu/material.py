@@ -3,7 +3,8 @@
 The shader ids are the cases of the 02562 ``shade`` switch ("The signature of an
 intersection function and that of a shader"): 1 lambertian, 2 phong, 3 mirror, and the
 default case returns the base colour. 4 (transparent) and 5 (glossy) are the 02562
-worksheet-3 shaders that follow them.
+worksheet-3 shaders that follow them; 6 (emissive) is Suffern's ``Emissive`` (ch. 18): a
+surface that only emits, the shape of an ``AreaLight``.
 
 Lecture 01's shapes carry a colour only; a shape built that way gets ``BASE_COLOR`` and
 the slide's render loop shows each pixel in the colour of the nearest shape.
@@ -20,6 +21,7 @@ PHONG = 2
 MIRROR = 3
 TRANSPARENT = 4
 GLOSSY = 5
+EMISSIVE = 6
 
 SHADER_NAMES = {
     BASE_COLOR: "base_color",
@@ -28,6 +30,7 @@ SHADER_NAMES = {
     MIRROR: "mirror",
     TRANSPARENT: "transparent",
     GLOSSY: "glossy",
+    EMISSIVE: "emissive",
 }
 
 
@@ -45,6 +48,9 @@ class Material:
         self.shader = shader
         self.specular = Float3(0.0) if specular is None else as_float3(specular, "Material.specular")
         self.emission = Float3(0.0) if emission is None else as_float3(emission, "Material.emission")
+        if min(self.emission.x, self.emission.y, self.emission.z) < 0.0:
+            raise ValueError("Material.emission must be >= 0 in every component (radiance), got %r"
+                             % (self.emission,))
         if not (math.isfinite(shininess) and shininess >= 0):
             raise ValueError("Material.shininess must be finite and >= 0, got %r" % (shininess,))
         if not (math.isfinite(ior) and ior > 0):
@@ -61,3 +67,16 @@ class Material:
         return "Material(%s, specular=%r, shininess=%r, ior=%r, emission=%r, texture=%r)" % (
             SHADER_NAMES[self.shader], self.specular, self.shininess, self.ior, self.emission,
             self.texture)
+
+
+class Emissive(Material):
+    """Suffern's ``Emissive`` (ch. 18): emitted radiance L_e = ls * ce and no reflection; a
+    shape with it is seen in L_e from its front (the side its normal points to) and lights
+    the scene through an ``AreaLight`` (rtfgu.area_light)."""
+
+    __slots__ = ()
+
+    def __init__(self, ls: float = 1.0, ce=(1.0, 1.0, 1.0)):
+        if not (math.isfinite(ls) and ls >= 0):
+            raise ValueError("Emissive.ls (radiance scale) must be finite and >= 0, got %r" % (ls,))
+        super().__init__(EMISSIVE, emission=as_float3(ce, "Emissive.ce") * float(ls))

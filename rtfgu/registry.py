@@ -26,9 +26,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .area_light import AreaLight
 from .directional_light import Directional
 from .lights import PointLight
-from .material import BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
+from .material import BASE_COLOR, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
@@ -89,17 +90,21 @@ class ShaderKind:
     brdf: bool = False
     continues: bool = False
     brdf_of: str = ""                   # the shader whose BRDF term this one uses ("" : its own)
+    emits: bool = False
 
 
 @dataclass(frozen=True)
 class LightKind(_Rows):
     """A light: the lecture class with an attribute per field, numba
     ``sample_<name>(lights, j, position)`` and WGSL ``fn sample_<name>(pos, i) -> Light``
-    in ``lights.wgsl``, both returning the slide's (L_i, w_i, dist)."""
+    in ``lights.wgsl``, both returning the slide's (L_i, w_i, dist). ``area``: PathTrace
+    samples a point of the light with two random numbers (the class's ``sample_area(pos, u,
+    v)``, numba ``sample_<name>_area(lights, j, position, u, v)``)."""
 
     name: str
     cls: type
     fields: tuple
+    area: bool = False
 
 
 SHAPES = (
@@ -120,11 +125,15 @@ SHADERS = (
     ShaderKind(MIRROR, "mirror", continues=True),
     ShaderKind(TRANSPARENT, "transparent", continues=True),
     ShaderKind(GLOSSY, "glossy", brdf=True, continues=True, brdf_of="phong"),
+    ShaderKind(EMISSIVE, "emissive", emits=True),
 )
 
 LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
     LightKind("directional", Directional, (("direction", 3), ("intensity", 3))),
+    # rtfgu/area_light.py: one emitting triangle or sphere.
+    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3)),
+              area=True),
 )
 
 

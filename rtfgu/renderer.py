@@ -80,7 +80,10 @@ def render_reference(scene, width: int, height: int, progress=None, sampler=None
                 else:
                     ray = camera.gen_ray(sx, sy)
 
-                color = trace(scene, ray)
+                if scene.tracer is None or scene.show_ray_direction:
+                    color = trace(scene, ray)
+                else:
+                    color = scene.tracer.trace_ray(scene, ray, pixel, s, seed)
 
                 total[0] += color.x
                 total[1] += color.y

@@ -1,5 +1,6 @@
 """Scene: a camera and a number of shapes (lecture 01, "Scene"), plus the 02562 additions a
-shaded image needs: point lights, a background colour, and whether shadow rays are cast."""
+shaded image needs: lights, a background colour, whether shadow rays are cast, and which
+tracer turns a ray into a colour."""
 from __future__ import annotations
 
 from .cameras.camera import Camera
@@ -21,6 +22,9 @@ class Scene:
         # Suffern's view-plane sampler (ch. 5): the points of each pixel that rays go through.
         # None: one ray through each pixel's centre. render(..., spp=N) overrides its count.
         self.sampler = None
+        # How a pixel's ray becomes a colour: None is the 02562 ray-cast loop
+        # (rtfgu.renderer.trace); Suffern's PathTrace (rtfgu.path_trace) traces paths.
+        self.tracer = None
 
     def intersect(self, ray: Ray, hit: HitInfo) -> bool:
         """``intersect_scene``: the slide's inner loop over the shapes; each hit shrinks
@@ -60,3 +64,9 @@ class Scene:
         if self.sampler is not None and not isinstance(self.sampler, Sampler):
             raise ValueError("Scene.sampler must be a Sampler or None, got %r" % (self.sampler,))
         self.background = as_float3(self.background, "Scene.background")
+        if self.tracer is not None:
+            from .path_trace import PathTrace
+            if not isinstance(self.tracer, PathTrace):
+                raise ValueError("Scene.tracer must be None (ray casting) or a PathTrace, got %r"
+                                 % (self.tracer,))
+            self.tracer.validate(self)

@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from .float3 import Float3, dot, normalize
-from .material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
+from .material import (BASE_COLOR, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Material)
 from .ray import Ray
 
@@ -167,6 +167,11 @@ def base_color(scene, r: Ray, hit: HitInfo) -> Float3:
     return hit.color
 
 
+def emissive(scene, r: Ray, hit: HitInfo) -> Float3:
+    """Suffern's Emissive: its emitted radiance L_e, and nothing reflected."""
+    return hit.emission
+
+
 def shade(scene, r: Ray, hit: HitInfo) -> Float3:
     """The slide's ``switch (*hit).shader``."""
     shader = hit.shader
@@ -180,5 +185,7 @@ def shade(scene, r: Ray, hit: HitInfo) -> Float3:
         return transparent(scene, r, hit)
     elif shader == GLOSSY:
         return glossy(scene, r, hit)
+    elif shader == EMISSIVE:
+        return emissive(scene, r, hit)
     else:
         return base_color(scene, r, hit)

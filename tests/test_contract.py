@@ -326,6 +326,7 @@ SHADER_CASES = {
     "mirror": (lambda: EMISSION, lambda: (0.6, 0.0, 0.8)),
     "transparent": (lambda: EMISSION, refracted),
     "glossy": (phong_color, refracted),
+    "emissive": (lambda: EMISSION, None),     # Suffern's Emissive: L_e, nothing reflected
 }
 SHADER_NAMES = [kind.name for kind in SHADERS]
 

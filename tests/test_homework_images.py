@@ -56,7 +56,7 @@ def test_homework_image_matches_reference(name, reference_images_dir, output_dir
                                           update_reference_images):
     fn = SCENES[name]
     width, height = small_size(fn.size, min(SIDE, fn.test_side or SIDE))
-    linear = rtfgu.render(fn(), width, height, backend="reference")
+    linear = rtfgu.render(fn(), width, height, backend="reference", spp=fn.test_spp)
     got = to_8bit(linear)
     assert got.shape == (height, width, 3)
     # a render that shows something: at least two colours

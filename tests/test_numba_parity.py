@@ -25,7 +25,10 @@ SAMPLED_SPP = 4
 
 
 def spp_of(name):
-    """4 for a scene with a sampler, None (its one centre sample) for the others."""
+    """The scene's test_spp if it has one (a path-traced scene), else 4 for a scene with a
+    sampler, None (its one centre sample) for the others."""
+    if SCENES[name].test_spp:
+        return SCENES[name].test_spp
     return SAMPLED_SPP if SCENES[name]().sampler is not None else None
 
 

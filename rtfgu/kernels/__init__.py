@@ -84,6 +84,8 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             eye = (terms, cone_table(camera64, table))
     continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
     bounces = MAX_DEPTH if continues else None
+    if flat.max_depth:
+        bounces = (flat.max_depth,)
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),

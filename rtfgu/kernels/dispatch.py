@@ -254,6 +254,40 @@ def _direct(light) -> str:
                        inline="always")
 
 
+def _direct_path(light) -> str:
+    """PathTrace's light loop (rtfgu.path_trace.direct_light) for one light kind: f_r = rho / pi,
+    an area light through a point of it drawn from the stream (path_dimension)."""
+    if light.area:
+        draw = ["        u = random_float(pixel, sample, first + LIGHT_U + 2 * j, seed, zero)",
+                "        v = random_float(pixel, sample, first + LIGHT_V + 2 * j, seed, zero)",
+                "        L_i, w_i, dist = sample_%s_area(table, j, position, u, v)" % light.name]
+    else:
+        draw = ["        L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
+    body = "\n".join([
+        "    zero = lit(0, rho[0])",
+        "    eps = lit(SPAWN_EPSILON, zero)",
+        "    f = div(rho, lit(math.pi, zero))",
+        "    first = 2 + depth * VERTEX_DIMENSIONS",
+        "    n_shadow = 0",
+        "    for j in range(table.shape[0]):"] + draw + [
+        "        if L_i[0] == zero and L_i[1] == zero and L_i[2] == zero:",
+        "            continue",
+        "        cos_theta = dot(normal, w_i)",
+        "        if not cos_theta > zero:",
+        "            continue",
+        "        if shadows:",
+        "            n_shadow += 1",
+        "            if in_shadow(shapes, position, w_i, eps, dist - eps, formula):",
+        "                continue",
+        "        result = add(result, scale(mul(f, L_i), cos_theta))",
+        "    return result, n_shadow"])
+    return _overloaded("direct_path_" + light.name,
+                       "table, shapes, position, normal, rho, depth, pixel, sample, seed, shadows, formula, result",
+                       "result, 0", body,
+                       "The light of every %s reflected by a diffuse surface on a path, added to ``result``"
+                       % light.name, inline="always")
+
+
 def source() -> str:
     """The generated module's text."""
     eye_kinds = [kind for kind in SHAPES if kind.from_eye]
@@ -281,7 +315,12 @@ def source() -> str:
              "from numba.extending import overload",
              "from rtfgu.kernels.dispatch_support import as_python",
              "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
-             "from rtfgu.kernels.lights import %s" % ", ".join("sample_" + l.name for l in LIGHTS),
+             "import math",
+             "from rtfgu.kernels.float3 import div",
+             "from rtfgu.kernels.lights import %s" % ", ".join(
+                 ["sample_" + l.name for l in LIGHTS] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
+             "from rtfgu.kernels.sampling import random_float",
+             "from rtfgu.sampling.random import LIGHT_U, LIGHT_V, VERTEX_DIMENSIONS",
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
@@ -342,6 +381,17 @@ def source() -> str:
         "material's; ``texels`` is None in a scene without textures"))
     for light in LIGHTS:
         parts.append(_direct(light))
+        parts.append(_direct_path(light))
+    parts.append("\n".join(
+        ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+         "def direct_path(lights, shapes, position, normal, rho, depth, pixel, sample, seed, shadows, formula):",
+         '    """PathTrace\'s light loop over every light kind: (radiance, shadow rays)."""',
+         "    zero = lit(0, rho[0])",
+         "    result = (zero, zero, zero)",
+         "    n_shadow = 0"]
+        + ["    result, n = direct_path_%s(lights[%d], shapes, position, normal, rho, depth, pixel, sample, seed, "
+           "shadows, formula, result)\n    n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
+        + ["    return result, n_shadow"]))
 
     brdf_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                   "def brdf(shader, mat, color, normal, w_o, w_i, cos_theta):",
@@ -362,6 +412,10 @@ def source() -> str:
                    '    the path exists only when ``bounces`` does."""',
                    "    n_shadow = 0"]
     for shader in SHADERS:
+        if shader.emits:
+            shade_lines.append("    if shader == %d:  # %s" % (shader.id, shader.name))
+            shade_lines.append("        return load3(mat, MAT_EMISSION), True, r_d, n_shadow")
+            continue
         if not (shader.brdf or shader.continues):
             continue
         body = []
@@ -465,3 +519,4 @@ in_shadow = _generated.in_shadow
 shape_normal = _generated.shape_normal
 shade = _generated.shade
 surface_color = _generated.surface_color
+direct_path = _generated.direct_path

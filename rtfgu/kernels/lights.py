@@ -1,7 +1,9 @@
 # release: solves a04
 """sample_point_light (02562 "Sampling light in the shader", Kepler's inverse square law),
-operation for operation as rtfgu.lights.sample_point_light, and sample_directional as
-rtfgu.directional_light.Directional.sample."""
+operation for operation as rtfgu.lights.sample_point_light, sample_directional as
+rtfgu.directional_light.Directional.sample, and an area light's two samples as
+rtfgu.area_light.AreaLight's ``sample`` (sample_area_light, the ray-cast loop's) and
+``sample_area`` (sample_area_light_area, PathTrace's)."""
 from __future__ import annotations
 
 import math
@@ -9,21 +11,32 @@ import math
 from numba import njit
 
 from ..layout import LIGHT_INTENSITY, LIGHT_POSITION, offset
-from .float3 import div, lit, neg, normalize, row3, sub
+from .float3 import add, cross, div, dot, length, lit, neg, normalize, row3, scale, sub
 
 DIRECTIONAL_DIRECTION = offset("Directional", "direction")
 DIRECTIONAL_INTENSITY = offset("Directional", "intensity")
+AREA_V0 = offset("AreaLight", "v0")
+AREA_RADIUS = offset("AreaLight", "radius")
+AREA_E0 = offset("AreaLight", "e0")
+AREA_E1 = offset("AreaLight", "e1")
+AREA_EMISSION = offset("AreaLight", "emission")
+
+
+@njit(cache=True, error_model="numpy")
+def point_light(position, intensity, pos):
+    """The slide's Light struct (L_i, w_i, dist) of a point light at ``position`` seen from
+    pos: L_i = I / ||p - x||^2."""
+    to_light = sub(position, pos)
+    dist_squared = to_light[0] * to_light[0] + to_light[1] * to_light[1] + to_light[2] * to_light[2]
+    dist = math.sqrt(dist_squared)
+    L_i = div(intensity, dist_squared)
+    return L_i, div(to_light, dist), dist
 
 
 @njit(cache=True, error_model="numpy")
 def sample_point_light(lights, j, pos):
-    """The slide's Light struct (L_i, w_i, dist) for light j of the layout seen from pos:
-    L_i = I / ||p - x||^2."""
-    to_light = sub(row3(lights, j, LIGHT_POSITION), pos)
-    dist_squared = to_light[0] * to_light[0] + to_light[1] * to_light[1] + to_light[2] * to_light[2]
-    dist = math.sqrt(dist_squared)
-    L_i = div(row3(lights, j, LIGHT_INTENSITY), dist_squared)
-    return L_i, div(to_light, dist), dist
+    """(L_i, w_i, dist) for point light j of the layout seen from pos."""
+    return point_light(row3(lights, j, LIGHT_POSITION), row3(lights, j, LIGHT_INTENSITY), pos)
 
 
 @njit(cache=True, error_model="numpy")
@@ -31,3 +44,61 @@ def sample_directional(lights, j, pos):
     """(L_i, w_i, dist) of directional light j: its intensity, -normalize(direction), inf."""
     w_i = neg(normalize(row3(lights, j, DIRECTIONAL_DIRECTION)))
     return row3(lights, j, DIRECTIONAL_INTENSITY), w_i, lit(math.inf, pos[0])
+
+
+@njit(cache=True, error_model="numpy")
+def sample_area_light(lights, j, pos):
+    """AreaLight.sample: area light j as a point light at its shape's centre (02562 worksheet
+    5), with the intensity it sends toward pos."""
+    v0 = row3(lights, j, AREA_V0)
+    radius = lights[j, AREA_RADIUS]
+    emission = row3(lights, j, AREA_EMISSION)
+    zero = lit(0.0, radius)
+    if radius > zero:
+        L_i, w_i, dist = point_light(v0, scale(emission, lit(math.pi, zero) * radius * radius), pos)
+        return L_i, w_i, dist - radius
+    e0 = row3(lights, j, AREA_E0)
+    e1 = row3(lights, j, AREA_E1)
+    n = cross(e0, e1)
+    center = add(v0, div(add(e0, e1), lit(3.0, zero)))
+    L_i, w_i, dist = point_light(center, scale(emission, lit(0.5, zero) * length(n)), pos)
+    cos_l = -dot(normalize(n), w_i)
+    if zero > cos_l:
+        cos_l = zero
+    return scale(L_i, cos_l), w_i, dist
+
+
+@njit(cache=True, error_model="numpy")
+def sample_area_light_area(lights, j, pos, u, v):
+    """AreaLight.sample_area: L_e A cos(theta_l) / d^2 toward a point of area light j uniform
+    by area (AreaLight.sample_point), zero from behind."""
+    v0 = row3(lights, j, AREA_V0)
+    radius = lights[j, AREA_RADIUS]
+    emission = row3(lights, j, AREA_EMISSION)
+    zero = lit(0.0, radius)
+    one = lit(1.0, zero)
+    if radius > zero:
+        z = one - lit(2.0, zero) * u
+        s2 = one - z * z
+        if zero > s2:
+            s2 = zero
+        s = math.sqrt(s2)
+        phi = lit(2.0 * math.pi, zero) * v
+        normal = (s * math.cos(phi), s * math.sin(phi), z)
+        point = add(v0, scale(normal, radius))
+        area = lit(4.0 * math.pi, zero) * radius * radius
+    else:
+        e0 = row3(lights, j, AREA_E0)
+        e1 = row3(lights, j, AREA_E1)
+        su = math.sqrt(u)
+        point = add(v0, scale(add(scale(e0, v), scale(e1, one - v)), su))
+        n = cross(e0, e1)
+        normal = normalize(n)
+        area = lit(0.5, zero) * length(n)
+    to_light = sub(point, pos)
+    dist = length(to_light)
+    w_i = div(to_light, dist)
+    cos_l = -dot(normal, w_i)
+    if not cos_l > zero:
+        return (zero, zero, zero), w_i, dist
+    return scale(emission, area * cos_l / (dist * dist)), w_i, dist

@@ -12,7 +12,8 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
               texture entries None in a scene without textures (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
-    bounces   None when no shader continues a path: that code then compiles to nothing
+    bounces   None when no shader continues a path: that code then compiles to nothing;
+              (max_depth,) for PathTrace (rtfgu.kernels.path_trace)
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
 
@@ -37,6 +38,7 @@ from .culling import tile_candidates
 from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, surface_color
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, scale
+from .path_trace import trace_path
 from .sampling import concentric_map, pixel_sample
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
@@ -180,6 +182,31 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     return result, n_shadow, n_secondary
 
 
+def trace_any(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, pixel,
+              sample):
+    """The scene's tracer, typed on ``bounces`` by the overload below: PathTrace
+    (rtfgu.kernels.path_trace) when it is (max_depth,), the ray-cast ``trace`` otherwise.
+    Returns (radiance, shadow rays, secondary rays)."""
+    return as_python(_typed_trace_any, ray, shapes, lights, scene, terms, candidates, n_candidates,
+                     settings, bounces, pixel, sample)
+
+
+@overload(trace_any, inline="always")
+def _typed_trace_any(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces,
+                     pixel, sample):
+    if isinstance(bounces, types.BaseTuple):
+        def path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, pixel,
+                 sample):
+            return trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
+                              bounces[0], pixel, sample)
+        return path
+
+    def cast(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, pixel,
+             sample):
+        return trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces)
+    return cast
+
+
 @njit(cache=True, error_model="numpy", _nrt=False)
 def render_tile(tile, camera, shapes, lights, scene, terms, candidates, n_candidates,
                 settings, bounces, sampler, image):
@@ -218,9 +245,9 @@ def render_tile(tile, camera, shapes, lights, scene, terms, candidates, n_candid
                     half = lit(0.5, one)
                     color = add(scale(ray[1], half), (half, half, half))
                 else:
-                    color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
-                                                               candidates, n_candidates, settings,
-                                                               bounces)
+                    color, shadow_rays, secondary_rays = trace_any(ray, shapes, lights, scene, terms,
+                                                                   candidates, n_candidates, settings,
+                                                                   bounces, pixel, s)
                     n_shadow += shadow_rays
                     n_secondary += secondary_rays
                 total = add(total, color)

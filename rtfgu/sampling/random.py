@@ -27,6 +27,17 @@ PIXEL_SET = 0       # which set of the pixel sampler a pixel's samples come from
 LENS_SET = 1        # which set the lens samples (ThinLens) come from
 DIMENSIONS = {"pixel_set": PIXEL_SET, "lens_set": LENS_SET}
 
+# PathTrace: vertex ``depth`` of a path (0 where the eye ray lands) draws dimension
+# path_dimension(depth, k) for k = BOUNCE_U, BOUNCE_V (the next direction), ROULETTE (Russian
+# roulette) and LIGHT_U + 2 j, LIGHT_V + 2 j (a point of the path's j-th area light, in the
+# order of Scene.lights); k below LIGHT_U is kept for the vertex's own numbers.
+VERTEX_DIMENSIONS = 1 << 16
+BOUNCE_U = 0
+BOUNCE_V = 1
+ROULETTE = 2
+LIGHT_U = 8
+LIGHT_V = 9
+
 
 def pcg(v: int) -> int:
     """PCG's state step and RXS-M-XS output on 32 bits (Jarzynski and Olano, listing "pcg")."""
@@ -56,3 +67,8 @@ def check_seed(seed) -> int:
     if not 0 <= seed <= MASK:
         raise ValueError("seed must be an integer in [0, 2^32), got %r" % (seed,))
     return seed
+
+
+def path_dimension(depth: int, k: int) -> int:
+    """The dimension of number ``k`` at vertex ``depth`` of a path (the constants above)."""
+    return 2 + depth * VERTEX_DIMENSIONS + k

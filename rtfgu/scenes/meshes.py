@@ -7,11 +7,9 @@ teapot scaled by 0.2 and standing on y = 0 (6.4 wide, 3.15 high, as worksheet 5'
 bunny scaled and moved onto the Stanford scan's bounding box (the npm package's copy is 10
 units high), the Cornell box in its measured millimetres.
 
-The Cornell box's light is its emissive ceiling quad (Ke in cornell_box.mtl). Until an
-area light samples it, the light it casts comes from a point light 1 mm below the quad's
-centre with the intensity the quad sends straight down, I = L_e A (worksheet 5 approximates
-the area light by a light at its centre the same way, with a cosine per light triangle);
-the quad itself shows its emission.
+The Cornell box's light is its emissive ceiling quad (Ke in cornell_box.mtl): an AreaLight
+per triangle. The ray-cast scenes see each as a point at its centre (worksheet 5's first
+approximation, AreaLight.sample); the path-traced ones sample points of it.
 """
 from __future__ import annotations
 
@@ -19,12 +17,14 @@ import math
 
 import numpy as np
 
+from ..area_light import AreaLight
 from ..cameras import PinholeCamera
 from ..directional_light import Directional
 from ..float3 import Float3, normalize
-from ..lights import PointLight
 from ..material import LAMBERTIAN, MIRROR, TRANSPARENT, Material
 from ..obj import load_obj, mesh_path
+from ..sampling import Jittered
+from ..sampling.sampler import sampler_of
 from ..scene import Scene
 from ..shapes import Plane, Sphere
 from ..shapes.mesh import Mesh
@@ -75,15 +75,10 @@ def cornell_box_mesh(blocks: bool = True) -> Mesh:
                 material=[m for m, k in zip(mesh.materials, keep) if k])
 
 
-def cornell_light(mesh: Mesh) -> PointLight:
-    """The point light standing in for the emissive faces of ``mesh``: 1 mm below their
-    centre (they face down), intensity L_e times their area."""
-    emissive = [f for f, m in enumerate(mesh.materials) if m.emission.x > 0 or m.emission.y > 0 or m.emission.z > 0]
-    v = mesh.vertices[mesh.faces[emissive]]
-    area = 0.5 * np.linalg.norm(np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0]), axis=1).sum()
-    center = v.reshape(-1, 3).mean(axis=0)
-    emission = mesh.materials[emissive[0]].emission
-    return PointLight(Float3(center[0], center[1] - MM, center[2]), emission * float(area))
+def cornell_lights(scene: Scene) -> list:
+    """An AreaLight for every emitting shape of ``scene`` (the ceiling quad's two triangles)."""
+    return [AreaLight(shape) for shape in scene.shapes
+            if max(shape.material.emission.x, shape.material.emission.y, shape.material.emission.z) > 0]
 
 
 def _cornell_scene(mesh: Mesh) -> Scene:
@@ -92,7 +87,14 @@ def _cornell_scene(mesh: Mesh) -> Scene:
     scene = Scene(camera)
     scene.background = Float3(0.0)
     scene.shapes += mesh.triangles()
-    scene.lights.append(cornell_light(mesh))
+    scene.lights += cornell_lights(scene)
+    return scene
+
+
+def _cornell_spheres(scene: Scene) -> Scene:
+    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Material(MIRROR)))
+    scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0),
+                               Material(TRANSPARENT, ior=1.5)))
     return scene
 
 
@@ -130,8 +132,42 @@ def cornell_box_blocks() -> Scene:
 @homework(512, 512)
 def cornell_box_spheres() -> Scene:
     """Worksheet 6: the Cornell box with a mirror sphere and a glass sphere (ior 1.5)."""
-    scene = _cornell_scene(cornell_box_mesh(blocks=False))
-    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Material(MIRROR)))
-    scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0),
-                               Material(TRANSPARENT, ior=1.5)))
+    return _cornell_spheres(_cornell_scene(cornell_box_mesh(blocks=False)))
+
+
+def path_trace(**options):
+    """A PathTrace tracer; a clear error in a release of rtfgu without one (the path tracer
+    computes the light loop of the diffuse shader again, so it comes with that answer)."""
+    try:
+        from ..path_trace import PathTrace
+    except ImportError:
+        raise ValueError("this scene is path traced, and rtfgu.path_trace is not part of this release "
+                         "of rtfgu yet") from None
+    return PathTrace(**options)
+
+
+# Path-traced scenes: the samples per pixel of ``make render`` (under a minute each on two
+# cores with the numba path, docs/path_tracing.md) and of the tests.
+AREA_LIGHT_SPP = 256
+PROGRESSIVE_SPP = 256
+TEST_SPP = 4
+
+
+@homework(512, 512, test_side=16, test_spp=TEST_SPP)
+def cornell_box_area_light() -> Scene:
+    """Worksheet 5: the Cornell box with its blocks lit by its ceiling as an area light: the
+    direct light only (PathTrace with one vertex), soft shadows."""
+    scene = _cornell_scene(cornell_box_mesh(blocks=True))
+    scene.tracer = path_trace(max_depth=1)
+    scene.sampler = sampler_of(Jittered, AREA_LIGHT_SPP)
+    return scene
+
+
+@homework(512, 512, test_side=16, test_spp=TEST_SPP)
+def cornell_box_progressive() -> Scene:
+    """Worksheet 7: the Cornell box with a mirror and a glass sphere, path traced: the
+    light of the ceiling reflected any number of times (progressive rendering)."""
+    scene = _cornell_spheres(_cornell_scene(cornell_box_mesh(blocks=False)))
+    scene.tracer = path_trace()
+    scene.sampler = sampler_of(Jittered, PROGRESSIVE_SPP)
     return scene

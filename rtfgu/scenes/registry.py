@@ -8,14 +8,17 @@ from __future__ import annotations
 SCENES = {}
 
 
-def homework(width: int, height: int, test_side: int | None = None):
+def homework(width: int, height: int, test_side: int | None = None, test_spp: int | None = None):
     """Register a scene function with its homework image size. ``test_side``: the longer
     side of the small images the tests render of it, where the lecture layer would take too
     long at the tests' usual size (a mesh of thousands of faces, each tested by every ray);
-    None: the tests' default."""
+    None: the tests' default. ``test_spp``: the samples per pixel the tests render it with,
+    for a scene whose own sampler (a path-traced scene's hundreds of samples) would take the
+    lecture layer minutes; None: the tests' default."""
     def register(fn):
         fn.size = (width, height)
         fn.test_side = test_side
+        fn.test_spp = test_spp
         SCENES[fn.__name__] = fn
         return fn
     return register

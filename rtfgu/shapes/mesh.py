@@ -110,6 +110,11 @@ class MeshTriangle(Shape):
     def bounds(self):
         return self._triangle.bounds()
 
+    @property
+    def triangle(self) -> Triangle:
+        """The face as a ``Triangle`` through its three vertices."""
+        return self._triangle
+
     def texcoord(self, position: Float3) -> tuple:
         """The barycentric (beta, gamma) of the point, as ``Triangle.texcoord``."""
         return self._triangle.texcoord(position)

@@ -140,6 +140,9 @@ def each_kinds(flat, features, formula):
               for kind in LIGHTS if len(flat.lights[kind.name])]
     shaders, brdfs = [], []
     for kind in SHADERS:
+        if kind.name in features and kind.emits:
+            shaders.append({"$ID": kind.name.upper(), "$body": "(*hit).emission"})
+            continue
         if kind.name not in features or not (kind.brdf or kind.continues):
             continue
         if kind.continues and "trace" not in features:

@@ -7,15 +7,22 @@ struct Light {
     dist: f32
 };
 
-// #if point_light
-// Kepler's inverse square law: L_i = I / ||p - x||^2 for the point light number i.
-fn sample_point_light(pos: vec3f, i: u32) -> Light
+// #if point_light|area_light
+// Kepler's inverse square law: L_i = I / ||p - x||^2 for a point light at p with intensity I.
+fn point_light(position: vec3f, intensity: vec3f, pos: vec3f) -> Light
 {
-    let to_light = point_lights[i].position - pos;
+    let to_light = position - pos;
     let dist_squared = dot(to_light, to_light);
     let dist = sqrt(dist_squared);
-    let L_i = point_lights[i].intensity / dist_squared;
+    let L_i = intensity / dist_squared;
     return Light(L_i, to_light / dist, dist);
+}
+// #endif
+// #if point_light
+// The point light number i.
+fn sample_point_light(pos: vec3f, i: u32) -> Light
+{
+    return point_light(point_lights[i].position, point_lights[i].intensity, pos);
 }
 // #endif
 // #if directional
@@ -24,5 +31,23 @@ fn sample_point_light(pos: vec3f, i: u32) -> Light
 fn sample_directional(pos: vec3f, i: u32) -> Light
 {
     return Light(directionals[i].intensity, -normalize(directionals[i].direction), FAR);
+}
+// #endif
+// #if area_light
+// An area light in the ray-cast loop (rtfgu/area_light.py, AreaLight.sample): a point light at
+// its shape's centre; a triangle sends L_e A cos(theta_l), a sphere L_e pi r^2 and stops the
+// shadow ray at its surface.
+fn sample_area_light(pos: vec3f, i: u32) -> Light
+{
+    let light = area_lights[i];
+    if (light.radius > 0.0) {
+        let sample = point_light(light.v0, light.emission * (PI * light.radius * light.radius), pos);
+        return Light(sample.L_i, sample.w_i, sample.dist - light.radius);
+    }
+    let n = cross(light.e0, light.e1);
+    let center = light.v0 + (light.e0 + light.e1) / 3.0;
+    let sample = point_light(center, light.emission * (0.5 * length(n)), pos);
+    let cos_l = max(-dot(normalize(n), sample.w_i), 0.0);
+    return Light(sample.L_i * cos_l, sample.w_i, sample.dist);
 }
 // #endif

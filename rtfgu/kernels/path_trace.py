@@ -1,0 +1,102 @@
+"""PathTrace on the numba path: rtfgu.path_trace.trace_path, operation for operation, over the
+flat layout (the same random numbers, so the same paths as the lecture layer).
+
+rtfgu.kernels.render's ``trace_any`` calls it when ``bounces`` is the tuple (max_depth,), and
+the ray-cast loop otherwise, so a ray-cast scene compiles none of it.
+"""
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+from ..layout import MAT_EMISSION
+from ..material import BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT
+from ..sampling.random import BOUNCE_U, BOUNCE_V, ROULETTE, VERTEX_DIMENSIONS
+from ..shading import SPAWN_EPSILON
+from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
+from .float3 import add, dot, lit, load3, mul, neg, scale
+from .sampling import hemisphere_map, random_float
+from .shaders import continue_mirror, continue_transparent
+
+
+@njit(cache=True, error_model="numpy")
+def cosine_direction(n, u, v):
+    """rtfgu.path_trace.cosine_direction: density cos(theta) / pi about the unit n, with
+    Duff et al.'s orthonormal basis."""
+    zero = lit(0.0, u)
+    one = lit(1.0, u)
+    x, y, z = hemisphere_map(u, v, one)
+    sign = one if n[2] >= zero else -one
+    a = -one / (sign + n[2])
+    b = n[0] * n[1] * a
+    t = (one + sign * n[0] * n[0] * a, sign * b, -sign * n[0])
+    bt = (b, sign + n[1] * n[1] * a, -n[1])
+    return add(add(scale(t, x), scale(bt, y)), scale(n, z))
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, max_depth,
+               pixel, sample):
+    """One path's radiance (rtfgu.path_trace.trace_path): (radiance, shadow rays, secondary
+    rays)."""
+    origin, direction, tmin, tmax = ray
+    materials, shaders, background = scene[0], scene[1], scene[2]
+    shadows, formula, seed = settings[0], settings[2], settings[3]
+    zero = lit(0, tmin)
+    one = lit(1, zero)
+    result = (zero, zero, zero)
+    throughput = (one, one, one)
+    sees_emission = True
+    n_shadow = 0
+    n_secondary = 0
+    for depth in range(max_depth):
+        if depth > 0:
+            n_secondary += 1
+        t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if depth == 0 else -1,
+                                            origin, direction, tmin, tmax, formula)
+        if idx < 0:
+            result = add(result, mul(throughput, load3(background, 0)))
+            break
+        position = add(origin, scale(direction, t))
+        shader = shaders[idx]
+        mat = materials[idx]
+        normal = shape_normal(shapes, kind, row, position)
+        facing = dot(normal, direction)
+        if sees_emission and facing < zero:
+            result = add(result, mul(throughput, load3(mat, MAT_EMISSION)))
+        first = 2 + depth * VERTEX_DIMENSIONS
+        if shader == LAMBERTIAN:
+            if facing > zero:
+                normal = neg(normal)
+            rho = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
+            light, shadow_rays = direct_path(lights, shapes, position, normal, rho, depth, pixel, sample,
+                                             seed, shadows, formula)
+            n_shadow += shadow_rays
+            result = add(result, mul(throughput, light))
+            if depth + 1 == max_depth:
+                break
+            q = (rho[0] + rho[1] + rho[2]) / lit(3.0, zero)
+            if not random_float(pixel, sample, first + ROULETTE, seed, zero) < q:
+                break
+            throughput = mul(throughput, (rho[0] / q, rho[1] / q, rho[2] / q))
+            u = random_float(pixel, sample, first + BOUNCE_U, seed, zero)
+            v = random_float(pixel, sample, first + BOUNCE_V, seed, zero)
+            direction = cosine_direction(normal, u, v)
+            sees_emission = False
+        elif shader == MIRROR:
+            direction = continue_mirror(mat, direction, normal)
+            sees_emission = True
+        elif shader == TRANSPARENT:
+            direction = continue_transparent(mat, direction, normal)
+            sees_emission = True
+        else:
+            if shader == BASE_COLOR:
+                color = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
+                result = add(result, mul(throughput, color))
+            break
+        origin = position
+        tmin = lit(SPAWN_EPSILON, zero)
+        tmax = lit(math.inf, zero)
+    return result, n_shadow, n_secondary
+

@@ -1,0 +1,172 @@
+# release: solves a04 a05
+"""PathTrace: progressive Monte Carlo path tracing (Suffern ch. 26, "Global Illumination";
+02562 worksheet 7, "Progressive path tracing").
+
+A scene with ``scene.tracer = PathTrace()`` is rendered by ``trace_path`` instead of the
+ray-cast loop (rtfgu.renderer.trace, which stays the default). Every sample of a pixel is
+one path, and the image is the mean over the samples. At each diffuse vertex x with albedo
+rho (the surface's colour: no ambient term, and no DIFFUSE_FRACTION) the path
+
+1. adds the light of every light source, reflected by f_r = rho / pi (next-event
+   estimation, 02562 worksheet 5): a point light or a directional light as in the ray-cast
+   loop, an ``AreaLight`` through one point of it sampled by area
+   (AreaLight.sample_area: L_i = L_e A cos(theta_l) / d^2), each unless shadowed;
+2. continues with probability q = (rho_r + rho_g + rho_b) / 3 (Russian roulette, worksheet
+   7), in a cosine-weighted direction about the normal (pdf cos(theta) / pi), so that the
+   throughput is multiplied by f_r cos(theta) / (pdf q) = rho / q.
+
+Emitted light is counted where the eye sees it and after a mirror or a refraction, and not
+after a diffuse bounce, whose light sources step 1 counted already; so every emitting shape
+must be an ``AreaLight``'s (Scene.validate says which is not). A surface emits from its
+front only (the side its normal points to). A ray that leaves the scene sees
+``scene.background`` as a constant environment: radiance from every direction. A mirror
+and a refracting surface (the 02562 ``mirror`` and ``transparent``) continue the path as in
+the ray-cast loop; ``base_color`` and ``emissive`` end it.
+
+The random numbers of vertex ``depth`` are the stream's dimensions ``path_dimension(depth,
+k)`` (rtfgu.sampling.random), so the numba path draws the same numbers for the same path.
+A path has at most ``max_depth`` vertices.
+"""
+from __future__ import annotations
+
+import math
+
+from .area_light import AreaLight
+from .float3 import Float3, dot
+from .material import BASE_COLOR, EMISSIVE, LAMBERTIAN, MIRROR, SHADER_NAMES, TRANSPARENT
+from .ray import Ray
+from .sampling.maps import hemisphere_map
+from .sampling.random import (BOUNCE_U, BOUNCE_V, LIGHT_U, LIGHT_V, ROULETTE, VERTEX_DIMENSIONS,
+                              path_dimension, random_float)
+from .shading import SPAWN_EPSILON, HitInfo, in_shadow, mirror, transparent
+
+# The shaders a path goes through; any other is refused by Scene.validate.
+PATH_SHADERS = (BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT, EMISSIVE)
+# The deepest path: vertex dimensions stay below 2^32 far beyond it.
+MAX_PATH_DEPTH = 1024
+# The most area lights a path samples (two dimensions each per vertex).
+MAX_AREA_LIGHTS = (VERTEX_DIMENSIONS - LIGHT_U) // 2
+
+
+class PathTrace:
+    """Suffern's ``PathTrace`` tracer; ``max_depth``: the most vertices of a path (Russian
+    roulette ends most paths well before it)."""
+
+    def __init__(self, max_depth: int = 64):
+        if isinstance(max_depth, bool) or not isinstance(max_depth, int) or not 1 <= max_depth <= MAX_PATH_DEPTH:
+            raise ValueError("PathTrace.max_depth must be an integer in [1, %d], got %r"
+                             % (MAX_PATH_DEPTH, max_depth))
+        self.max_depth = max_depth
+
+    def trace_ray(self, scene, ray: Ray, pixel: int, sample: int, seed: int) -> Float3:
+        """The radiance of one path: sample ``sample`` of ``pixel``."""
+        return trace_path(scene, ray, self.max_depth, pixel, sample, seed)
+
+    def validate(self, scene) -> None:
+        """Raise a ValueError naming the field if ``scene`` cannot be path traced."""
+        lit = {id(light.shape) for light in scene.lights if isinstance(light, AreaLight)}
+        if len(lit) > MAX_AREA_LIGHTS:
+            raise ValueError("Scene.lights: PathTrace samples at most %d area lights, got %d"
+                             % (MAX_AREA_LIGHTS, len(lit)))
+        for i, shape in enumerate(scene.shapes):
+            m = shape.material
+            if m.shader not in PATH_SHADERS:
+                raise ValueError("Scene.shapes[%d].material: PathTrace traces the shaders %s, not %s"
+                                 % (i, ", ".join(SHADER_NAMES[s] for s in PATH_SHADERS), SHADER_NAMES[m.shader]))
+            e = m.emission
+            if max(e.x, e.y, e.z) > 0.0 and id(shape) not in lit:
+                raise ValueError("Scene.shapes[%d] emits (material.emission %r) but no AreaLight in "
+                                 "Scene.lights samples it: add AreaLight(scene.shapes[%d])" % (i, e, i))
+            c = shape.color
+            if m.shader == LAMBERTIAN and max(c.x, c.y, c.z) > 1.0:
+                raise ValueError("Scene.shapes[%d].color %r: a diffuse albedo above 1 reflects more light "
+                                 "than it receives; PathTrace refuses it (scale the colour to <= 1)"
+                                 % (i, c))
+
+
+def orthonormal_basis(n: Float3) -> tuple:
+    """Two unit vectors t, b with (t, b, n) orthonormal, for a unit n (Duff et al., "Building
+    an Orthonormal Basis, Revisited", JCGT 6(1), 2017), without a branch on n but its sign."""
+    sign = 1.0 if n.z >= 0.0 else -1.0
+    a = -1.0 / (sign + n.z)
+    b = n.x * n.y * a
+    return Float3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), Float3(b, sign + n.y * n.y * a, -n.y)
+
+
+def cosine_direction(n: Float3, u: float, v: float) -> Float3:
+    """A direction about the unit normal n with density cos(theta) / pi (Suffern's
+    hemisphere map with e = 1), for (u, v) uniform in [0, 1)^2."""
+    local = hemisphere_map(u, v, 1.0)
+    t, b = orthonormal_basis(n)
+    return t * local.x + b * local.y + n * local.z
+
+
+def direct_light(scene, position: Float3, normal: Float3, rho: Float3, depth: int, pixel: int,
+                 sample: int, seed: int) -> Float3:
+    """The light of every light source reflected by f_r = rho / pi at ``position``:
+    sum of f_r L_i (n . w_i) over the lights that are above the surface and not shadowed,
+    an area light through one point of it (step 1 above)."""
+    result = Float3(0.0)
+    j = 0
+    for light in scene.lights:
+        if isinstance(light, AreaLight):
+            u = random_float(pixel, sample, path_dimension(depth, LIGHT_U + 2 * j), seed)
+            v = random_float(pixel, sample, path_dimension(depth, LIGHT_V + 2 * j), seed)
+            j += 1
+            light_sample = light.sample_area(position, u, v)
+        else:
+            light_sample = light.sample(position)
+        L_i = light_sample.L_i
+        if L_i.x == 0.0 and L_i.y == 0.0 and L_i.z == 0.0:
+            continue
+        cos_theta = dot(normal, light_sample.w_i)
+        if not cos_theta > 0.0:
+            continue
+        if scene.shadows and in_shadow(scene, position, light_sample.w_i, light_sample.dist):
+            continue
+        result += rho / math.pi * L_i * cos_theta
+    return result
+
+
+def trace_path(scene, r: Ray, max_depth: int, pixel: int, sample: int, seed: int) -> Float3:
+    """One path's radiance (the steps in the module's docstring)."""
+    result = Float3(0.0)
+    throughput = Float3(1.0)
+    sees_emission = True        # the eye ray, or a ray after a mirror or a refraction
+    for depth in range(max_depth):
+        hit = HitInfo()
+        if not scene.intersect(r, hit):
+            result += throughput * scene.background
+            break
+        d = r.direction
+        n = hit.normal
+        facing = dot(n, d)
+        if sees_emission and facing < 0.0:
+            result += throughput * hit.emission
+        shader = hit.shader
+        if shader == LAMBERTIAN:
+            if facing > 0.0:                 # seen from behind: the side the ray is on
+                n = -n
+            rho = hit.color
+            result += throughput * direct_light(scene, hit.position, n, rho, depth, pixel, sample, seed)
+            if depth + 1 == max_depth:
+                break
+            q = (rho.x + rho.y + rho.z) / 3.0
+            if not random_float(pixel, sample, path_dimension(depth, ROULETTE), seed) < q:
+                break
+            throughput = throughput * rho / q
+            u = random_float(pixel, sample, path_dimension(depth, BOUNCE_U), seed)
+            v = random_float(pixel, sample, path_dimension(depth, BOUNCE_V), seed)
+            r = Ray(hit.position, cosine_direction(n, u, v), SPAWN_EPSILON, math.inf)
+            sees_emission = False
+        elif shader == MIRROR:
+            mirror(scene, r, hit)            # r becomes the reflected ray
+            sees_emission = True
+        elif shader == TRANSPARENT:
+            transparent(scene, r, hit)       # r becomes the refracted (or reflected) ray
+            sees_emission = True
+        else:
+            if shader == BASE_COLOR:
+                result += throughput * hit.color
+            break
+    return result
