@@ -70,7 +70,8 @@ def pieces(features, formula: str = "slide") -> list:
     out = [("ray.wgsl", "ray.wgsl")]
     if trace:
         out.append(("hitinfo.wgsl", "hitinfo.wgsl"))
-    if "sampler" in f:
+    path = trace and "path_trace" in f
+    if "sampler" in f or path:
         out.append(("random.wgsl", "random.wgsl"))
     out.append(("pixel_sample.wgsl", "pixel_sample.wgsl"))
     for camera in layout.CAMERA_KINDS.values():
@@ -92,7 +93,7 @@ def pieces(features, formula: str = "slide") -> list:
         out.append(("lights.wgsl", "lights.wgsl"))
         if "shadows" in f:
             out.append(("in_shadow.wgsl", "in_shadow.wgsl"))
-    if trace and _brdf_shaders(f):
+    if trace and _brdf_shaders(f) and not path:   # a path's diffuse vertex has its own light loop
         for name in sorted({k.brdf_of or k.name for k in _brdf_shaders(f)},
                            key=[k.name for k in SHADERS].index):
             out.append((name + ".wgsl", name + ".wgsl"))
@@ -106,8 +107,12 @@ def pieces(features, formula: str = "slide") -> list:
         for kind in SHADERS:
             if kind.name in names:
                 out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
+    if trace and not path:
+        out.append(("shade.wgsl", "shade.wgsl"))
     if trace:
-        out += [("shade.wgsl", "shade.wgsl"), ("intersect_scene.wgsl", "intersect_scene.wgsl")]
+        out.append(("intersect_scene.wgsl", "intersect_scene.wgsl"))
+    if path:
+        out += [("hemisphere_map.wgsl", "hemisphere_map.wgsl"), ("path_trace.wgsl", "path_trace.wgsl")]
     out.append(("main.wgsl", "main.wgsl"))
     return out
 
@@ -121,7 +126,7 @@ def piece_names() -> list:
     names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
-    return names + ["shade.wgsl", "intersect_scene.wgsl", "main.wgsl"]
+    return names + ["shade.wgsl", "intersect_scene.wgsl", "hemisphere_map.wgsl", "path_trace.wgsl", "main.wgsl"]
 
 
 def each_kinds(flat, features, formula):
@@ -387,6 +392,8 @@ def _header(flat, features, bindings) -> str:
         counts += [("NUM_SAMPLES", flat.sampler.num_samples), ("NUM_SETS", flat.sampler.num_sets)]
     counts += [("NUM_" + kind.table.upper(), flat.count(kind.name)) for kind in SHAPES]
     counts += [("NUM_" + kind.table.upper(), len(flat.lights[kind.name])) for kind in LIGHTS]
+    if "path_trace" in features:
+        counts.append(("PATH_MAX_DEPTH", flat.max_depth))
     parts.append("\n".join("const %s = %du;" % c for c in counts))
     used = {b.wgsl_type.split("<")[-1].split(",")[0].rstrip(">") for b in bindings}
     for record in layout.RECORDS:

@@ -1,6 +1,6 @@
 // The main program (02562, "Intersecting with the scene and tracing a path"), as a compute
-// shader over one tile of the image: for each sample of the pixel, trace its path with at
-// most max_depth shaded hits, adding the background where the path leaves the scene, and
+// shader over one tile of the image: for each sample of the pixel, trace its path (with
+// PathTrace: trace_path, path_trace.wgsl) with at most max_depth shaded hits, adding the background where the path leaves the scene, and
 // add the colour to the pixel's sum in `image` (the host divides by the samples; passes
 // that split the samples add them in the same order). The pixel loop is the slide's
 // (lecture 01, "Rendering a Scene"): iy counts from the bottom.
@@ -29,6 +29,9 @@ fn main(@builtin(global_invocation_id) id: vec3u)
         // Week 1's first image: the eye ray's direction as a colour.
         result = r.direction * 0.5 + vec3f(0.5);
         // #else
+        // #if path_trace
+        result = trace_path(r, pixel, s);
+        // #else
         var hit = empty_hit();
         for (var i = 0; i < max_depth; i++) {
             if (intersect_scene(&r, &hit)) {
@@ -41,6 +44,7 @@ fn main(@builtin(global_invocation_id) id: vec3u)
                 break;
             }
         }
+        // #endif
         // #endif
         total += result;
     }

@@ -1,0 +1,165 @@
+// release: solves a04 a05
+// PathTrace (rtfgu/path_trace.py; Suffern ch. 26, 02562 worksheet 7): one path per sample,
+// next-event estimation at every diffuse vertex (an area light through a point of it drawn
+// from the random stream), a cosine-weighted bounce with Russian roulette, emission counted
+// where the eye sees it and after a mirror or a refraction, from the front of a surface.
+// The numbers of vertex `depth` are the stream's dimensions 2 + depth * 65536 + k
+// (rtfgu.sampling.random.path_dimension), as on the other paths.
+const VERTEX_DIMENSIONS = 65536u;
+const BOUNCE_U = 0u;
+const BOUNCE_V = 1u;
+const ROULETTE = 2u;
+const LIGHT_U = 8u;
+const LIGHT_V = 9u;
+
+// Duff et al. 2017's orthonormal basis about the unit n, and a direction about it with
+// density cos(theta) / pi (rtfgu.path_trace.cosine_direction).
+fn cosine_direction(n: vec3f, u: f32, v: f32) -> vec3f
+{
+    let local = hemisphere_map(vec2f(u, v), 1.0);
+    let sign = select(-1.0, 1.0, n.z >= 0.0);
+    let a = -1.0 / (sign + n.z);
+    let b = n.x * n.y * a;
+    let t = vec3f(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
+    let bt = vec3f(b, sign + n.y * n.y * a, -n.y);
+    return t * local.x + bt * local.y + n * local.z;
+}
+
+// #if area_light
+// AreaLight.sample_area: L_e A cos(theta_l) / d^2 toward a point of area light i uniform by
+// area, zero from behind.
+fn sample_area_light_area(pos: vec3f, i: u32, u: f32, v: f32) -> Light
+{
+    let light = area_lights[i];
+    var point: vec3f;
+    var normal: vec3f;
+    var area: f32;
+    if (light.radius > 0.0) {
+        let z = 1.0 - 2.0 * u;
+        let s = sqrt(max(0.0, 1.0 - z * z));
+        let phi = 2.0 * PI * v;
+        normal = vec3f(s * cos(phi), s * sin(phi), z);
+        point = light.v0 + normal * light.radius;
+        area = 4.0 * PI * light.radius * light.radius;
+    } else {
+        let n = cross(light.e0, light.e1);
+        point = light.v0 + (light.e0 * v + light.e1 * (1.0 - v)) * sqrt(u);
+        normal = normalize(n);
+        area = 0.5 * length(n);
+    }
+    let to_light = point - pos;
+    let dist = length(to_light);
+    let w_i = to_light / dist;
+    let cos_l = -dot(normal, w_i);
+    if (!(cos_l > 0.0)) {
+        return Light(vec3f(0.0), w_i, dist);
+    }
+    return Light(light.emission * (area * cos_l / (dist * dist)), w_i, dist);
+}
+
+fn sample_path_area_light(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+{
+    let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
+    let v = random_float(pixel, s, first + LIGHT_V + 2u * i, uniforms.seed);
+    return sample_area_light_area(pos, i, u, v);
+}
+// #endif
+// #if point_light
+fn sample_path_point_light(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+{
+    return sample_point_light(pos, i);
+}
+// #endif
+// #if directional
+fn sample_path_directional(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+{
+    return sample_directional(pos, i);
+}
+// #endif
+
+// The light of every light reflected by f_r = rho / pi (rtfgu.path_trace.direct_light).
+fn direct_path(position: vec3f, normal: vec3f, rho: vec3f, first: u32, pixel: u32, s: u32) -> vec3f
+{
+    var result = vec3f(0.0);
+    let f = rho / PI;
+    // #each light
+    for (var i = 0u; i < NUM_$TABLE; i++) {
+        let light = sample_path_$kind(position, i, first, pixel, s);
+        if (all(light.L_i == vec3f(0.0))) {
+            continue;
+        }
+        let cos_theta = dot(normal, light.w_i);
+        if (!(cos_theta > 0.0)) {
+            continue;
+        }
+        // #if shadows
+        if (in_shadow(position, light.w_i, light.dist)) {
+            continue;
+        }
+        // #endif
+        result += f * light.L_i * cos_theta;
+    }
+    // #end
+    return result;
+}
+
+fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
+{
+    var r = eye_ray;
+    var result = vec3f(0.0);
+    var throughput = vec3f(1.0);
+    var sees_emission = true;
+    for (var depth = 0u; depth < PATH_MAX_DEPTH; depth++) {
+        var hit = empty_hit();
+        if (!intersect_scene(&r, &hit)) {
+            result += throughput * uniforms.background;
+            break;
+        }
+        let facing = dot(hit.normal, r.direction);
+        if (sees_emission && facing < 0.0) {
+            result += throughput * hit.emission;
+        }
+        let first = 2u + depth * VERTEX_DIMENSIONS;
+        // #if lambertian
+        if (hit.shader == LAMBERTIAN) {
+            let n = select(hit.normal, -hit.normal, facing > 0.0);
+            let rho = hit.color;
+            // #if lights
+            result += throughput * direct_path(hit.position, n, rho, first, pixel, s);
+            // #endif
+            if (depth + 1u == PATH_MAX_DEPTH) {
+                break;
+            }
+            let q = (rho.x + rho.y + rho.z) / 3.0;
+            if (!(random_float(pixel, s, first + ROULETTE, uniforms.seed) < q)) {
+                break;
+            }
+            throughput *= rho / q;
+            let u = random_float(pixel, s, first + BOUNCE_U, uniforms.seed);
+            let v = random_float(pixel, s, first + BOUNCE_V, uniforms.seed);
+            r = Ray(hit.position, cosine_direction(n, u, v), SPAWN_EPSILON, FAR);
+            sees_emission = false;
+            continue;
+        }
+        // #endif
+        // #if mirror
+        if (hit.shader == MIRROR) {
+            mirror(&r, &hit);
+            sees_emission = true;
+            continue;
+        }
+        // #endif
+        // #if transparent
+        if (hit.shader == TRANSPARENT) {
+            transparent(&r, &hit);
+            sees_emission = true;
+            continue;
+        }
+        // #endif
+        if (hit.shader == BASE_COLOR) {
+            result += throughput * hit.color;
+        }
+        break;
+    }
+    return result;
+}
