@@ -82,3 +82,19 @@ def path(request) -> RenderPath:
         except NoAdapterError as error:
             pytest.skip(str(error))
     return RenderPath(label, backend, precision)
+
+
+@pytest.fixture(params=PATHS[1:], ids=[label for label, _, _ in PATHS[1:]])
+def fast_path(request) -> RenderPath:
+    """Each path but the lecture layer, for images too large for pure Python (thousands of
+    samples per pixel); numba float64 stands in for the lecture layer there, which it
+    equals within 1e-9 (tests/test_numba_parity.py). WGSL skipped as in ``path``."""
+    label, backend, precision = request.param
+    if backend == "wgpu":
+        from rtfgu.wgsl.device import NoAdapterError, get_device
+
+        try:
+            get_device()
+        except NoAdapterError as error:
+            pytest.skip(str(error))
+    return RenderPath(label, backend, precision)
