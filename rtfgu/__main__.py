@@ -60,7 +60,7 @@ def _render_one(name, width, height, backend, precision, out, show_progress, spp
     image = render_module.render(scene, width, height, backend=backend, precision=precision,
                                  progress=progress, spp=spp, seed=seed, passes=passes)
     write_png(image, out)
-    return time.perf_counter() - start, width, height
+    return time.perf_counter() - start, width, height, samples
 
 
 def _debug_pixel(args) -> None:
@@ -140,16 +140,16 @@ def main(argv=None) -> int:
                 print(name)
         elif args.command == "render":
             out = args.output or args.name + ".png"
-            seconds, w, h = _render_one(args.name, args.width, args.height, args.backend,
-                                        args.precision, out, True, args.spp, args.seed)
-            print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds))
+            seconds, w, h, spp = _render_one(args.name, args.width, args.height, args.backend,
+                                             args.precision, out, True, args.spp, args.seed)
+            print("%s  %dx%d  %s  %d spp  %.2f s" % (out, w, h, args.backend, spp, seconds))
         elif args.command == "render-all":
             os.makedirs(args.out, exist_ok=True)
             for name in SCENES:
                 out = os.path.join(args.out, name + ".png")
-                seconds, w, h = _render_one(name, None, None, args.backend, args.precision,
-                                            out, True, args.spp, args.seed)
-                print("%s  %dx%d  %s  %.2f s" % (out, w, h, args.backend, seconds), flush=True)
+                seconds, w, h, spp = _render_one(name, None, None, args.backend, args.precision,
+                                                 out, True, args.spp, args.seed)
+                print("%s  %dx%d  %s  %d spp  %.2f s" % (out, w, h, args.backend, spp, seconds), flush=True)
         elif args.command == "info":
             from .wgsl import adapter_description
             print("wgpu adapter: %s" % adapter_description())

@@ -149,7 +149,7 @@ def path_trace(**options):
 # Path-traced scenes: the samples per pixel of ``make render`` (under a minute each on two
 # cores with the numba path, docs/path_tracing.md) and of the tests.
 AREA_LIGHT_SPP = 256
-PROGRESSIVE_SPP = 256
+PROGRESSIVE_SPP = 484   # 22 x 22 (Jittered)
 TEST_SPP = 4
 
 
