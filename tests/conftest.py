@@ -69,11 +69,8 @@ class RenderPath:
         return self.label
 
 
-@pytest.fixture(params=PATHS, ids=[label for label, _, _ in PATHS])
-def path(request) -> RenderPath:
-    """Each path in turn; the WGSL one is skipped only where no adapter exists, with the
-    package to install in the reason (rtfgu.wgsl.device)."""
-    label, backend, precision = request.param
+def _available(label, backend, precision) -> RenderPath:
+    """The path, or a skip naming the package to install where WGSL has no adapter."""
     if backend == "wgpu":
         from rtfgu.wgsl.device import NoAdapterError, get_device
 
@@ -82,6 +79,13 @@ def path(request) -> RenderPath:
         except NoAdapterError as error:
             pytest.skip(str(error))
     return RenderPath(label, backend, precision)
+
+
+@pytest.fixture(params=PATHS, ids=[label for label, _, _ in PATHS])
+def path(request) -> RenderPath:
+    """Each path in turn; the WGSL one is skipped only where no adapter exists, with the
+    package to install in the reason (rtfgu.wgsl.device)."""
+    return _available(*request.param)
 
 
 @pytest.fixture(params=PATHS[1:], ids=[label for label, _, _ in PATHS[1:]])
@@ -89,12 +93,4 @@ def fast_path(request) -> RenderPath:
     """Each path but the lecture layer, for images too large for pure Python (thousands of
     samples per pixel); numba float64 stands in for the lecture layer there, which it
     equals within 1e-9 (tests/test_numba_parity.py). WGSL skipped as in ``path``."""
-    label, backend, precision = request.param
-    if backend == "wgpu":
-        from rtfgu.wgsl.device import NoAdapterError, get_device
-
-        try:
-            get_device()
-        except NoAdapterError as error:
-            pytest.skip(str(error))
-    return RenderPath(label, backend, precision)
+    return _available(*request.param)
