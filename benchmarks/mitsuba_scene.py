@@ -36,8 +36,8 @@ The mapping (Mitsuba 3 plugin reference, https://mitsuba.readthedocs.io/en/stabl
   material        LAMBERTIAN -> ``twosided`` ``diffuse``, reflectance = the shape's colour
                   (PathTrace shades a face seen from behind as its front);
                   MIRROR -> ``twosided`` ``conductor`` material "none" (reflectance 1);
-                  TRANSPARENT -> ``dielectric`` int_ior = ior, ext_ior = 1;
-                  EMISSIVE (if rtfgu.material has it) -> ``diffuse`` reflectance 0.
+                  DIELECTRIC (clear) -> ``dielectric`` int_ior = ior, ext_ior = 1;
+                  EMISSIVE -> ``diffuse`` reflectance 0.
                   Other shaders (base_color, phong, glossy) and textures: ValueError.
   emission        a shape with material.emission != 0 gets an ``area`` emitter, radiance =
                   emission, from its front only (the side of its geometric normal), as
@@ -94,15 +94,17 @@ def _bsdf(color, material) -> dict:
         return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": _rgb(color)}}
     if shader == rm.MIRROR:
         return {"type": "twosided", "bsdf": {"type": "conductor", "material": "none"}}
-    if shader == rm.TRANSPARENT:
+    if shader == rm.DIELECTRIC:
+        if _nonzero(material.absorption):
+            raise ValueError("to_mitsuba: an absorbing dielectric needs a Mitsuba medium, not converted (%r)"
+                             % (material,))
+        # Mitsuba's dielectric reflects by Fresnel's law as rtfgu's Dielectric does under PathTrace.
         return {"type": "dielectric", "int_ior": float(material.ior), "ext_ior": 1.0}
-    emissive = getattr(rm, "EMISSIVE", None)
-    if emissive is not None and shader == emissive:
+    if shader == rm.EMISSIVE:
         return {"type": "diffuse", "reflectance": _rgb((0.0, 0.0, 0.0))}
     name = rm.SHADER_NAMES.get(shader, shader)
-    raise ValueError("to_mitsuba: shader %r has no Mitsuba counterpart here "
-                     "(lambertian, mirror, transparent%s only)"
-                     % (name, ", emissive" if emissive is not None else ""))
+    raise ValueError("to_mitsuba: shader %r has no Mitsuba counterpart here (lambertian, mirror, "
+                     "dielectric, emissive only; transparent refracts without Fresnel's reflection)" % (name,))
 
 
 def _emitter(material) -> dict | None:

@@ -7,7 +7,8 @@ from .float3 import Float3, cross, dot, normalize
 from .lights import Light, PointLight, sample_point_light
 from .directional_light import Directional
 from .area_light import AreaLight
-from .material import (BASE_COLOR, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
+from .dielectric import Dielectric
+from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Emissive, Material)
 from .ray import RAY_EPSILON, Ray
 from .renderer import render, render_passes, trace
@@ -37,7 +38,7 @@ __all__ = [
     "Camera", "OrthographicCamera", "PinholeCamera",
     "Shape", "Mesh", "load_obj", "Scene",
     "Material", "Emissive", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
-    "EMISSIVE", "PointLight", "Directional", "AreaLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
+    "EMISSIVE", "Dielectric", "DIELECTRIC", "PointLight", "Directional", "AreaLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "render_passes", "show", "write_png",
     "ThinLens", "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
     "Texture", "ImageTexture", "Checker",

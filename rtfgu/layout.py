@@ -16,7 +16,8 @@ it, or the next free column. For example
     Plane       (P, 8)   [point, 0], [normal, 0]             (the normal as given, not normalised)
     Triangle    (T, 16)  [v0, 0], [e0, 0], [e1, 0], [n, 0]   (e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1)
     Sphere      (S, 4)   [center, radius]
-    Material    (N, 16)  [color, 0], [specular, shininess], [emission, ior], [texture, texture_row, 0, 0]
+    Material    (N, 20)  [color, 0], [specular, shininess], [emission, ior], [texture, texture_row, 0, 0],
+                         [absorption, 0]
     PointLight  (L, 8)   [position, 0], [intensity, 0]
     Directional (D, 8)   [direction, 0], [intensity, 0]      (the direction as given)
     ImageTexture (X, 8)  [width, height, offset, filter_mode], [address_mode, scale, 0, 0]
@@ -75,7 +76,7 @@ def pack_fields(fields) -> tuple:
 # texture: the texture kind's id (its place in rtfgu.registry.TEXTURES), -1 for none;
 # texture_row: its row in that kind's table.
 MATERIAL_FIELDS = (("color", 3), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1),
-                   ("texture", 1), ("texture_row", 1))
+                   ("texture", 1), ("texture_row", 1), ("absorption", 3))
 CAMERA_FIELDS = {
     "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
                            ("yon", 1), ("tmin", 1)),
@@ -130,6 +131,7 @@ MAT_EMISSION = offset("Material", "emission")
 MAT_IOR = offset("Material", "ior")
 MAT_TEXTURE = offset("Material", "texture")
 MAT_TEXTURE_ROW = offset("Material", "texture_row")
+MAT_ABSORPTION = offset("Material", "absorption")
 # ImageTexture.filter and .address as numbers in the layout.
 TEXTURE_FILTERS = {"nearest": 0, "bilinear": 1}
 TEXTURE_ADDRESSES = {"repeat": 0, "clamp": 1}
@@ -305,7 +307,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             texture, texture_row = placed[id(m.texture)]
         materials.append(pack_row("Material", SimpleNamespace(
             color=shape.color, specular=m.specular, shininess=m.shininess, emission=m.emission,
-            ior=m.ior, texture=texture, texture_row=texture_row)))
+            ior=m.ior, texture=texture, texture_row=texture_row, absorption=m.absorption)))
         shaders.append(m.shader)
         features.add(SHADER_BY_ID[m.shader].name)
 

@@ -4,7 +4,8 @@ The shader ids are the cases of the 02562 ``shade`` switch ("The signature of an
 intersection function and that of a shader"): 1 lambertian, 2 phong, 3 mirror, and the
 default case returns the base colour. 4 (transparent) and 5 (glossy) are the 02562
 worksheet-3 shaders that follow them; 6 (emissive) is Suffern's ``Emissive`` (ch. 18): a
-surface that only emits, the shape of an ``AreaLight``.
+surface that only emits, the shape of an ``AreaLight``; 7 (dielectric) is Suffern's
+``Dielectric`` (ch. 28), glass with Fresnel reflection and absorption (rtfgu.dielectric).
 
 Lecture 01's shapes carry a colour only; a shape built that way gets ``BASE_COLOR`` and
 the slide's render loop shows each pixel in the colour of the nearest shape.
@@ -22,6 +23,7 @@ MIRROR = 3
 TRANSPARENT = 4
 GLOSSY = 5
 EMISSIVE = 6
+DIELECTRIC = 7
 
 SHADER_NAMES = {
     BASE_COLOR: "base_color",
@@ -31,18 +33,20 @@ SHADER_NAMES = {
     TRANSPARENT: "transparent",
     GLOSSY: "glossy",
     EMISSIVE: "emissive",
+    DIELECTRIC: "dielectric",
 }
 
 
 class Material:
     """shader id; specular reflectance rho_s and shininess s (Phong, glossy); index of
-    refraction (transparent, glossy); emitted radiance L_e (any shader that sees light);
-    a texture (rtfgu.textures), whose colour at the hit replaces the shape's colour."""
+    refraction (transparent, glossy, dielectric); emitted radiance L_e (any shader that sees
+    light); a texture (rtfgu.textures), whose colour at the hit replaces the shape's colour;
+    absorption sigma_a per unit length inside a dielectric (Bouguer's law, rtfgu.dielectric)."""
 
-    __slots__ = ("shader", "specular", "shininess", "ior", "emission", "texture")
+    __slots__ = ("shader", "specular", "shininess", "ior", "emission", "texture", "absorption")
 
     def __init__(self, shader: int = BASE_COLOR, specular=None, shininess: float = 0.0,
-                 ior: float = 1.0, emission=None, texture=None):
+                 ior: float = 1.0, emission=None, texture=None, absorption=None):
         if shader not in SHADER_NAMES:
             raise ValueError("Material.shader must be one of %s, got %r" % (sorted(SHADER_NAMES), shader))
         self.shader = shader
@@ -55,6 +59,10 @@ class Material:
             raise ValueError("Material.shininess must be finite and >= 0, got %r" % (shininess,))
         if not (math.isfinite(ior) and ior > 0):
             raise ValueError("Material.ior must be finite and > 0, got %r" % (ior,))
+        self.absorption = Float3(0.0) if absorption is None else as_float3(absorption, "Material.absorption")
+        if min(self.absorption.x, self.absorption.y, self.absorption.z) < 0.0:
+            raise ValueError("Material.absorption must be >= 0 in every component (per unit length), got %r"
+                             % (self.absorption,))
         self.shininess = float(shininess)
         self.ior = float(ior)
         if texture is not None:

@@ -21,7 +21,8 @@ must be an ``AreaLight``'s (Scene.validate says which is not). A surface emits f
 front only (the side its normal points to). A ray that leaves the scene sees
 ``scene.background`` as a constant environment: radiance from every direction. A mirror
 and a refracting surface (the 02562 ``mirror`` and ``transparent``) continue the path as in
-the ray-cast loop; ``base_color`` and ``emissive`` end it.
+the ray-cast loop, a ``Dielectric`` reflects or refracts by Fresnel's reflectance and absorbs
+inside (rtfgu.dielectric); ``base_color`` and ``emissive`` end it.
 
 The random numbers of vertex ``depth`` are the stream's dimensions ``path_dimension(depth,
 k)`` (rtfgu.sampling.random), so the numba path draws the same numbers for the same path.
@@ -33,15 +34,16 @@ import math
 
 from .area_light import AreaLight
 from .float3 import Float3, dot
-from .material import BASE_COLOR, EMISSIVE, LAMBERTIAN, MIRROR, SHADER_NAMES, TRANSPARENT
+from .dielectric import scatter, transmittance
+from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, LAMBERTIAN, MIRROR, SHADER_NAMES, TRANSPARENT
 from .ray import Ray
 from .sampling.maps import hemisphere_map
-from .sampling.random import (BOUNCE_U, BOUNCE_V, LIGHT_U, LIGHT_V, ROULETTE, VERTEX_DIMENSIONS,
+from .sampling.random import (BOUNCE_U, BOUNCE_V, CHOICE, LIGHT_U, LIGHT_V, ROULETTE, VERTEX_DIMENSIONS,
                               path_dimension, random_float)
 from .shading import SPAWN_EPSILON, HitInfo, in_shadow, mirror, transparent
 
 # The shaders a path goes through; any other is refused by Scene.validate.
-PATH_SHADERS = (BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT, EMISSIVE)
+PATH_SHADERS = (BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT, EMISSIVE, DIELECTRIC)
 # The deepest path: vertex dimensions stay below 2^32 far beyond it.
 MAX_PATH_DEPTH = 1024
 # The most area lights a path samples (two dimensions each per vertex).
@@ -164,6 +166,12 @@ def trace_path(scene, r: Ray, max_depth: int, pixel: int, sample: int, seed: int
             sees_emission = True
         elif shader == TRANSPARENT:
             transparent(scene, r, hit)       # r becomes the refracted (or reflected) ray
+            sees_emission = True
+        elif shader == DIELECTRIC:
+            if facing > 0.0:                 # met from inside: the way here was through the medium
+                throughput = throughput * transmittance(hit.absorption, hit.dist)
+            xi = random_float(pixel, sample, path_dimension(depth, CHOICE), seed)
+            r = Ray(hit.position, scatter(d, n, hit.ior, xi), SPAWN_EPSILON, math.inf)
             sees_emission = True
         else:
             if shader == BASE_COLOR:

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from .area_light import AreaLight
 from .directional_light import Directional
 from .lights import PointLight
-from .material import BASE_COLOR, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
+from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
@@ -126,6 +126,9 @@ SHADERS = (
     ShaderKind(TRANSPARENT, "transparent", continues=True),
     ShaderKind(GLOSSY, "glossy", brdf=True, continues=True, brdf_of="phong"),
     ShaderKind(EMISSIVE, "emissive", emits=True),
+    # rtfgu/dielectric.py: the ray-cast loop refracts as transparent does; PathTrace picks
+    # reflection or refraction by Fresnel's reflectance.
+    ShaderKind(DIELECTRIC, "dielectric", continues=True),
 )
 
 LIGHTS = (

@@ -327,6 +327,7 @@ SHADER_CASES = {
     "transparent": (lambda: EMISSION, refracted),
     "glossy": (phong_color, refracted),
     "emissive": (lambda: EMISSION, None),     # Suffern's Emissive: L_e, nothing reflected
+    "dielectric": (lambda: EMISSION, refracted),  # the ray-cast loop refracts (no Fresnel choice)
 }
 SHADER_NAMES = [kind.name for kind in SHADERS]
 

@@ -10,9 +10,9 @@ import math
 
 from numba import njit
 
-from ..layout import MAT_EMISSION
-from ..material import BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT
-from ..sampling.random import BOUNCE_U, BOUNCE_V, ROULETTE, VERTEX_DIMENSIONS
+from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR
+from ..material import BASE_COLOR, DIELECTRIC, LAMBERTIAN, MIRROR, TRANSPARENT
+from ..sampling.random import BOUNCE_U, BOUNCE_V, CHOICE, ROULETTE, VERTEX_DIMENSIONS
 from ..shading import SPAWN_EPSILON
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, dot, lit, load3, mul, neg, scale
@@ -33,6 +33,39 @@ def cosine_direction(n, u, v):
     t = (one + sign * n[0] * n[0] * a, sign * b, -sign * n[0])
     bt = (b, sign + n[1] * n[1] * a, -n[1])
     return add(add(scale(t, x), scale(bt, y)), scale(n, z))
+
+
+@njit(cache=True, error_model="numpy")
+def fresnel_reflectance(cos_i, eta):
+    """rtfgu.dielectric.fresnel_reflectance: R for unpolarised light, 1 under total internal
+    reflection."""
+    one = lit(1.0, cos_i)
+    sin2_t = eta * eta * (one - cos_i * cos_i)
+    if sin2_t >= one:
+        return one
+    cos_t = math.sqrt(one - sin2_t)
+    r_perp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t)
+    r_par = (cos_i - eta * cos_t) / (cos_i + eta * cos_t)
+    return lit(0.5, one) * (r_perp * r_perp + r_par * r_par)
+
+
+@njit(cache=True, error_model="numpy")
+def scatter(direction, normal, ior, xi):
+    """rtfgu.dielectric.scatter: reflected if xi < R, refracted otherwise."""
+    zero = lit(0.0, ior)
+    one = lit(1.0, ior)
+    cos_i = -dot(direction, normal)
+    if cos_i >= zero:
+        eta = one / ior
+        n = normal
+    else:
+        eta = ior
+        n = neg(normal)
+        cos_i = -cos_i
+    if xi < fresnel_reflectance(cos_i, eta):
+        return add(direction, scale(n, lit(2.0, one) * cos_i))
+    cos_t = math.sqrt(one - eta * eta * (one - cos_i * cos_i))
+    return add(scale(direction, eta), scale(n, eta * cos_i - cos_t))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -89,6 +122,14 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             sees_emission = True
         elif shader == TRANSPARENT:
             direction = continue_transparent(mat, direction, normal)
+            sees_emission = True
+        elif shader == DIELECTRIC:
+            if facing > zero:
+                throughput = mul(throughput, (math.exp(-mat[MAT_ABSORPTION] * t),
+                                              math.exp(-mat[MAT_ABSORPTION + 1] * t),
+                                              math.exp(-mat[MAT_ABSORPTION + 2] * t)))
+            xi = random_float(pixel, sample, first + CHOICE, seed, zero)
+            direction = scatter(direction, normal, mat[MAT_IOR], xi)
             sees_emission = True
         else:
             if shader == BASE_COLOR:

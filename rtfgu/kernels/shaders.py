@@ -90,6 +90,12 @@ def continue_transparent(mat, r_d, normal):
 
 
 @njit(cache=True, error_model="numpy")
+def continue_dielectric(mat, r_d, normal):
+    """The ray-cast loop's dielectric: it refracts as transparent does (rtfgu.dielectric)."""
+    return transparent(r_d, normal, mat[MAT_IOR])
+
+
+@njit(cache=True, error_model="numpy")
 def continue_glossy(mat, r_d, normal):
     """Glossy: Phong at the surface (its light loop), then the path refracts."""
     return transparent(r_d, normal, mat[MAT_IOR])

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..area_light import AreaLight
 from ..cameras import PinholeCamera
+from ..dielectric import Dielectric
 from ..directional_light import Directional
 from ..float3 import Float3, normalize
 from ..material import LAMBERTIAN, MIRROR, TRANSPARENT, Material
@@ -168,6 +169,24 @@ def cornell_box_progressive() -> Scene:
     """Worksheet 7: the Cornell box with a mirror and a glass sphere, path traced: the
     light of the ceiling reflected any number of times (progressive rendering)."""
     scene = _cornell_spheres(_cornell_scene(cornell_box_mesh(blocks=False)))
+    scene.tracer = path_trace()
+    scene.sampler = sampler_of(Jittered, PROGRESSIVE_SPP)
+    return scene
+
+
+# Worksheet 8's glass: ior 1.5, absorbing sigma_a per metre (a green tint: a ray through the
+# sphere's 0.18 m diameter keeps exp(-0.18 sigma_a) = (0.70, 0.91, 0.76)).
+GLASS_ABSORPTION = (2.0, 0.5, 1.5)
+
+
+@homework(512, 512, test_side=16, test_spp=TEST_SPP)
+def cornell_box_fresnel() -> Scene:
+    """Worksheet 8: the Cornell box with a mirror sphere and an absorbing glass sphere that
+    reflects by Fresnel's law, path traced: the caustic under the glass."""
+    scene = _cornell_scene(cornell_box_mesh(blocks=False))
+    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Material(MIRROR)))
+    scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0),
+                               Dielectric(1.5, GLASS_ABSORPTION)))
     scene.tracer = path_trace()
     scene.sampler = sampler_of(Jittered, PROGRESSIVE_SPP)
     return scene

@@ -102,7 +102,7 @@ def pieces(features, formula: str = "slide") -> list:
     if continuing:
         out.append(("continue_path.wgsl", "continue_path.wgsl"))
         names = {k.name for k in continuing}
-        if "glossy" in names:
+        if "glossy" in names or "dielectric" in names:
             names.add("transparent")
         for kind in SHADERS:
             if kind.name in names:

@@ -39,9 +39,9 @@ fn next_up(x: f32) -> f32
     return bitcast<f32>(bitcast<u32>(x) + 1u);
 }
 
-// #if debug
-// For the pixel debugger (debug_main.wgsl): the place in Scene.shapes of the shape the
-// last intersect_scene hit, -1 for none.
+// #if debug|dielectric
+// The place in Scene.shapes of the shape the last intersect_scene hit, -1 for none: for the
+// pixel debugger (debug_main.wgsl) and a path through a dielectric (its absorption).
 var<private> hit_shape: i32;
 // #endif
 
@@ -74,7 +74,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     // (intersect_mesh.wgsl), with the same tie rule.
     mesh_closest(r, hit, &shape, &kind, &row);
     // #endif
-    // #if debug
+    // #if debug|dielectric
     hit_shape = shape;
     // #endif
     // #if shapes

@@ -9,6 +9,7 @@ const VERTEX_DIMENSIONS = 65536u;
 const BOUNCE_U = 0u;
 const BOUNCE_V = 1u;
 const ROULETTE = 2u;
+const CHOICE = 3u;
 const LIGHT_U = 8u;
 const LIGHT_V = 9u;
 
@@ -152,6 +153,17 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
         // #if transparent
         if (hit.shader == TRANSPARENT) {
             transparent(&r, &hit);
+            sees_emission = true;
+            continue;
+        }
+        // #endif
+        // #if dielectric
+        if (hit.shader == DIELECTRIC) {
+            if (facing > 0.0) {     // met from inside: Bouguer's law over the way here
+                throughput *= exp(-materials[u32(hit_shape)].absorption * hit.dist);
+            }
+            let xi = random_float(pixel, s, first + CHOICE, uniforms.seed);
+            r = Ray(hit.position, scatter(r.direction, hit.normal, hit.ior, xi), SPAWN_EPSILON, FAR);
             sees_emission = true;
             continue;
         }
