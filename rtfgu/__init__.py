@@ -7,9 +7,8 @@ from .float3 import Float3, cross, dot, normalize
 from .lights import Light, PointLight, sample_point_light
 from .directional_light import Directional
 from .area_light import AreaLight
-from .dielectric import Dielectric
 from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
-                       Emissive, Material)
+                       Dielectric, Emissive, Material)
 from .ray import RAY_EPSILON, Ray
 from .renderer import render, render_passes, trace
 from .notebook import show

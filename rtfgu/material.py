@@ -5,7 +5,7 @@ intersection function and that of a shader"): 1 lambertian, 2 phong, 3 mirror, a
 default case returns the base colour. 4 (transparent) and 5 (glossy) are the 02562
 worksheet-3 shaders that follow them; 6 (emissive) is Suffern's ``Emissive`` (ch. 18): a
 surface that only emits, the shape of an ``AreaLight``; 7 (dielectric) is Suffern's
-``Dielectric`` (ch. 28), glass with Fresnel reflection and absorption (rtfgu.dielectric).
+``Dielectric`` (ch. 28), glass with Fresnel reflection and absorption (rtfgu.fresnel).
 
 Lecture 01's shapes carry a colour only; a shape built that way gets ``BASE_COLOR`` and
 the slide's render loop shows each pixel in the colour of the nearest shape.
@@ -41,7 +41,7 @@ class Material:
     """shader id; specular reflectance rho_s and shininess s (Phong, glossy); index of
     refraction (transparent, glossy, dielectric); emitted radiance L_e (any shader that sees
     light); a texture (rtfgu.textures), whose colour at the hit replaces the shape's colour;
-    absorption sigma_a per unit length inside a dielectric (Bouguer's law, rtfgu.dielectric)."""
+    absorption sigma_a per unit length inside a dielectric (Bouguer's law, rtfgu.fresnel)."""
 
     __slots__ = ("shader", "specular", "shininess", "ior", "emission", "texture", "absorption")
 
@@ -88,3 +88,15 @@ class Emissive(Material):
         if not (math.isfinite(ls) and ls >= 0):
             raise ValueError("Emissive.ls (radiance scale) must be finite and >= 0, got %r" % (ls,))
         super().__init__(EMISSIVE, emission=as_float3(ce, "Emissive.ce") * float(ls))
+
+
+class Dielectric(Material):
+    """Suffern's ``Dielectric`` (ch. 28; 02562 worksheet 8): glass with index of refraction
+    ``ior`` (inside over outside) and ``absorption`` sigma_a per unit length, (0, 0, 0) for
+    clear glass. PathTrace reflects or refracts it by Fresnel's reflectance and absorbs
+    inside it (rtfgu/fresnel.py); the ray-cast loop refracts it as ``transparent``."""
+
+    __slots__ = ()
+
+    def __init__(self, ior: float = 1.5, absorption=(0.0, 0.0, 0.0)):
+        super().__init__(DIELECTRIC, ior=ior, absorption=absorption)

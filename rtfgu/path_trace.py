@@ -22,7 +22,7 @@ front only (the side its normal points to). A ray that leaves the scene sees
 ``scene.background`` as a constant environment: radiance from every direction. A mirror
 and a refracting surface (the 02562 ``mirror`` and ``transparent``) continue the path as in
 the ray-cast loop, a ``Dielectric`` reflects or refracts by Fresnel's reflectance and absorbs
-inside (rtfgu.dielectric); ``base_color`` and ``emissive`` end it.
+inside (rtfgu.fresnel); ``base_color`` and ``emissive`` end it.
 
 The random numbers of vertex ``depth`` are the stream's dimensions ``path_dimension(depth,
 k)`` (rtfgu.sampling.random), so the numba path draws the same numbers for the same path.
@@ -34,7 +34,7 @@ import math
 
 from .area_light import AreaLight
 from .float3 import Float3, dot
-from .dielectric import scatter, transmittance
+from .fresnel import scatter, transmittance
 from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, LAMBERTIAN, MIRROR, SHADER_NAMES, TRANSPARENT
 from .ray import Ray
 from .sampling.maps import hemisphere_map

@@ -126,7 +126,7 @@ SHADERS = (
     ShaderKind(TRANSPARENT, "transparent", continues=True),
     ShaderKind(GLOSSY, "glossy", brdf=True, continues=True, brdf_of="phong"),
     ShaderKind(EMISSIVE, "emissive", emits=True),
-    # rtfgu/dielectric.py: the ray-cast loop refracts as transparent does; PathTrace picks
+    # rtfgu.material.Dielectric, rtfgu/fresnel.py: the ray-cast loop refracts as transparent does; PathTrace picks
     # reflection or refraction by Fresnel's reflectance.
     ShaderKind(DIELECTRIC, "dielectric", continues=True),
 )

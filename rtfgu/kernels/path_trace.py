@@ -37,7 +37,7 @@ def cosine_direction(n, u, v):
 
 @njit(cache=True, error_model="numpy")
 def fresnel_reflectance(cos_i, eta):
-    """rtfgu.dielectric.fresnel_reflectance: R for unpolarised light, 1 under total internal
+    """rtfgu.fresnel.fresnel_reflectance: R for unpolarised light, 1 under total internal
     reflection."""
     one = lit(1.0, cos_i)
     sin2_t = eta * eta * (one - cos_i * cos_i)
@@ -51,7 +51,7 @@ def fresnel_reflectance(cos_i, eta):
 
 @njit(cache=True, error_model="numpy")
 def scatter(direction, normal, ior, xi):
-    """rtfgu.dielectric.scatter: reflected if xi < R, refracted otherwise."""
+    """rtfgu.fresnel.scatter: reflected if xi < R, refracted otherwise."""
     zero = lit(0.0, ior)
     one = lit(1.0, ior)
     cos_i = -dot(direction, normal)

@@ -91,7 +91,7 @@ def continue_transparent(mat, r_d, normal):
 
 @njit(cache=True, error_model="numpy")
 def continue_dielectric(mat, r_d, normal):
-    """The ray-cast loop's dielectric: it refracts as transparent does (rtfgu.dielectric)."""
+    """The ray-cast loop's dielectric: it refracts as transparent does (rtfgu.material.Dielectric)."""
     return transparent(r_d, normal, mat[MAT_IOR])
 
 

@@ -19,10 +19,9 @@ import numpy as np
 
 from ..area_light import AreaLight
 from ..cameras import PinholeCamera
-from ..dielectric import Dielectric
 from ..directional_light import Directional
 from ..float3 import Float3, normalize
-from ..material import LAMBERTIAN, MIRROR, TRANSPARENT, Material
+from ..material import LAMBERTIAN, MIRROR, TRANSPARENT, Dielectric, Material
 from ..obj import load_obj, mesh_path
 from ..sampling import Jittered
 from ..sampling.sampler import sampler_of

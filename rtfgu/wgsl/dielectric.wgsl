@@ -1,4 +1,5 @@
-// A dielectric in the ray-cast loop (rtfgu/dielectric.py): it refracts as transparent does;
+// release: solves a05
+// A dielectric in the ray-cast loop (rtfgu.material.Dielectric): it refracts as transparent does;
 // the path tracer's Fresnel choice is in path_trace.wgsl.
 fn dielectric(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 {
@@ -7,7 +8,7 @@ fn dielectric(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 
 // #if path_trace
 // Fresnel's reflectance R for unpolarised light, 1 under total internal reflection
-// (rtfgu.dielectric.fresnel_reflectance).
+// (rtfgu.fresnel.fresnel_reflectance).
 fn fresnel_reflectance(cos_i: f32, eta: f32) -> f32
 {
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
@@ -20,7 +21,7 @@ fn fresnel_reflectance(cos_i: f32, eta: f32) -> f32
     return 0.5 * (r_perp * r_perp + r_par * r_par);
 }
 
-// The next direction: reflected if xi < R, refracted otherwise (rtfgu.dielectric.scatter).
+// The next direction: reflected if xi < R, refracted otherwise (rtfgu.fresnel.scatter).
 fn scatter(direction: vec3f, normal: vec3f, ior: f32, xi: f32) -> vec3f
 {
     var cos_i = -dot(direction, normal);

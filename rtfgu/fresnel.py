@@ -1,5 +1,7 @@
-"""Dielectric: glass with Fresnel reflection and absorption (Suffern ch. 28, "Realistic
-Transparency"; 02562 worksheet 8, "Fresnel, Russian roulette and Bouguer's law").
+# release: solves a05
+"""Fresnel's reflection and Bouguer's absorption of a ``Dielectric`` (rtfgu.material; Suffern
+ch. 28, "Realistic Transparency"; 02562 worksheet 8, "Fresnel, Russian roulette and
+Bouguer's law").
 
 A ray that meets the surface is reflected with probability R, Fresnel's reflectance for
 unpolarised light, and refracted otherwise (Russian roulette on R: the throughput is
@@ -24,17 +26,6 @@ from __future__ import annotations
 import math
 
 from .float3 import Float3, dot
-from .material import DIELECTRIC, Material
-
-
-class Dielectric(Material):
-    """Suffern's ``Dielectric``: index of refraction ``ior`` (inside over outside) and
-    ``absorption`` sigma_a per unit length, (0, 0, 0) for clear glass."""
-
-    __slots__ = ()
-
-    def __init__(self, ior: float = 1.5, absorption=(0.0, 0.0, 0.0)):
-        super().__init__(DIELECTRIC, ior=ior, absorption=absorption)
 
 
 def fresnel_reflectance(cos_i: float, eta: float) -> float:
