@@ -129,7 +129,7 @@ def _reference(scene, r: Ray) -> list:
         origin, direction = r.origin, r.direction
         log.clear()
         if not type(scene).intersect(view, r, hit):
-            out.append(_miss(origin, direction, scene.background))
+            out.append(_miss(origin, direction, scene.background_radiance(direction)))
             break
         index = log[-1]
         dist, normal, shader = hit.dist, hit.normal, hit.shader

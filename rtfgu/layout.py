@@ -215,6 +215,9 @@ class FlatScene:
     mesh: object = None
     # PathTrace's max_depth (rtfgu.path_trace), 0 for the ray-cast loop.
     max_depth: int = 0
+    # The EnvironmentLight's image (height, width, 3), or None: rays that leave the scene
+    # see ``background`` then.
+    environment: np.ndarray = None
 
     def table(self, kind: str) -> np.ndarray:
         return self.shapes[kind][0]
@@ -327,6 +330,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add("ray_direction")
     elif scene.tracer is not None:
         features.add("path_trace")
+    if scene.environment is not None:
+        features.add("environment")
 
     def table(rows, record):
         return np.array(rows, dtype=dtype).reshape(len(rows), width(record))
@@ -364,6 +369,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         texels=np.array(texels or [0.0, 0.0, 0.0], dtype=dtype),
         mesh=mesh,
         max_depth=scene.tracer.max_depth if "path_trace" in features else 0,
+        environment=None if scene.environment is None else scene.environment.texels.astype(dtype),
     )
     arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]

@@ -19,7 +19,8 @@ Emitted light is counted where the eye sees it and after a mirror or a refractio
 after a diffuse bounce, whose light sources step 1 counted already; so every emitting shape
 must be an ``AreaLight``'s (Scene.validate says which is not). A surface emits from its
 front only (the side its normal points to). A ray that leaves the scene sees
-``scene.background`` as a constant environment: radiance from every direction. A mirror
+``scene.environment`` (an EnvironmentLight's image), or ``scene.background`` as a constant
+environment: radiance from every direction. A mirror
 and a refracting surface (the 02562 ``mirror`` and ``transparent``) continue the path as in
 the ray-cast loop, a ``Dielectric`` reflects or refracts by Fresnel's reflectance and absorbs
 inside (rtfgu.fresnel); ``base_color`` and ``emissive`` end it.
@@ -138,7 +139,7 @@ def trace_path(scene, r: Ray, max_depth: int, pixel: int, sample: int, seed: int
     for depth in range(max_depth):
         hit = HitInfo()
         if not scene.intersect(r, hit):
-            result += throughput * scene.background
+            result += throughput * scene.background_radiance(r.direction)
             break
         d = r.direction
         n = hit.normal

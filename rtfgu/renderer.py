@@ -42,7 +42,7 @@ def trace(scene, r: Ray) -> Float3:
         if scene.intersect(r, hit):
             result += shade(scene, r, hit)
         else:
-            result += scene.background
+            result += scene.background_radiance(r.direction)
             break
         if hit.has_hit:
             break

@@ -25,6 +25,16 @@ class Scene:
         # How a pixel's ray becomes a colour: None is the 02562 ray-cast loop
         # (rtfgu.renderer.trace); Suffern's PathTrace (rtfgu.path_trace) traces paths.
         self.tracer = None
+        # What a ray that leaves the scene sees: None is ``background`` from every direction;
+        # an EnvironmentLight (rtfgu.environment_light) its image.
+        self.environment = None
+
+    def background_radiance(self, direction: Float3) -> Float3:
+        """What a ray leaving the scene along ``direction`` sees: the environment's radiance
+        there, or the background colour."""
+        if self.environment is None:
+            return self.background
+        return self.environment.radiance(direction)
 
     def intersect(self, ray: Ray, hit: HitInfo) -> bool:
         """``intersect_scene``: the slide's inner loop over the shapes; each hit shrinks
@@ -64,6 +74,11 @@ class Scene:
         if self.sampler is not None and not isinstance(self.sampler, Sampler):
             raise ValueError("Scene.sampler must be a Sampler or None, got %r" % (self.sampler,))
         self.background = as_float3(self.background, "Scene.background")
+        if self.environment is not None:
+            from .environment_light import EnvironmentLight
+            if not isinstance(self.environment, EnvironmentLight):
+                raise ValueError("Scene.environment must be None or an EnvironmentLight, got %r"
+                                 % (self.environment,))
         if self.tracer is not None:
             from .path_trace import PathTrace
             if not isinstance(self.tracer, PathTrace):

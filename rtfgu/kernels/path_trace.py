@@ -14,6 +14,7 @@ from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR
 from ..material import BASE_COLOR, DIELECTRIC, LAMBERTIAN, MIRROR, TRANSPARENT
 from ..sampling.random import BOUNCE_U, BOUNCE_V, CHOICE, ROULETTE, VERTEX_DIMENSIONS
 from ..shading import SPAWN_EPSILON
+from .environment import ENVIRONMENT, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, dot, lit, load3, mul, neg, scale
 from .sampling import hemisphere_map, random_float
@@ -89,7 +90,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
         t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if depth == 0 else -1,
                                             origin, direction, tmin, tmax, formula)
         if idx < 0:
-            result = add(result, mul(throughput, load3(background, 0)))
+            result = add(result, mul(throughput, background_radiance(scene[ENVIRONMENT], background, direction)))
             break
         position = add(origin, scale(direction, t))
         shader = shaders[idx]

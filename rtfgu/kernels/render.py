@@ -8,8 +8,9 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
     camera    (camera kind, camera row, the camera row in float64 for the tile culling)
     shapes    table, index per registered shape kind; lights: a table per light kind; None
               for a kind the scene lacks (rtfgu.kernels.dispatch)
-    scene     (materials, shaders, background, texels, a table per texture kind): the
-              texture entries None in a scene without textures (scene_tuple)
+    scene     (materials, shaders, background, texels, a table per texture kind,
+              environment): the texture entries None in a scene without textures, the
+              environment None without an EnvironmentLight (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
     bounces   None when no shader continues a path: that code then compiles to nothing;
@@ -38,6 +39,7 @@ from .culling import tile_candidates
 from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, surface_color
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, scale
+from .environment import ENVIRONMENT, background_radiance
 from .path_trace import trace_path
 from .sampling import concentric_map, pixel_sample
 
@@ -76,11 +78,14 @@ def shape_arrays(flat) -> tuple:
 
 def scene_tuple(flat) -> tuple:
     """The kernels' ``scene``: materials, shaders, background, then the texels and a table
-    per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture."""
+    per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture, and
+    the environment's image (ENVIRONMENT) or None."""
     if "textures" not in flat.features:
-        return (flat.materials, flat.shaders, flat.background) + (None,) * (1 + len(TEXTURES))
-    tables = tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None for k in TEXTURES)
-    return (flat.materials, flat.shaders, flat.background, flat.texels) + tables
+        textures = (None,) * (1 + len(TEXTURES))
+    else:
+        textures = (flat.texels,) + tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None
+                                          for k in TEXTURES)
+    return (flat.materials, flat.shaders, flat.background) + textures + (flat.environment,)
 
 
 @njit(cache=True, error_model="numpy")
@@ -154,8 +159,9 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
         t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if i == 0 else -1,
                                             origin, direction, tmin, tmax, formula)
         if idx < 0:
-            result = add(result, load3(background, 0))
-            record_bounce(record, i, (origin, direction), (t, idx, kind), -1, direction, load3(background, 0))
+            seen = background_radiance(scene[ENVIRONMENT], background, direction)
+            result = add(result, seen)
+            record_bounce(record, i, (origin, direction), (t, idx, kind), -1, direction, seen)
             break
         # HitInfo: position = ray(t) = o + d t, the normal of the shape hit, its material.
         position = add(origin, scale(direction, t))

@@ -110,7 +110,7 @@ def pieces(features, formula: str = "slide") -> list:
     if trace and not path:
         out.append(("shade.wgsl", "shade.wgsl"))
     if trace:
-        out.append(("intersect_scene.wgsl", "intersect_scene.wgsl"))
+        out += [("intersect_scene.wgsl", "intersect_scene.wgsl"), ("environment.wgsl", "environment.wgsl")]
     if path:
         out += [("hemisphere_map.wgsl", "hemisphere_map.wgsl"), ("path_trace.wgsl", "path_trace.wgsl")]
     out.append(("main.wgsl", "main.wgsl"))
@@ -126,7 +126,8 @@ def piece_names() -> list:
     names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
-    return names + ["shade.wgsl", "intersect_scene.wgsl", "hemisphere_map.wgsl", "path_trace.wgsl", "main.wgsl"]
+    return names + ["shade.wgsl", "intersect_scene.wgsl", "environment.wgsl", "hemisphere_map.wgsl",
+                     "path_trace.wgsl", "main.wgsl"]
 
 
 def each_kinds(flat, features, formula):
@@ -193,6 +194,8 @@ def binding_data(flat, name: str) -> np.ndarray:
         return getattr(flat.sampler, name)
     if name == "texels":
         return flat.texels
+    if name == "environment":
+        return flat.environment
     for kind in TEXTURES:
         if name == kind.table:
             return flat.textures[kind.name]
@@ -366,6 +369,8 @@ def _bindings(flat, features, scene_buffer: str) -> list:
                 if len(table):
                     wanted.append((kind.table, "array<%s, %d>" % (kind.record, len(table)), table, False))
             wanted.append(("texels", "array<f32, %d>" % len(flat.texels), flat.texels, False))
+        if "environment" in features:
+            wanted.append(("environment", "array<f32, %d>" % flat.environment.size, flat.environment, False))
         if "lights" in features and _brdf_shaders(features):
             for kind in LIGHTS:
                 table = flat.lights[kind.name]
@@ -377,7 +382,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
         size = len(_packed_index(data)) * 4 if is_index else max(data.size, 4) * 4
         if name == "camera":
             kind = "uniform"
-        elif name in ("samples", "shuffled", "texels") or name in MESH_BINDINGS:   # storage only
+        elif name in ("samples", "shuffled", "texels", "environment") or name in MESH_BINDINGS:   # storage only
             kind = "storage"
         else:
             kind = scene_buffer if size <= MAX_UNIFORM_BYTES else "storage"
@@ -394,6 +399,8 @@ def _header(flat, features, bindings) -> str:
     counts += [("NUM_" + kind.table.upper(), len(flat.lights[kind.name])) for kind in LIGHTS]
     if "path_trace" in features:
         counts.append(("PATH_MAX_DEPTH", flat.max_depth))
+    if "environment" in features:
+        counts += [("ENVIRONMENT_HEIGHT", flat.environment.shape[0]), ("ENVIRONMENT_WIDTH", flat.environment.shape[1])]
     parts.append("\n".join("const %s = %du;" % c for c in counts))
     used = {b.wgsl_type.split("<")[-1].split(",")[0].rstrip(">") for b in bindings}
     for record in layout.RECORDS:

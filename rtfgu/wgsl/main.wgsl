@@ -37,7 +37,7 @@ fn main(@builtin(global_invocation_id) id: vec3u)
             if (intersect_scene(&r, &hit)) {
                 result += shade(&r, &hit);
             } else {
-                result += uniforms.background;
+                result += background_radiance(r.direction);
                 break;
             }
             if (hit.has_hit) {

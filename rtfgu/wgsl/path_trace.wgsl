@@ -113,7 +113,7 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
     for (var depth = 0u; depth < PATH_MAX_DEPTH; depth++) {
         var hit = empty_hit();
         if (!intersect_scene(&r, &hit)) {
-            result += throughput * uniforms.background;
+            result += throughput * background_radiance(r.direction);
             break;
         }
         let facing = dot(hit.normal, r.direction);
