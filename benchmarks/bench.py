@@ -1,7 +1,8 @@
 """``make bench``: speed and error of every rendering path on a few scenes, against the
 lecture layer; prints a table, writes docs/bench.md and the plot docs/bench_speed_error.png.
 Its last sections come from benchmarks/sampling.py (the samplers' error against render
-time) and benchmarks/meshes.py (the numba BVH over meshes against Embree and Mitsuba 3).
+time), benchmarks/meshes.py (the numba BVH over meshes against Embree and Mitsuba 3) and
+benchmarks/path_tracing.py (the path tracer's time to an RMSE of 1/255 against Mitsuba 3).
 A script, not a test: nothing is asserted.
 
 Rows are scene x path, a path being backend x precision x sphere formula: the reference
@@ -515,6 +516,15 @@ def main(argv=None):
         meshes_md = "%s\n## Meshes and the BVH\n\n(The mesh section failed: %s)\n%s\n" % (
             meshes.START, error, meshes.END)
 
+    import path_tracing
+    try:
+        path_tracing_md = path_tracing.path_tracing_section(
+            out.parent / "bench_path_tracing.png", args.quick, not args.no_wgpu, log)
+    except Exception as error:
+        path_tracing_md = ("%s\n## Path tracing: time to an RMSE of 1/255\n\n(The path-tracing "
+                           "section failed: %s)\n%s\n" % (path_tracing.START, error,
+                                                           path_tracing.END))
+
     versions = "Python %s, numpy %s, numba %s (%d threads), wgpu %s" % (
         platform.python_version(), np.__version__, numba.__version__, numba.get_num_threads(),
         version("wgpu"))
@@ -565,6 +575,7 @@ def main(argv=None):
         "",
         sampling_md,
         meshes_md,
+        path_tracing_md,
     ])
     out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(text)

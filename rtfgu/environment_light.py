@@ -42,7 +42,7 @@ class EnvironmentLight:
         if not np.all(np.isfinite(texels)) or texels.min() < 0.0:
             bad = np.argwhere(~np.isfinite(texels) | (texels < 0.0))[0]
             raise ValueError("%s: texel (row %d, column %d) is %r, radiance must be finite and >= 0"
-                             % (source, bad[0], bad[1], texels[bad[0], bad[1], bad[2]]))
+                             % (source, bad[0], bad[1], float(texels[bad[0], bad[1], bad[2]])))
         if not (math.isfinite(scale) and scale >= 0):
             raise ValueError("EnvironmentLight.scale must be finite and >= 0, got %r" % (scale,))
         self.texels = texels * float(scale)
