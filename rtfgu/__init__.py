@@ -8,7 +8,7 @@ from .lights import Light, PointLight, sample_point_light
 from .directional_light import Directional
 from .area_light import AreaLight
 from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
-                       Dielectric, Emissive, Material)
+                       Dielectric, Emissive, GlossyReflector, Material)
 from .ray import RAY_EPSILON, Ray
 from .renderer import render, render_passes, trace
 from .notebook import show
@@ -37,7 +37,7 @@ __all__ = [
     "Camera", "OrthographicCamera", "PinholeCamera",
     "Shape", "Mesh", "load_obj", "Scene",
     "Material", "Emissive", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
-    "EMISSIVE", "Dielectric", "DIELECTRIC", "PointLight", "Directional", "AreaLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
+    "EMISSIVE", "Dielectric", "DIELECTRIC", "GlossyReflector", "PointLight", "Directional", "AreaLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "render_passes", "show", "write_png",
     "ThinLens", "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
     "Texture", "ImageTexture", "Checker",

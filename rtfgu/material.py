@@ -5,7 +5,9 @@ intersection function and that of a shader"): 1 lambertian, 2 phong, 3 mirror, a
 default case returns the base colour. 4 (transparent) and 5 (glossy) are the 02562
 worksheet-3 shaders that follow them; 6 (emissive) is Suffern's ``Emissive`` (ch. 18): a
 surface that only emits, the shape of an ``AreaLight``; 7 (dielectric) is Suffern's
-``Dielectric`` (ch. 28), glass with Fresnel reflection and absorption (rtfgu.fresnel).
+``Dielectric`` (ch. 28), glass with Fresnel reflection and absorption (rtfgu.fresnel); 8
+(glossy_reflector) is Suffern's ``GlossyReflector`` (ch. 25), Phong whose lobe PathTrace
+also samples.
 
 Lecture 01's shapes carry a colour only; a shape built that way gets ``BASE_COLOR`` and
 the slide's render loop shows each pixel in the colour of the nearest shape.
@@ -24,6 +26,7 @@ TRANSPARENT = 4
 GLOSSY = 5
 EMISSIVE = 6
 DIELECTRIC = 7
+GLOSSY_REFLECTOR = 8
 
 SHADER_NAMES = {
     BASE_COLOR: "base_color",
@@ -34,6 +37,7 @@ SHADER_NAMES = {
     GLOSSY: "glossy",
     EMISSIVE: "emissive",
     DIELECTRIC: "dielectric",
+    GLOSSY_REFLECTOR: "glossy_reflector",
 }
 
 
@@ -100,3 +104,16 @@ class Dielectric(Material):
 
     def __init__(self, ior: float = 1.5, absorption=(0.0, 0.0, 0.0)):
         super().__init__(DIELECTRIC, ior=ior, absorption=absorption)
+
+
+class GlossyReflector(Material):
+    """Suffern's ``GlossyReflector`` (ch. 25, "Glossy Reflection"): Phong's BRDF, a diffuse
+    part (the shape's colour) and the normalised lobe rho_s (s + 2) / (2 pi) cos^s(alpha)
+    about the mirror direction (02562 worksheet 3). The ray-cast loop shades it as ``phong``;
+    PathTrace also reflects light through the lobe, sampling it (rtfgu.path_trace)."""
+
+    __slots__ = ()
+
+    def __init__(self, specular=(0.5, 0.5, 0.5), shininess: float = 100.0):
+        super().__init__(GLOSSY_REFLECTOR, specular=as_float3(specular, "GlossyReflector.specular"),
+                         shininess=shininess)

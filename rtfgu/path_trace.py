@@ -15,6 +15,14 @@ rho (the surface's colour: no ambient term, and no DIFFUSE_FRACTION) the path
    7), in a cosine-weighted direction about the normal (pdf cos(theta) / pi), so that the
    throughput is multiplied by f_r cos(theta) / (pdf q) = rho / q.
 
+A ``GlossyReflector`` vertex reflects by Phong's BRDF, rho / pi plus the normalised lobe
+rho_s (s + 2) / (2 pi) cos^s(alpha) about the mirror direction, in step 1 as well; in step
+2 Russian roulette picks the diffuse part with probability q_d = mean(rho), the lobe with
+q_s = mean(rho_s) (both scaled down if they add up to more than 1), or the end of the path;
+the lobe's direction is sampled with density (s + 1) / (2 pi) cos^s(alpha) (Suffern ch. 25),
+so the throughput is multiplied by rho_s (s + 2) / (s + 1) cos(theta) / q_s, and a direction
+below the surface ends the path.
+
 Emitted light is counted where the eye sees it and after a mirror or a refraction, and not
 after a diffuse bounce, whose light sources step 1 counted already; so every emitting shape
 must be an ``AreaLight``'s (Scene.validate says which is not). A surface emits from its
@@ -36,7 +44,8 @@ import math
 from .area_light import AreaLight
 from .float3 import Float3, dot
 from .fresnel import scatter, transmittance
-from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, LAMBERTIAN, MIRROR, SHADER_NAMES, TRANSPARENT
+from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, SHADER_NAMES,
+                       TRANSPARENT)
 from .ray import Ray
 from .sampling.maps import hemisphere_map
 from .sampling.random import (BOUNCE_U, BOUNCE_V, CHOICE, LIGHT_U, LIGHT_V, ROULETTE, VERTEX_DIMENSIONS,
@@ -44,7 +53,7 @@ from .sampling.random import (BOUNCE_U, BOUNCE_V, CHOICE, LIGHT_U, LIGHT_V, ROUL
 from .shading import SPAWN_EPSILON, HitInfo, in_shadow, mirror, transparent
 
 # The shaders a path goes through; any other is refused by Scene.validate.
-PATH_SHADERS = (BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT, EMISSIVE, DIELECTRIC)
+PATH_SHADERS = (BASE_COLOR, LAMBERTIAN, MIRROR, TRANSPARENT, EMISSIVE, DIELECTRIC, GLOSSY_REFLECTOR)
 # The deepest path: vertex dimensions stay below 2^32 far beyond it.
 MAX_PATH_DEPTH = 1024
 # The most area lights a path samples (two dimensions each per vertex).
@@ -85,6 +94,10 @@ class PathTrace:
                 raise ValueError("Scene.shapes[%d].color %r: a diffuse albedo above 1 reflects more light "
                                  "than it receives; PathTrace refuses it (scale the colour to <= 1)"
                                  % (i, c))
+            s = m.specular
+            if m.shader == GLOSSY_REFLECTOR and max(c.x + s.x, c.y + s.y, c.z + s.z) > 1.0:
+                raise ValueError("Scene.shapes[%d]: color %r plus material.specular %r is above 1, an albedo "
+                                 "that reflects more light than it receives; PathTrace refuses it" % (i, c, s))
 
 
 def orthonormal_basis(n: Float3) -> tuple:
@@ -104,11 +117,29 @@ def cosine_direction(n: Float3, u: float, v: float) -> Float3:
     return t * local.x + b * local.y + n * local.z
 
 
-def direct_light(scene, position: Float3, normal: Float3, rho: Float3, depth: int, pixel: int,
-                 sample: int, seed: int) -> Float3:
-    """The light of every light source reflected by f_r = rho / pi at ``position``:
-    sum of f_r L_i (n . w_i) over the lights that are above the surface and not shadowed,
-    an area light through one point of it (step 1 above)."""
+def lobe_direction(w_r: Float3, shininess: float, u: float, v: float) -> Float3:
+    """A direction about the unit mirror direction w_r with density (s + 1) / (2 pi) cos^s(alpha),
+    alpha its angle to w_r (Suffern's GlossySpecular::sample_f)."""
+    local = hemisphere_map(u, v, shininess)
+    t, b = orthonormal_basis(w_r)
+    return t * local.x + b * local.y + w_r * local.z
+
+
+def glossy_lobe(specular: Float3, shininess: float, normal: Float3, w_o: Float3, w_i: Float3,
+                cos_theta: float) -> Float3:
+    """The normalised Phong lobe rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s with
+    w_r = 2 (n . w_i) n - w_i (02562 worksheet 3)."""
+    w_r = normal * (2.0 * cos_theta) - w_i
+    cos_r = max(dot(w_o, w_r), 0.0)
+    return specular * ((shininess + 2.0) / (2.0 * math.pi) * cos_r ** shininess)
+
+
+def direct_light(scene, position: Float3, normal: Float3, w_o: Float3, rho: Float3, specular: Float3,
+                 shininess: float, depth: int, pixel: int, sample: int, seed: int) -> Float3:
+    """The light of every light source reflected at ``position`` by f_r = rho / pi plus the
+    glossy lobe (zero ``specular`` for a Lambertian surface): the sum of f_r L_i (n . w_i)
+    over the lights that are above the surface and not shadowed, an area light through one
+    point of it (step 1 above)."""
     result = Float3(0.0)
     j = 0
     for light in scene.lights:
@@ -127,7 +158,8 @@ def direct_light(scene, position: Float3, normal: Float3, rho: Float3, depth: in
             continue
         if scene.shadows and in_shadow(scene, position, light_sample.w_i, light_sample.dist):
             continue
-        result += rho / math.pi * L_i * cos_theta
+        f_r = rho / math.pi + glossy_lobe(specular, shininess, normal, w_o, light_sample.w_i, cos_theta)
+        result += f_r * L_i * cos_theta
     return result
 
 
@@ -147,20 +179,37 @@ def trace_path(scene, r: Ray, max_depth: int, pixel: int, sample: int, seed: int
         if sees_emission and facing < 0.0:
             result += throughput * hit.emission
         shader = hit.shader
-        if shader == LAMBERTIAN:
+        if shader == LAMBERTIAN or shader == GLOSSY_REFLECTOR:
             if facing > 0.0:                 # seen from behind: the side the ray is on
                 n = -n
             rho = hit.color
-            result += throughput * direct_light(scene, hit.position, n, rho, depth, pixel, sample, seed)
+            specular = hit.specular if shader == GLOSSY_REFLECTOR else Float3(0.0)
+            result += throughput * direct_light(scene, hit.position, n, -d, rho, specular, hit.shininess,
+                                                depth, pixel, sample, seed)
             if depth + 1 == max_depth:
                 break
-            q = (rho.x + rho.y + rho.z) / 3.0
-            if not random_float(pixel, sample, path_dimension(depth, ROULETTE), seed) < q:
-                break
-            throughput = throughput * rho / q
+            # Russian roulette picks the lobe the path follows, or ends it.
+            q_d = (rho.x + rho.y + rho.z) / 3.0
+            q_s = (specular.x + specular.y + specular.z) / 3.0
+            if q_d + q_s > 1.0:
+                q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
+            xi = random_float(pixel, sample, path_dimension(depth, ROULETTE), seed)
             u = random_float(pixel, sample, path_dimension(depth, BOUNCE_U), seed)
             v = random_float(pixel, sample, path_dimension(depth, BOUNCE_V), seed)
-            r = Ray(hit.position, cosine_direction(n, u, v), SPAWN_EPSILON, math.inf)
+            if xi < q_d:
+                throughput = throughput * rho / q_d
+                w_i = cosine_direction(n, u, v)
+            elif xi < q_d + q_s:
+                w_i = lobe_direction(d - n * (2.0 * dot(d, n)), hit.shininess, u, v)
+                cos_theta = dot(n, w_i)
+                if not cos_theta > 0.0:          # the lobe reaches below the surface: no light
+                    break
+                # f_r cos / pdf = rho_s (s + 2) / (s + 1) cos(theta), over the lobe's chance q_s
+                throughput = throughput * specular * ((hit.shininess + 2.0) / (hit.shininess + 1.0)
+                                                      * cos_theta / q_s)
+            else:
+                break
+            r = Ray(hit.position, w_i, SPAWN_EPSILON, math.inf)
             sees_emission = False
         elif shader == MIRROR:
             mirror(scene, r, hit)            # r becomes the reflected ray

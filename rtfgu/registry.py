@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from .area_light import AreaLight
 from .directional_light import Directional
 from .lights import PointLight
-from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
+from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
@@ -129,6 +129,8 @@ SHADERS = (
     # rtfgu.material.Dielectric, rtfgu/fresnel.py: the ray-cast loop refracts as transparent does; PathTrace picks
     # reflection or refraction by Fresnel's reflectance.
     ShaderKind(DIELECTRIC, "dielectric", continues=True),
+    # rtfgu.material.GlossyReflector: phong in the ray-cast loop; PathTrace samples its lobe.
+    ShaderKind(GLOSSY_REFLECTOR, "glossy_reflector", brdf=True, brdf_of="phong"),
 )
 
 LIGHTS = (

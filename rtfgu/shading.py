@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from .float3 import Float3, dot, normalize
-from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
+from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Material)
 from .ray import Ray
 
@@ -179,7 +179,7 @@ def shade(scene, r: Ray, hit: HitInfo) -> Float3:
     shader = hit.shader
     if shader == LAMBERTIAN:
         return lambertian(scene, r, hit)
-    elif shader == PHONG:
+    elif shader == PHONG or shader == GLOSSY_REFLECTOR:
         return phong(scene, r, hit)
     elif shader == MIRROR:
         return mirror(scene, r, hit)

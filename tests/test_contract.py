@@ -328,6 +328,7 @@ SHADER_CASES = {
     "glossy": (phong_color, refracted),
     "emissive": (lambda: EMISSION, None),     # Suffern's Emissive: L_e, nothing reflected
     "dielectric": (lambda: EMISSION, refracted),  # the ray-cast loop refracts (no Fresnel choice)
+    "glossy_reflector": (phong_color, None),      # the ray-cast loop shades it as phong
 }
 SHADER_NAMES = [kind.name for kind in SHADERS]
 

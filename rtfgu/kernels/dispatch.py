@@ -279,10 +279,12 @@ def _direct_path(light) -> str:
         "            n_shadow += 1",
         "            if in_shadow(shapes, position, w_i, eps, dist - eps, formula):",
         "                continue",
-        "        result = add(result, scale(mul(f, L_i), cos_theta))",
+        "        f_r = add(f, glossy_lobe(specular, shininess, normal, w_o, w_i, cos_theta))",
+        "        result = add(result, scale(mul(f_r, L_i), cos_theta))",
         "    return result, n_shadow"])
     return _overloaded("direct_path_" + light.name,
-                       "table, shapes, position, normal, rho, depth, pixel, sample, seed, shadows, formula, result",
+                       "table, shapes, position, normal, w_o, rho, specular, shininess, depth, pixel, sample, seed, "
+                       "shadows, formula, result",
                        "result, 0", body,
                        "The light of every %s reflected by a diffuse surface on a path, added to ``result``"
                        % light.name, inline="always")
@@ -320,6 +322,7 @@ def source() -> str:
              "from rtfgu.kernels.lights import %s" % ", ".join(
                  ["sample_" + l.name for l in LIGHTS] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
              "from rtfgu.kernels.sampling import random_float",
+             "from rtfgu.kernels.glossy import glossy_lobe",
              "from rtfgu.sampling.random import LIGHT_U, LIGHT_V, VERTEX_DIMENSIONS",
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
@@ -384,13 +387,15 @@ def source() -> str:
         parts.append(_direct_path(light))
     parts.append("\n".join(
         ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-         "def direct_path(lights, shapes, position, normal, rho, depth, pixel, sample, seed, shadows, formula):",
+         "def direct_path(lights, shapes, position, normal, w_o, rho, specular, shininess, depth, pixel, sample, seed, "
+         "shadows, formula):",
          '    """PathTrace\'s light loop over every light kind: (radiance, shadow rays)."""',
          "    zero = lit(0, rho[0])",
          "    result = (zero, zero, zero)",
          "    n_shadow = 0"]
-        + ["    result, n = direct_path_%s(lights[%d], shapes, position, normal, rho, depth, pixel, sample, seed, "
-           "shadows, formula, result)\n    n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
+        + ["    result, n = direct_path_%s(lights[%d], shapes, position, normal, w_o, rho, specular, shininess, depth, "
+           "pixel, sample, seed, shadows, formula, result)\n    n_shadow += n" % (light.name, j)
+           for j, light in enumerate(LIGHTS)]
         + ["    return result, n_shadow"]))
 
     brdf_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",

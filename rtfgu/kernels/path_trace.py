@@ -10,30 +10,22 @@ import math
 
 from numba import njit
 
-from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR
-from ..material import BASE_COLOR, DIELECTRIC, LAMBERTIAN, MIRROR, TRANSPARENT
+from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR, MAT_SHININESS, MAT_SPECULAR
+from ..material import BASE_COLOR, DIELECTRIC, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, TRANSPARENT
 from ..sampling.random import BOUNCE_U, BOUNCE_V, CHOICE, ROULETTE, VERTEX_DIMENSIONS
 from ..shading import SPAWN_EPSILON
 from .environment import ENVIRONMENT, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, dot, lit, load3, mul, neg, scale
+from .glossy import about, lobe_direction
 from .sampling import hemisphere_map, random_float
 from .shaders import continue_mirror, continue_transparent
 
 
 @njit(cache=True, error_model="numpy")
 def cosine_direction(n, u, v):
-    """rtfgu.path_trace.cosine_direction: density cos(theta) / pi about the unit n, with
-    Duff et al.'s orthonormal basis."""
-    zero = lit(0.0, u)
-    one = lit(1.0, u)
-    x, y, z = hemisphere_map(u, v, one)
-    sign = one if n[2] >= zero else -one
-    a = -one / (sign + n[2])
-    b = n[0] * n[1] * a
-    t = (one + sign * n[0] * n[0] * a, sign * b, -sign * n[0])
-    bt = (b, sign + n[1] * n[1] * a, -n[1])
-    return add(add(scale(t, x), scale(bt, y)), scale(n, z))
+    """rtfgu.path_trace.cosine_direction: density cos(theta) / pi about the unit n."""
+    return about(n, hemisphere_map(u, v, lit(1.0, u)))
 
 
 @njit(cache=True, error_model="numpy")
@@ -100,23 +92,41 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
         if sees_emission and facing < zero:
             result = add(result, mul(throughput, load3(mat, MAT_EMISSION)))
         first = 2 + depth * VERTEX_DIMENSIONS
-        if shader == LAMBERTIAN:
+        if shader == LAMBERTIAN or shader == GLOSSY_REFLECTOR:
             if facing > zero:
                 normal = neg(normal)
             rho = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
-            light, shadow_rays = direct_path(lights, shapes, position, normal, rho, depth, pixel, sample,
-                                             seed, shadows, formula)
+            specular = (zero, zero, zero)
+            if shader == GLOSSY_REFLECTOR:
+                specular = load3(mat, MAT_SPECULAR)
+            shininess = mat[MAT_SHININESS]
+            light, shadow_rays = direct_path(lights, shapes, position, normal, neg(direction), rho, specular,
+                                             shininess, depth, pixel, sample, seed, shadows, formula)
             n_shadow += shadow_rays
             result = add(result, mul(throughput, light))
             if depth + 1 == max_depth:
                 break
-            q = (rho[0] + rho[1] + rho[2]) / lit(3.0, zero)
-            if not random_float(pixel, sample, first + ROULETTE, seed, zero) < q:
-                break
-            throughput = mul(throughput, (rho[0] / q, rho[1] / q, rho[2] / q))
+            three = lit(3.0, zero)
+            q_d = (rho[0] + rho[1] + rho[2]) / three
+            q_s = (specular[0] + specular[1] + specular[2]) / three
+            if q_d + q_s > one:
+                q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
+            xi = random_float(pixel, sample, first + ROULETTE, seed, zero)
             u = random_float(pixel, sample, first + BOUNCE_U, seed, zero)
             v = random_float(pixel, sample, first + BOUNCE_V, seed, zero)
-            direction = cosine_direction(normal, u, v)
+            if xi < q_d:
+                throughput = mul(throughput, (rho[0] / q_d, rho[1] / q_d, rho[2] / q_d))
+                direction = cosine_direction(normal, u, v)
+            elif xi < q_d + q_s:
+                w_i = lobe_direction(continue_mirror(mat, direction, normal), shininess, u, v)
+                cos_theta = dot(normal, w_i)
+                if not cos_theta > zero:
+                    break
+                weight = (shininess + lit(2.0, zero)) / (shininess + one) * cos_theta / q_s
+                throughput = mul(throughput, scale(specular, weight))
+                direction = w_i
+            else:
+                break
             sees_emission = False
         elif shader == MIRROR:
             direction = continue_mirror(mat, direction, normal)

@@ -1,5 +1,5 @@
 """An environment-lit scene (02562 worksheet 9, "Environment mapping"; Suffern ch. 18): three
-spheres, diffuse, mirror and absorbing glass, on a grey disk under a lat-long sky
+spheres, glossy (a GlossyReflector), mirror and absorbing glass, on a grey disk under a lat-long sky
 (rtfgu/scenes/data/sky.exr, made by tools/make_sky.py), path traced: the sky lights the
 diffuse surfaces through their bounces and is seen in the mirror and through the glass."""
 from __future__ import annotations
@@ -9,7 +9,7 @@ from pathlib import Path
 from ..cameras import PinholeCamera
 from ..environment_light import EnvironmentLight
 from ..float3 import Float3
-from ..material import LAMBERTIAN, MIRROR, Dielectric, Material
+from ..material import LAMBERTIAN, MIRROR, Dielectric, GlossyReflector, Material
 from ..sampling import Jittered
 from ..sampling.sampler import sampler_of
 from ..scene import Scene
@@ -23,13 +23,13 @@ ENVIRONMENT_SPP = 256
 
 @homework(512, 512, test_side=16, test_spp=TEST_SPP)
 def environment_spheres() -> Scene:
-    """Worksheet 9: a diffuse, a mirror and a glass sphere on a disk under an HDR sky."""
+    """Worksheet 9: a glossy, a mirror and a glass sphere on a disk under an HDR sky."""
     camera = PinholeCamera(Float3(0.0, 1.6, 6.5), Float3(0.0, 0.5, 0.0), Float3(0.0, 1.0, 0.0), d=1.7)
     scene = Scene(camera)
     scene.environment = EnvironmentLight(SKY)
     scene.shapes.append(Disk(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), 3.0, Float3(0.6),
                              Material(LAMBERTIAN)))
-    scene.shapes.append(Sphere(Float3(-1.1, 0.5, 0.0), 0.5, Float3(0.8, 0.3, 0.2), Material(LAMBERTIAN)))
+    scene.shapes.append(Sphere(Float3(-1.1, 0.5, 0.0), 0.5, Float3(0.5, 0.15, 0.1), GlossyReflector((0.4, 0.4, 0.4), 60.0)))
     scene.shapes.append(Sphere(Float3(0.0, 0.5, -0.6), 0.5, Float3(0.0), Material(MIRROR)))
     scene.shapes.append(Sphere(Float3(1.1, 0.5, 0.0), 0.5, Float3(0.0), Dielectric(1.5, (0.3, 0.1, 0.2))))
     scene.tracer = path_trace()

@@ -13,18 +13,39 @@ const CHOICE = 3u;
 const LIGHT_U = 8u;
 const LIGHT_V = 9u;
 
-// Duff et al. 2017's orthonormal basis about the unit n, and a direction about it with
-// density cos(theta) / pi (rtfgu.path_trace.cosine_direction).
+// Duff et al. 2017's orthonormal basis: local (x, y, z) in the frame whose z is the unit axis.
+fn about(axis: vec3f, local: vec3f) -> vec3f
+{
+    let sign = select(-1.0, 1.0, axis.z >= 0.0);
+    let a = -1.0 / (sign + axis.z);
+    let b = axis.x * axis.y * a;
+    let t = vec3f(1.0 + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
+    let bt = vec3f(b, sign + axis.y * axis.y * a, -axis.y);
+    return t * local.x + bt * local.y + axis * local.z;
+}
+
+// A direction about n with density cos(theta) / pi (rtfgu.path_trace.cosine_direction).
 fn cosine_direction(n: vec3f, u: f32, v: f32) -> vec3f
 {
-    let local = hemisphere_map(vec2f(u, v), 1.0);
-    let sign = select(-1.0, 1.0, n.z >= 0.0);
-    let a = -1.0 / (sign + n.z);
-    let b = n.x * n.y * a;
-    let t = vec3f(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x);
-    let bt = vec3f(b, sign + n.y * n.y * a, -n.y);
-    return t * local.x + bt * local.y + n * local.z;
+    return about(n, hemisphere_map(vec2f(u, v), 1.0));
 }
+
+// #if glossy_reflector
+// The normalised Phong lobe rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s, w_r the mirrored w_i,
+// and a direction about the mirror direction with density (s + 1) / (2 pi) cos^s
+// (rtfgu.path_trace.glossy_lobe, lobe_direction).
+fn glossy_lobe(specular: vec3f, shininess: f32, normal: vec3f, w_o: vec3f, w_i: vec3f, cos_theta: f32) -> vec3f
+{
+    let w_r = normal * (2.0 * cos_theta) - w_i;
+    let cos_r = max(dot(w_o, w_r), 0.0);
+    return specular * ((shininess + 2.0) / (2.0 * PI) * pow(cos_r, shininess));
+}
+
+fn lobe_direction(w_r: vec3f, shininess: f32, u: f32, v: f32) -> vec3f
+{
+    return about(w_r, hemisphere_map(vec2f(u, v), shininess));
+}
+// #endif
 
 // #if area_light
 // AreaLight.sample_area: L_e A cos(theta_l) / d^2 toward a point of area light i uniform by
@@ -78,8 +99,10 @@ fn sample_path_directional(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -
 }
 // #endif
 
-// The light of every light reflected by f_r = rho / pi (rtfgu.path_trace.direct_light).
-fn direct_path(position: vec3f, normal: vec3f, rho: vec3f, first: u32, pixel: u32, s: u32) -> vec3f
+// The light of every light reflected by f_r = rho / pi plus the glossy lobe
+// (rtfgu.path_trace.direct_light).
+fn direct_path(position: vec3f, normal: vec3f, w_o: vec3f, rho: vec3f, specular: vec3f, shininess: f32,
+               first: u32, pixel: u32, s: u32) -> vec3f
 {
     var result = vec3f(0.0);
     let f = rho / PI;
@@ -98,7 +121,12 @@ fn direct_path(position: vec3f, normal: vec3f, rho: vec3f, first: u32, pixel: u3
             continue;
         }
         // #endif
-        result += f * light.L_i * cos_theta;
+        // #if glossy_reflector
+        let f_r = f + glossy_lobe(specular, shininess, normal, w_o, light.w_i, cos_theta);
+        // #else
+        let f_r = f;
+        // #endif
+        result += f_r * light.L_i * cos_theta;
     }
     // #end
     return result;
@@ -121,24 +149,47 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
             result += throughput * hit.emission;
         }
         let first = 2u + depth * VERTEX_DIMENSIONS;
-        // #if lambertian
-        if (hit.shader == LAMBERTIAN) {
+        // #if lambertian|glossy_reflector
+        if (hit.shader == LAMBERTIAN || hit.shader == GLOSSY_REFLECTOR) {
             let n = select(hit.normal, -hit.normal, facing > 0.0);
             let rho = hit.color;
+            let specular = select(vec3f(0.0), hit.specular, hit.shader == GLOSSY_REFLECTOR);
             // #if lights
-            result += throughput * direct_path(hit.position, n, rho, first, pixel, s);
+            result += throughput * direct_path(hit.position, n, -r.direction, rho, specular, hit.shininess,
+                                               first, pixel, s);
             // #endif
             if (depth + 1u == PATH_MAX_DEPTH) {
                 break;
             }
-            let q = (rho.x + rho.y + rho.z) / 3.0;
-            if (!(random_float(pixel, s, first + ROULETTE, uniforms.seed) < q)) {
-                break;
+            // Russian roulette picks the lobe the path follows, or ends it.
+            var q_d = (rho.x + rho.y + rho.z) / 3.0;
+            var q_s = (specular.x + specular.y + specular.z) / 3.0;
+            if (q_d + q_s > 1.0) {
+                let total = q_d + q_s;
+                q_d = q_d / total;
+                q_s = q_s / total;
             }
-            throughput *= rho / q;
+            let xi = random_float(pixel, s, first + ROULETTE, uniforms.seed);
             let u = random_float(pixel, s, first + BOUNCE_U, uniforms.seed);
             let v = random_float(pixel, s, first + BOUNCE_V, uniforms.seed);
-            r = Ray(hit.position, cosine_direction(n, u, v), SPAWN_EPSILON, FAR);
+            var w_i: vec3f;
+            if (xi < q_d) {
+                throughput *= rho / q_d;
+                w_i = cosine_direction(n, u, v);
+            } else if (xi < q_d + q_s) {
+                // #if glossy_reflector
+                let d = r.direction;
+                w_i = lobe_direction(d - n * (2.0 * dot(d, n)), hit.shininess, u, v);
+                let cos_theta = dot(n, w_i);
+                if (!(cos_theta > 0.0)) {
+                    break;
+                }
+                throughput *= specular * ((hit.shininess + 2.0) / (hit.shininess + 1.0) * cos_theta / q_s);
+                // #endif
+            } else {
+                break;
+            }
+            r = Ray(hit.position, w_i, SPAWN_EPSILON, FAR);
             sees_emission = false;
             continue;
         }
