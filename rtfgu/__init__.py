@@ -7,6 +7,8 @@ from .float3 import Float3, cross, dot, normalize
 from .lights import Light, PointLight, sample_point_light
 from .directional_light import Directional
 from .area_light import AreaLight
+from .ambient_occluder import AmbientOccluder
+from .environment_light import EnvironmentLight
 from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Dielectric, Emissive, GlossyReflector, Material)
 from .ray import RAY_EPSILON, Ray
@@ -37,7 +39,7 @@ __all__ = [
     "Camera", "OrthographicCamera", "PinholeCamera",
     "Shape", "Mesh", "load_obj", "Scene",
     "Material", "Emissive", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR", "TRANSPARENT", "GLOSSY",
-    "EMISSIVE", "Dielectric", "DIELECTRIC", "GlossyReflector", "PointLight", "Directional", "AreaLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
+    "EMISSIVE", "Dielectric", "DIELECTRIC", "GlossyReflector", "PointLight", "Directional", "AreaLight", "AmbientOccluder", "EnvironmentLight", "Light", "sample_point_light", "HitInfo", "shade", "trace",
     "render", "render_passes", "show", "write_png",
     "ThinLens", "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
     "Texture", "ImageTexture", "Checker",

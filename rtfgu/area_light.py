@@ -12,7 +12,7 @@ Two ways to sample it, one per tracer:
   theta_l the angle between its normal and the way to pos; a sphere of radius r sends
   L_e pi r^2 in every direction, and the shadow ray stops at its surface
   (dist = ||c - pos|| - r).
-* ``sample_area(pos, u, v)``, ``PathTrace``'s direct light (Suffern's
+* ``sample_area(pos, normal, u, v)``, ``PathTrace``'s direct light (Suffern's
   ``AreaLight::get_direction`` and ``G / pdf``): a point p' of the shape, uniform by area
   (pdf 1 / A), turned from area to solid angle by the geometry term:
 
@@ -85,9 +85,10 @@ class AreaLight:
         point = self.v0 + (self.e0 * v + self.e1 * (1.0 - v)) * su
         return point, normalize(cross(self.e0, self.e1))
 
-    def sample_area(self, pos: Float3, u: float, v: float) -> Light:
+    def sample_area(self, pos: Float3, normal: Float3, u: float, v: float) -> Light:
         """PathTrace's sample: L_i = L_e A cos(theta_l) / ||p' - pos||^2 toward the point
-        p' = sample_point(u, v), zero from behind."""
+        p' = sample_point(u, v), zero from behind (``normal``, the receiving surface's, is
+        not needed here)."""
         point, normal = self.sample_point(u, v)
         to_light = point - pos
         dist = to_light.length()

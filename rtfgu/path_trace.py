@@ -47,7 +47,7 @@ from .fresnel import scatter, transmittance
 from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, SHADER_NAMES,
                        TRANSPARENT)
 from .ray import Ray
-from .sampling.maps import hemisphere_map
+from .sampling.maps import about, hemisphere_map
 from .sampling.random import (BOUNCE_U, BOUNCE_V, CHOICE, LIGHT_U, LIGHT_V, ROULETTE, VERTEX_DIMENSIONS,
                               path_dimension, random_float)
 from .shading import SPAWN_EPSILON, HitInfo, in_shadow, mirror, transparent
@@ -100,29 +100,16 @@ class PathTrace:
                                  "that reflects more light than it receives; PathTrace refuses it" % (i, c, s))
 
 
-def orthonormal_basis(n: Float3) -> tuple:
-    """Two unit vectors t, b with (t, b, n) orthonormal, for a unit n (Duff et al., "Building
-    an Orthonormal Basis, Revisited", JCGT 6(1), 2017), without a branch on n but its sign."""
-    sign = 1.0 if n.z >= 0.0 else -1.0
-    a = -1.0 / (sign + n.z)
-    b = n.x * n.y * a
-    return Float3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), Float3(b, sign + n.y * n.y * a, -n.y)
-
-
 def cosine_direction(n: Float3, u: float, v: float) -> Float3:
     """A direction about the unit normal n with density cos(theta) / pi (Suffern's
     hemisphere map with e = 1), for (u, v) uniform in [0, 1)^2."""
-    local = hemisphere_map(u, v, 1.0)
-    t, b = orthonormal_basis(n)
-    return t * local.x + b * local.y + n * local.z
+    return about(n, hemisphere_map(u, v, 1.0))
 
 
 def lobe_direction(w_r: Float3, shininess: float, u: float, v: float) -> Float3:
     """A direction about the unit mirror direction w_r with density (s + 1) / (2 pi) cos^s(alpha),
     alpha its angle to w_r (Suffern's GlossySpecular::sample_f)."""
-    local = hemisphere_map(u, v, shininess)
-    t, b = orthonormal_basis(w_r)
-    return t * local.x + b * local.y + w_r * local.z
+    return about(w_r, hemisphere_map(u, v, shininess))
 
 
 def glossy_lobe(specular: Float3, shininess: float, normal: Float3, w_o: Float3, w_i: Float3,
@@ -141,13 +128,14 @@ def direct_light(scene, position: Float3, normal: Float3, w_o: Float3, rho: Floa
     over the lights that are above the surface and not shadowed, an area light through one
     point of it (step 1 above)."""
     result = Float3(0.0)
-    j = 0
+    drawn = {}          # per light kind, the lights that drew a point so far
     for light in scene.lights:
-        if isinstance(light, AreaLight):
+        if hasattr(light, "sample_area"):       # AreaLight, AmbientOccluder
+            j = drawn.get(type(light), 0)
+            drawn[type(light)] = j + 1
             u = random_float(pixel, sample, path_dimension(depth, LIGHT_U + 2 * j), seed)
             v = random_float(pixel, sample, path_dimension(depth, LIGHT_V + 2 * j), seed)
-            j += 1
-            light_sample = light.sample_area(position, u, v)
+            light_sample = light.sample_area(position, normal, u, v)
         else:
             light_sample = light.sample(position)
         L_i = light_sample.L_i

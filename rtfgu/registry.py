@@ -26,6 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .ambient_occluder import AmbientOccluder
 from .area_light import AreaLight
 from .directional_light import Directional
 from .lights import PointLight
@@ -98,13 +99,16 @@ class LightKind(_Rows):
     """A light: the lecture class with an attribute per field, numba
     ``sample_<name>(lights, j, position)`` and WGSL ``fn sample_<name>(pos, i) -> Light``
     in ``lights.wgsl``, both returning the slide's (L_i, w_i, dist). ``area``: PathTrace
-    samples a point of the light with two random numbers (the class's ``sample_area(pos, u,
-    v)``, numba ``sample_<name>_area(lights, j, position, u, v)``)."""
+    samples a point of the light with two random numbers (the class's ``sample_area(pos,
+    normal, u, v)``, numba ``sample_<name>_area(lights, j, position, normal, u, v)``, WGSL
+    ``sample_<name>_area(pos, normal, i, u, v)``); ``ray_cast``: the ray-cast loop has it
+    too (``sample_<name>``; a light without it needs PathTrace, Scene.validate says so)."""
 
     name: str
     cls: type
     fields: tuple
     area: bool = False
+    ray_cast: bool = True
 
 
 SHAPES = (
@@ -139,6 +143,8 @@ LIGHTS = (
     # rtfgu/area_light.py: one emitting triangle or sphere.
     LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3)),
               area=True),
+    # rtfgu/ambient_occluder.py: ambient light seen through the unoccluded directions.
+    LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3),), area=True, ray_cast=False),
 )
 
 

@@ -79,6 +79,13 @@ class Scene:
             if not isinstance(self.environment, EnvironmentLight):
                 raise ValueError("Scene.environment must be None or an EnvironmentLight, got %r"
                                  % (self.environment,))
+        if self.tracer is None:
+            for i, light in enumerate(self.lights):
+                kind = next(k for k in LIGHTS if isinstance(light, k.cls))
+                if not kind.ray_cast:
+                    raise ValueError("Scene.lights[%d]: a %s samples directions, which the ray-cast loop does "
+                                     "not; render with scene.tracer = PathTrace(...) (max_depth=1 for its "
+                                     "image alone)" % (i, kind.record))
         if self.tracer is not None:
             from .path_trace import PathTrace
             if not isinstance(self.tracer, PathTrace):

@@ -260,7 +260,7 @@ def _direct_path(light) -> str:
     if light.area:
         draw = ["        u = random_float(pixel, sample, first + LIGHT_U + 2 * j, seed, zero)",
                 "        v = random_float(pixel, sample, first + LIGHT_V + 2 * j, seed, zero)",
-                "        L_i, w_i, dist = sample_%s_area(table, j, position, u, v)" % light.name]
+                "        L_i, w_i, dist = sample_%s_area(table, j, position, normal, u, v)" % light.name]
     else:
         draw = ["        L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
     body = "\n".join([
@@ -320,7 +320,7 @@ def source() -> str:
              "import math",
              "from rtfgu.kernels.float3 import div",
              "from rtfgu.kernels.lights import %s" % ", ".join(
-                 ["sample_" + l.name for l in LIGHTS] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
+                 ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
              "from rtfgu.kernels.sampling import random_float",
              "from rtfgu.kernels.glossy import glossy_lobe",
              "from rtfgu.sampling.random import LIGHT_U, LIGHT_V, VERTEX_DIMENSIONS",
@@ -383,7 +383,8 @@ def source() -> str:
         "The colour of the surface hit: its texture's at the hit (Scene.intersect), else the "
         "material's; ``texels`` is None in a scene without textures"))
     for light in LIGHTS:
-        parts.append(_direct(light))
+        if light.ray_cast:
+            parts.append(_direct(light))
         parts.append(_direct_path(light))
     parts.append("\n".join(
         ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
@@ -409,7 +410,7 @@ def source() -> str:
     parts.append("\n".join(brdf_lines))
 
     light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
-                   "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
+                   "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS) if light.ray_cast]
     shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                    "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
                    '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',

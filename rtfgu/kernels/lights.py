@@ -11,6 +11,8 @@ import math
 from numba import njit
 
 from ..layout import LIGHT_INTENSITY, LIGHT_POSITION, offset
+from .glossy import about
+from .sampling import hemisphere_map
 from .float3 import add, cross, div, dot, length, lit, neg, normalize, row3, scale, sub
 
 DIRECTIONAL_DIRECTION = offset("Directional", "direction")
@@ -20,6 +22,7 @@ AREA_RADIUS = offset("AreaLight", "radius")
 AREA_E0 = offset("AreaLight", "e0")
 AREA_E1 = offset("AreaLight", "e1")
 AREA_EMISSION = offset("AreaLight", "emission")
+AMBIENT_RADIANCE = offset("AmbientOccluder", "radiance")
 
 
 @njit(cache=True, error_model="numpy")
@@ -69,7 +72,7 @@ def sample_area_light(lights, j, pos):
 
 
 @njit(cache=True, error_model="numpy")
-def sample_area_light_area(lights, j, pos, u, v):
+def sample_area_light_area(lights, j, pos, normal, u, v):
     """AreaLight.sample_area: L_e A cos(theta_l) / d^2 toward a point of area light j uniform
     by area (AreaLight.sample_point), zero from behind."""
     v0 = row3(lights, j, AREA_V0)
@@ -102,3 +105,11 @@ def sample_area_light_area(lights, j, pos, u, v):
     if not cos_l > zero:
         return (zero, zero, zero), w_i, dist
     return scale(emission, area * cos_l / (dist * dist)), w_i, dist
+
+
+@njit(cache=True, error_model="numpy")
+def sample_ambient_occluder_area(lights, j, pos, normal, u, v):
+    """AmbientOccluder.sample_area: 2 pi L toward a direction uniform on the hemisphere about
+    the normal, unbounded."""
+    w_i = about(normal, hemisphere_map(u, v, lit(0.0, u)))
+    return scale(row3(lights, j, AMBIENT_RADIANCE), lit(2.0 * math.pi, u)), w_i, lit(math.inf, u)

@@ -47,3 +47,19 @@ def hemisphere_map(x: float, y: float, e: float) -> Float3:
     cos_theta = (1.0 - y) ** (1.0 / (e + 1.0))
     sin_theta = math.sqrt(1.0 - cos_theta * cos_theta)
     return Float3(sin_theta * cos_phi, sin_theta * sin_phi, cos_theta)
+
+
+def orthonormal_basis(n: Float3) -> tuple:
+    """Two unit vectors t, b with (t, b, n) orthonormal, for a unit n (Duff et al., "Building
+    an Orthonormal Basis, Revisited", JCGT 6(1), 2017), without a branch on n but its sign."""
+    sign = 1.0 if n.z >= 0.0 else -1.0
+    a = -1.0 / (sign + n.z)
+    b = n.x * n.y * a
+    return Float3(1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x), Float3(b, sign + n.y * n.y * a, -n.y)
+
+
+def about(axis: Float3, local: Float3) -> Float3:
+    """``local`` (x, y, z) in the frame whose z is the unit ``axis``: a hemisphere_map sample
+    turned about a normal or a mirror direction."""
+    t, b = orthonormal_basis(axis)
+    return t * local.x + b * local.y + axis * local.z

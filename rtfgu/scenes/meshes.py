@@ -17,6 +17,7 @@ import math
 
 import numpy as np
 
+from ..ambient_occluder import AmbientOccluder
 from ..area_light import AreaLight
 from ..cameras import PinholeCamera
 from ..directional_light import Directional
@@ -188,4 +189,19 @@ def cornell_box_fresnel() -> Scene:
                                Dielectric(1.5, GLASS_ABSORPTION)))
     scene.tracer = path_trace()
     scene.sampler = sampler_of(Jittered, PROGRESSIVE_SPP)
+    return scene
+
+
+AMBIENT_OCCLUSION_SPP = 256
+
+
+@homework(512, 512, test_side=16, test_spp=TEST_SPP)
+def cornell_box_ambient_occlusion() -> Scene:
+    """Suffern ch. 17: the Cornell box with its blocks, all a white 0.8, lit only by an
+    AmbientOccluder (PathTrace with one vertex): how open each point's hemisphere is."""
+    mesh = cornell_box_mesh(blocks=True)
+    scene = _cornell_scene(Mesh(mesh.vertices, mesh.faces, (0.8, 0.8, 0.8), material=Material(LAMBERTIAN)))
+    scene.lights = [AmbientOccluder(1.0)]
+    scene.tracer = path_trace(max_depth=1)
+    scene.sampler = sampler_of(Jittered, AMBIENT_OCCLUSION_SPP)
     return scene

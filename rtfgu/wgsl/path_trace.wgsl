@@ -79,21 +79,31 @@ fn sample_area_light_area(pos: vec3f, i: u32, u: f32, v: f32) -> Light
     return Light(light.emission * (area * cos_l / (dist * dist)), w_i, dist);
 }
 
-fn sample_path_area_light(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
     let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
     let v = random_float(pixel, s, first + LIGHT_V + 2u * i, uniforms.seed);
     return sample_area_light_area(pos, i, u, v);
 }
 // #endif
+// #if ambient_occluder
+// AmbientOccluder.sample_area: 2 pi L toward a direction uniform on the hemisphere about the
+// normal, unbounded (rtfgu/ambient_occluder.py).
+fn sample_path_ambient_occluder(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+{
+    let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
+    let v = random_float(pixel, s, first + LIGHT_V + 2u * i, uniforms.seed);
+    return Light(ambient_occluders[i].radiance * (2.0 * PI), about(normal, hemisphere_map(vec2f(u, v), 0.0)), FAR);
+}
+// #endif
 // #if point_light
-fn sample_path_point_light(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+fn sample_path_point_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
     return sample_point_light(pos, i);
 }
 // #endif
 // #if directional
-fn sample_path_directional(pos: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
+fn sample_path_directional(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
     return sample_directional(pos, i);
 }
@@ -108,7 +118,7 @@ fn direct_path(position: vec3f, normal: vec3f, w_o: vec3f, rho: vec3f, specular:
     let f = rho / PI;
     // #each light
     for (var i = 0u; i < NUM_$TABLE; i++) {
-        let light = sample_path_$kind(position, i, first, pixel, s);
+        let light = sample_path_$kind(position, normal, i, first, pixel, s);
         if (all(light.L_i == vec3f(0.0))) {
             continue;
         }
