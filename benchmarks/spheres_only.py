@@ -17,7 +17,7 @@ from rtfgu.kernels.camera import gen_ray
 from rtfgu.kernels.culling import cone_table, tile_candidates
 from rtfgu.kernels.float3 import lit, row3
 from rtfgu.kernels.intersect import intersect_sphere, sphere_eye_terms, sphere_roots
-from rtfgu.layout import CAMERA_WIDTH, MAT_COLOR, PINHOLE, PINHOLE_EYE, SPHERE_RADIUS
+from rtfgu.layout import CAMERA_WIDTH, MAT_COLOR, PINHOLE, PINHOLE_EYE, SPHERE_RADIUS, SPHERE_ROW
 
 TILE = 16
 
@@ -76,7 +76,10 @@ def spheres_only(width, height, camera, camera64, spheres, sphere_eye, cones, co
 
 def prepare(flat, width, height):
     """Arguments for both baselines from a FlatScene of spheres (scene order = row order)."""
-    if flat.camera_kind != PINHOLE or any(flat.count(k) for k in flat.shapes if k != "sphere"):
+    # A scene of many spheres holds them in its BVH too (rtfgu.layout.FlatMesh): rows of spheres only.
+    only_spheres = flat.mesh is None or bool((flat.mesh.faces[:, 0] == SPHERE_ROW).all())
+    if flat.camera_kind != PINHOLE or not only_spheres or any(
+            flat.count(k) for k in flat.shapes if k not in ("sphere", "mesh")):
         raise ValueError("the spheres-only baselines need a pinhole camera and spheres only")
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     camera64 = camera.astype(np.float64)

@@ -89,11 +89,13 @@ class AreaLight:
         """PathTrace's sample: L_i = L_e A cos(theta_l) / ||p' - pos||^2 toward the point
         p' = sample_point(u, v), zero from behind (``normal``, the receiving surface's, is
         not needed here)."""
-        point, normal = self.sample_point(u, v)
+        point, n_l = self.sample_point(u, v)
         to_light = point - pos
         dist = to_light.length()
+        if not dist > 0.0:                   # the point lit is the point drawn: no direction
+            return Light(Float3(0.0), n_l, 0.0)
         w_i = to_light / dist
-        cos_l = -dot(normal, w_i)
+        cos_l = -dot(n_l, w_i)
         if not cos_l > 0.0:
             return Light(Float3(0.0), w_i, dist)
         return Light(self.emission * (self.area * cos_l / (dist * dist)), w_i, dist)

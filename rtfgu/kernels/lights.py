@@ -87,8 +87,8 @@ def sample_area_light_area(lights, j, pos, normal, u, v):
             s2 = zero
         s = math.sqrt(s2)
         phi = lit(2.0 * math.pi, zero) * v
-        normal = (s * math.cos(phi), s * math.sin(phi), z)
-        point = add(v0, scale(normal, radius))
+        n_l = (s * math.cos(phi), s * math.sin(phi), z)
+        point = add(v0, scale(n_l, radius))
         area = lit(4.0 * math.pi, zero) * radius * radius
     else:
         e0 = row3(lights, j, AREA_E0)
@@ -96,12 +96,14 @@ def sample_area_light_area(lights, j, pos, normal, u, v):
         su = math.sqrt(u)
         point = add(v0, scale(add(scale(e0, v), scale(e1, one - v)), su))
         n = cross(e0, e1)
-        normal = normalize(n)
+        n_l = normalize(n)
         area = lit(0.5, zero) * length(n)
     to_light = sub(point, pos)
     dist = length(to_light)
+    if not dist > zero:
+        return (zero, zero, zero), n_l, zero
     w_i = div(to_light, dist)
-    cos_l = -dot(normal, w_i)
+    cos_l = -dot(n_l, w_i)
     if not cos_l > zero:
         return (zero, zero, zero), w_i, dist
     return scale(emission, area * cos_l / (dist * dist)), w_i, dist

@@ -71,6 +71,9 @@ fn sample_area_light_area(pos: vec3f, i: u32, u: f32, v: f32) -> Light
     }
     let to_light = point - pos;
     let dist = length(to_light);
+    if (!(dist > 0.0)) {
+        return Light(vec3f(0.0), normal, 0.0);
+    }
     let w_i = to_light / dist;
     let cos_l = -dot(normal, w_i);
     if (!(cos_l > 0.0)) {
