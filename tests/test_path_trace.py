@@ -52,7 +52,7 @@ from warp_support import chi_square_p
 
 # (label, backend, precision) of every path that path traces.
 PATHS = (("reference", "reference", "float64"), ("numba-float64", "numba", "float64"),
-         ("numba-float32", "numba", "float32"))
+         ("numba-float32", "numba", "float32"), ("wgpu-float32", "wgpu", "float32"))
 # How far an exact result may be from its truth on a path: rounding only.
 ROUNDING = {"float64": 1e-12, "float32": 1e-6}
 # A correct sampler fails a chi-square test at this level once in 10^4 runs.
@@ -64,6 +64,14 @@ Z = 3.0
 
 @pytest.fixture(params=PATHS, ids=[label for label, _, _ in PATHS])
 def path(request):
+    """Each path; WGSL skipped only where no adapter exists, naming the package to install."""
+    if request.param[1] == "wgpu":
+        from rtfgu.wgsl.device import NoAdapterError, get_device
+
+        try:
+            get_device()
+        except NoAdapterError as error:
+            pytest.skip(str(error))
     return request.param
 
 

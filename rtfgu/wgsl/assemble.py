@@ -54,6 +54,12 @@ def _brdf_shaders(features):
     return [k for k in SHADERS if k.brdf and k.name in features]
 
 
+def _lit(features) -> bool:
+    """Whether the program samples lights: a shader that reflects them, or a path tracer
+    (whose path_trace.wgsl holds its own light loop)."""
+    return "lights" in features and (bool(_brdf_shaders(features)) or "path_trace" in features)
+
+
 def _shape_kinds(features):
     """The shape kinds the program needs: the scene's, and the kinds they call."""
     names = {k.name for k in SHAPES if k.name in features}
@@ -89,7 +95,7 @@ def pieces(features, formula: str = "slide") -> list:
         for kind in TEXTURES:
             if kind.name in f:
                 out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
-    if trace and "lights" in f and _brdf_shaders(f):
+    if trace and _lit(f):
         out.append(("lights.wgsl", "lights.wgsl"))
         if "shadows" in f:
             out.append(("in_shadow.wgsl", "in_shadow.wgsl"))
@@ -371,7 +377,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
             wanted.append(("texels", "array<f32, %d>" % len(flat.texels), flat.texels, False))
         if "environment" in features:
             wanted.append(("environment", "array<f32, %d>" % flat.environment.size, flat.environment, False))
-        if "lights" in features and _brdf_shaders(features):
+        if _lit(features):
             for kind in LIGHTS:
                 table = flat.lights[kind.name]
                 if len(table):
