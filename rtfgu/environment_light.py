@@ -54,8 +54,7 @@ class EnvironmentLight:
         v = math.acos(min(1.0, max(-1.0, direction.y))) / math.pi
         column = min(int(u * self.width), self.width - 1)
         row = min(int(v * self.height), self.height - 1)
-        r, g, b = self.texels[row, column]
-        return Float3(float(r), float(g), float(b))
+        return Float3(*(float(c) for c in self.texels[row, column]))
 
 
 def read_exr(path) -> np.ndarray:

@@ -264,10 +264,12 @@ def _direct_path(light) -> str:
     else:
         draw = ["        L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
     body = "\n".join([
+        "    position, normal, w_o = surface",
+        "    rho, specular, shininess = brdf",
+        "    first, pixel, sample, seed = stream",
         "    zero = lit(0, rho[0])",
         "    eps = lit(SPAWN_EPSILON, zero)",
         "    f = div(rho, lit(math.pi, zero))",
-        "    first = 2 + depth * VERTEX_DIMENSIONS",
         "    n_shadow = 0",
         "    for j in range(table.shape[0]):"] + draw + [
         "        if L_i[0] == zero and L_i[1] == zero and L_i[2] == zero:",
@@ -283,8 +285,7 @@ def _direct_path(light) -> str:
         "        result = add(result, scale(mul(f_r, L_i), cos_theta))",
         "    return result, n_shadow"])
     return _overloaded("direct_path_" + light.name,
-                       "table, shapes, position, normal, w_o, rho, specular, shininess, depth, pixel, sample, seed, "
-                       "shadows, formula, result",
+                       "table, shapes, surface, brdf, stream, shadows, formula, result",
                        "result, 0", body,
                        "The light of every %s reflected by a diffuse surface on a path, added to ``result``"
                        % light.name, inline="always")
@@ -323,7 +324,7 @@ def source() -> str:
                  ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
              "from rtfgu.kernels.sampling import random_float",
              "from rtfgu.kernels.glossy import glossy_lobe",
-             "from rtfgu.sampling.random import LIGHT_U, LIGHT_V, VERTEX_DIMENSIONS",
+             "from rtfgu.sampling.random import LIGHT_U, LIGHT_V",
              "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
@@ -388,15 +389,15 @@ def source() -> str:
         parts.append(_direct_path(light))
     parts.append("\n".join(
         ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-         "def direct_path(lights, shapes, position, normal, w_o, rho, specular, shininess, depth, pixel, sample, seed, "
-         "shadows, formula):",
-         '    """PathTrace\'s light loop over every light kind: (radiance, shadow rays)."""',
-         "    zero = lit(0, rho[0])",
+         "def direct_path(lights, shapes, surface, brdf, stream, shadows, formula):",
+         '    """PathTrace\'s light loop over every light kind: (radiance, shadow rays). ``surface``:',
+         "    (position, normal, w_o); ``brdf``: (rho, rho_s, shininess); ``stream``: (the vertex's first",
+         '    dimension, pixel, sample, seed)."""',
+         "    zero = lit(0, brdf[0][0])",
          "    result = (zero, zero, zero)",
          "    n_shadow = 0"]
-        + ["    result, n = direct_path_%s(lights[%d], shapes, position, normal, w_o, rho, specular, shininess, depth, "
-           "pixel, sample, seed, shadows, formula, result)\n    n_shadow += n" % (light.name, j)
-           for j, light in enumerate(LIGHTS)]
+        + ["    result, n = direct_path_%s(lights[%d], shapes, surface, brdf, stream, shadows, formula, result)\n"
+           "    n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
         + ["    return result, n_shadow"]))
 
     brdf_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",

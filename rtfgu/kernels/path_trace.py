@@ -100,8 +100,9 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             if shader == GLOSSY_REFLECTOR:
                 specular = load3(mat, MAT_SPECULAR)
             shininess = mat[MAT_SHININESS]
-            light, shadow_rays = direct_path(lights, shapes, position, normal, neg(direction), rho, specular,
-                                             shininess, depth, pixel, sample, seed, shadows, formula)
+            light, shadow_rays = direct_path(lights, shapes, (position, normal, neg(direction)),
+                                             (rho, specular, shininess), (first, pixel, sample, seed), shadows,
+                                             formula)
             n_shadow += shadow_rays
             result = add(result, mul(throughput, light))
             if depth + 1 == max_depth:
