@@ -418,6 +418,62 @@ def test_numba_cosine_direction_is_the_lecture_layers(uv, n):
         assert np.abs(got32 - expected).max() <= 1e-5
 
 
+def power_histogram(directions, axis, power, bins=16):
+    """Counts in cells of cos^power(alpha) x phi about ``axis``, each of probability
+    1 / bins^2 under the density (power / (2 pi)) cos^(power - 1)(alpha) on the hemisphere
+    (P(cos alpha <= c) = c^power, phi uniform); cosine_histogram is power 2."""
+    t, b, a = frame(axis)
+    z = np.clip(directions @ a, 0.0, np.nextafter(1.0, 0.0))
+    phi = (np.arctan2(directions @ b, directions @ t) / (2 * math.pi)) % 1.0
+    observed, _, _ = np.histogram2d(z ** power, phi, bins=bins, range=[[0, 1], [0, 1]])
+    return observed, np.full((bins, bins), len(directions) / bins ** 2)
+
+
+@pytest.mark.parametrize("shininess", [1.0, 20.0, 300.0])
+@pytest.mark.parametrize("w_r", NORMALS[1:], ids=["-z", "+x", "generic"])
+def test_glossy_lobe_direction_has_density_of_the_phong_lobe(uv, w_r, shininess):
+    """GlossyReflector's sampled lobe: (s + 1) / (2 pi) cos^s(alpha) about the mirror direction."""
+    from rtfgu.path_trace import lobe_direction
+
+    directions = np.array([tuple(lobe_direction(Float3(*w_r), shininess, u, v)) for u, v in uv])
+    assert np.allclose(np.linalg.norm(directions, axis=1), 1.0, atol=1e-12)
+    assert chi_square_p(*power_histogram(directions, w_r, shininess + 1.0)) > ALPHA
+    # the lobe of a neighbouring exponent is told apart
+    assert chi_square_p(*power_histogram(directions, w_r, 1.25 * shininess + 1.0)) < 1e-12
+
+
+def test_numba_glossy_lobe_direction_is_the_lecture_layers(uv):
+    from rtfgu.kernels.glossy import lobe_direction as lobe_numba
+    from rtfgu.path_trace import lobe_direction
+
+    w_r = NORMALS[3]
+    for u, v in uv[:2000]:
+        expected = np.array(tuple(lobe_direction(Float3(*w_r), 20.0, u, v)))
+        got = np.array(lobe_numba(tuple(float(c) for c in w_r), 20.0, float(u), float(v)))
+        assert np.abs(got - expected).max() <= 1e-12
+
+
+@pytest.mark.parametrize("n", NORMALS, ids=["+z", "-z", "+x", "generic"])
+def test_ambient_occluder_directions_are_uniform_on_the_hemisphere(uv, n):
+    """AmbientOccluder.sample_area: a direction uniform on the hemisphere of n (P(cos <= c) = c),
+    L_i = 2 pi L, unbounded; and the numba twin gives the same."""
+    from rtfgu import AmbientOccluder
+    from rtfgu.kernels.lights import sample_ambient_occluder_area
+
+    light = AmbientOccluder(0.5, (1.0, 0.5, 0.25))
+    samples = [light.sample_area(Float3(0.0), Float3(*n), u, v) for u, v in uv]
+    directions = np.array([tuple(sample.w_i) for sample in samples])
+    assert all(sample.dist == math.inf for sample in samples)
+    assert np.allclose(tuple(samples[0].L_i), (math.pi, math.pi / 2, math.pi / 4), rtol=1e-15)
+    assert chi_square_p(*power_histogram(directions, n, 1.0)) > ALPHA
+    assert chi_square_p(*power_histogram(directions, n, 2.0)) < 1e-12     # not cosine-weighted
+    table = np.array([[0.5, 0.25, 0.125, 0.0]])
+    for (u, v), direction in zip(uv[:500], directions[:500]):
+        L_i, w_i, dist = sample_ambient_occluder_area(table, 0, (0.0, 0.0, 0.0), tuple(float(c) for c in n),
+                                                      float(u), float(v))
+        assert np.abs(np.array(w_i) - direction).max() <= 1e-12 and dist == math.inf
+
+
 # The shapes of the area lights sampled below.
 LIGHT_TRIANGLE = ((0.3, -1.0, 2.0), (2.0, 0.5, 1.0), (-1.0, 1.0, 0.5))
 LIGHT_SPHERE = ((1.0, -2.0, 0.5), 1.5)
