@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from .float3 import Float3, dot, normalize
-from .material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
+from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
                        Material)
 from .ray import Ray
 
@@ -34,7 +34,7 @@ class HitInfo:
     dots are the material of the shape hit (shader id, rho_s, s, ior, L_e)."""
 
     __slots__ = ("has_hit", "dist", "position", "normal", "color", "shader",
-                 "specular", "shininess", "ior", "emission")
+                 "specular", "shininess", "ior", "emission", "absorption")
 
     def __init__(self):
         self.has_hit = False
@@ -47,6 +47,7 @@ class HitInfo:
         self.shininess = 0.0
         self.ior = 1.0
         self.emission = Float3(0.0)
+        self.absorption = Float3(0.0)
 
     def set_material(self, color: Float3, material: Material) -> None:
         self.color = color
@@ -55,6 +56,7 @@ class HitInfo:
         self.shininess = material.shininess
         self.ior = material.ior
         self.emission = material.emission
+        self.absorption = material.absorption
 
 
 def in_shadow(scene, position: Float3, w_i: Float3, dist: float) -> bool:
@@ -127,12 +129,17 @@ def base_color(scene, r: Ray, hit: HitInfo) -> Float3:
     return hit.color
 
 
+def emissive(scene, r: Ray, hit: HitInfo) -> Float3:
+    """Suffern's Emissive: its emitted radiance L_e, and nothing reflected."""
+    return hit.emission
+
+
 def shade(scene, r: Ray, hit: HitInfo) -> Float3:
     """The slide's ``switch (*hit).shader``."""
     shader = hit.shader
     if shader == LAMBERTIAN:
         return lambertian(scene, r, hit)
-    elif shader == PHONG:
+    elif shader == PHONG or shader == GLOSSY_REFLECTOR:
         return phong(scene, r, hit)
     elif shader == MIRROR:
         return mirror(scene, r, hit)
@@ -140,5 +147,9 @@ def shade(scene, r: Ray, hit: HitInfo) -> Float3:
         return transparent(scene, r, hit)
     elif shader == GLOSSY:
         return glossy(scene, r, hit)
+    elif shader == EMISSIVE:
+        return emissive(scene, r, hit)
+    elif shader == DIELECTRIC:
+        return transparent(scene, r, hit)     # the ray-cast loop draws no Fresnel choice
     else:
         return base_color(scene, r, hit)
