@@ -12,8 +12,10 @@ rho (the surface's colour: no ambient term, and no DIFFUSE_FRACTION) the path
    loop, an ``AreaLight`` through one point of it sampled by area
    (AreaLight.sample_area: L_i = L_e A cos(theta_l) / d^2), each unless shadowed;
 2. continues with probability q = (rho_r + rho_g + rho_b) / 3 (Russian roulette, worksheet
-   7), in a cosine-weighted direction about the normal (pdf cos(theta) / pi), so that the
-   throughput is multiplied by f_r cos(theta) / (pdf q) = rho / q.
+   7), in the direction w_i that ``Lambertian(rho).sample_f`` draws (rtfgu/lambertian.py:
+   cosine-weighted, pdf = cos(theta) / pi), so that the throughput is multiplied by
+   f_r cos(theta) / (pdf q), which is rho / q. A direction with pdf or cos(theta) not above 0
+   ends the path.
 
 A ``GlossyReflector`` vertex reflects by Phong's BRDF, rho / pi plus the normalised lobe
 rho_s (s + 2) / (2 pi) cos^s(alpha) about the mirror direction, in step 1 as well; in step
@@ -44,6 +46,7 @@ import math
 from .area_light import AreaLight
 from .float3 import Float3, dot
 from .fresnel import scatter, transmittance
+from .lambertian import Lambertian
 from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, SHADER_NAMES,
                        TRANSPARENT)
 from .ray import Ray
@@ -98,12 +101,6 @@ class PathTrace:
             if m.shader == GLOSSY_REFLECTOR and max(c.x + s.x, c.y + s.y, c.z + s.z) > 1.0:
                 raise ValueError("Scene.shapes[%d]: color %r plus material.specular %r is above 1, an albedo "
                                  "that reflects more light than it receives; PathTrace refuses it" % (i, c, s))
-
-
-def cosine_direction(n: Float3, u: float, v: float) -> Float3:
-    """A direction about the unit normal n with density cos(theta) / pi (Suffern's
-    hemisphere map with e = 1), for (u, v) uniform in [0, 1)^2."""
-    return about(n, hemisphere_map(u, v, 1.0))
 
 
 def lobe_direction(w_r: Float3, shininess: float, u: float, v: float) -> Float3:
@@ -185,8 +182,11 @@ def trace_path(scene, r: Ray, max_depth: int, pixel: int, sample: int, seed: int
             u = random_float(pixel, sample, path_dimension(depth, BOUNCE_U), seed)
             v = random_float(pixel, sample, path_dimension(depth, BOUNCE_V), seed)
             if xi < q_d:
-                throughput = throughput * rho / q_d
-                w_i = cosine_direction(n, u, v)
+                f, w_i, pdf = Lambertian(rho).sample_f(n, u, v)
+                cos_theta = dot(n, w_i)
+                if not (pdf > 0.0 and cos_theta > 0.0):
+                    break
+                throughput = throughput * f * (cos_theta / (pdf * q_d))
             elif xi < q_d + q_s:
                 w_i = lobe_direction(d - n * (2.0 * dot(d, n)), hit.shininess, u, v)
                 cos_theta = dot(n, w_i)

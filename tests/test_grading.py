@@ -93,6 +93,10 @@ PLANTED = [
     ("a08_first_hit_found", "a08", {"8.7": "stopped at the first hit found", "8.8": "earlier one",
                                     "8.11": "first hit found"}),
     ("a08_no_tie_rule", "a08", {"8.8": "math.nextafter", "8.11": "math.nextafter"}),
+    ("a09_pdf_mismatch", "a09", {"9.3": "(n . w_i) / pi for cosine-weighted", "9.4": "biased", "9.5": "biased",
+                                 "9.7": "(n . w_i) / pi for cosine-weighted"}),
+    ("a09_exponent_off_by_one", "a09", {"9.1": "(1 - y)^(1 / (e + 1))", "9.2": "e = 10", "9.3": "g = cos",
+                                        "9.7": "g = cos"}),
 ]
 
 
@@ -121,6 +125,16 @@ def test_the_a08_planted_bugs_score_less_than_full_marks_and_the_solution_full_m
         scores[name] = result.score
     assert all(0 < score < 16 for score in scores.values()), scores
     assert scores["a08_slab_no_swap"] < scores["a08_first_hit_found"] < scores["a08_slab_ignores_tmax"], scores
+
+
+def test_a09_a_correct_but_noisy_sampler_scores_full_marks_and_is_told_it_is_noisier(tmp_path):
+    """The uniform hemisphere with its own pdf is unbiased: the statistical tests pass it, and
+    the image test reports its variance against the reference's (more than 1)."""
+    result = grade("a09", make_submission("a09_uniform_hemisphere", tmp_path / "noisy"), None, time_limit=LIMIT)
+    assert result.score == result.max_score, [(t.number, t.output) for t in result.tests if t.score < t.max_score]
+    image = _by_number(result)["9.5"]
+    ratio = float(image.output.split("its variance per sample is ")[1].split(" times")[0])
+    assert ratio > 1.1 and "less noisy" in image.output
 
 
 def test_a08_box_references_are_the_exact_slab_test():
@@ -197,7 +211,8 @@ def test_a08_bvh_references_are_the_exact_closest_hit():
 
 def test_every_planted_submission_is_the_solution_with_its_one_described_bug():
     names = planted_names()
-    assert {p[0] for p in PLANTED} | {"a03_infinite_loop", "a03_misbehaving", "a03_writes_references"} == set(names)
+    assert {p[0] for p in PLANTED} | {"a03_infinite_loop", "a03_misbehaving", "a03_writes_references",
+                                      "a09_uniform_hemisphere"} == set(names)
     for name in names:
         spec = describe(name)
         assert spec["__doc__"] and "\n" not in spec["__doc__"].strip(), name   # says what the bug is, in a line

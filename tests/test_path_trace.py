@@ -46,7 +46,9 @@ from rtfgu import (AreaLight, Emissive, Float3, LAMBERTIAN, MIRROR, TRANSPARENT,
                    PinholeCamera, Plane, Regular, Scene, Sphere, Triangle, render)
 from rtfgu.image import to_8bit
 from rtfgu.layout import compile_scene
-from rtfgu.path_trace import PathTrace, cosine_direction
+from rtfgu.float3 import dot
+from rtfgu.lambertian import Lambertian
+from rtfgu.path_trace import PathTrace
 from rtfgu.shading import HitInfo
 from warp_support import chi_square_p
 
@@ -388,12 +390,26 @@ NORMALS = [(0.0, 0.0, 1.0), (0.0, 0.0, -1.0), (1.0, 0.0, 0.0),
            tuple(np.array([0.3, -0.8, 0.52]) / np.linalg.norm([0.3, -0.8, 0.52]))]
 
 
+def cosine_direction(n: Float3, u: float, v: float) -> Float3:
+    """The direction of the diffuse bounce (Lambertian.sample_f)."""
+    return Lambertian(Float3(1.0)).sample_f(n, u, v)[1]
+
+
 @pytest.mark.parametrize("n", NORMALS, ids=["+z", "-z", "+x", "generic"])
 def test_cosine_direction_has_density_cos_over_pi(uv, n):
     directions = np.array([tuple(cosine_direction(Float3(*n), u, v)) for u, v in uv])
     assert np.allclose(np.linalg.norm(directions, axis=1), 1.0, atol=1e-12)
     assert (directions @ np.array(n)).min() >= -1e-12             # the hemisphere of n
     assert chi_square_p(*cosine_histogram(directions, n)) > ALPHA
+
+
+def test_lambertian_sample_f_returns_rho_over_pi_and_the_density_it_drew_with(uv):
+    rho = Float3(0.25, 0.5, 0.75)
+    n = Float3(*NORMALS[3])
+    for u, v in uv[:500]:
+        f, w_i, pdf = Lambertian(rho).sample_f(n, u, v)
+        assert tuple(f) == tuple(rho / math.pi)
+        assert pdf == pytest.approx(dot(n, w_i) / math.pi, rel=1e-15) and pdf > 0.0
 
 
 def test_a_skewed_cosine_direction_fails(uv):

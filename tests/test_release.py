@@ -72,7 +72,7 @@ def test_the_student_package_has_no_solution_line_no_twin_and_no_grader(tmp_path
     assert "raise NotImplementedError" not in (package / "float3.py").read_text()
     assert "raise NotImplementedError('a03: Sphere.intersect_p')" in (package / "shapes" / "sphere.py").read_text()
     # every solution revealed: the twins ship
-    full = build_package(tmp_path / "all", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07", "a08"))
+    full = build_package(tmp_path / "all", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07", "a08", "a09"))
     assert (full / "kernels" / "intersect.py").is_file() and (full / "robust.py").is_file()
     # the numba and WGSL paths look textures up as a07 does: they ship once a07 is revealed
     before = build_package(tmp_path / "a06", reveal=("a01", "a02", "a03", "a04", "a05", "a06"))
@@ -85,6 +85,14 @@ def test_the_student_package_has_no_solution_line_no_twin_and_no_grader(tmp_path
     assert not (a07 / "kernels").exists()
     assert "raise NotImplementedError('a08: BVH.intersect')" in (a07 / "accelerators" / "bvh.py").read_text()
     assert "raise NotImplementedError('a08: BBox.hit')" in (a07 / "accelerators" / "bbox.py").read_text()
+    # the numba and WGSL paths map samples to the hemisphere as a09 does: they ship once a09 is
+    # revealed; the lecture layer's path tracer ships with a04 and a05, calling the a09 stubs
+    a08 = build_package(tmp_path / "a08", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07", "a08"))
+    assert not (a08 / "kernels").exists() and not (a08 / "wgsl" / "hemisphere_map.wgsl").exists()
+    assert not (a08 / "wgsl" / "path_trace.wgsl").exists() and (a08 / "path_trace.py").is_file()
+    assert "raise NotImplementedError('a09: hemisphere_map')" in (a08 / "sampling" / "maps.py").read_text()
+    assert "raise NotImplementedError('a09: Lambertian.sample_f')" in (a08 / "lambertian.py").read_text()
+    assert (full / "kernels" / "sampling.py").is_file() and (full / "wgsl" / "hemisphere_map.wgsl").is_file()
 
 
 def test_the_probes_hold_no_hint_and_import_nothing_of_the_grader():
@@ -231,7 +239,7 @@ def test_no_twin_no_hidden_probe_no_hidden_reference_and_no_solving_hint_in_the_
         visible = [c for c in checks_for(a.id) if c.visibility == "visible"]
         folder = checker / "reference" / a.id
         stored = json.loads((folder / "observations.json").read_text())
-        assert set(stored) == {c.slug for c in visible if c.kind == "cases"}
+        assert set(stored) == {c.slug for c in visible if c.kind in ("cases", "statistic")}
         for c in hidden:
             assert not (folder / (c.slug + ".png")).exists()
             assert c.name not in code

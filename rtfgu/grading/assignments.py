@@ -9,7 +9,8 @@ The order is that of both courses: lecture 01 (Float3, Ray, orthographic camera,
 sphere) and 02562 weeks 1-3 (pinhole camera, triangle, Kepler and Lambert, shadows, Phong,
 mirror, refraction), then the intersection functions again in WGSL, then 02562 worksheet 3's
 texture lookup (Suffern ch. 29), then bounding boxes and the BVH (Suffern ch. 19 and 22,
-02562 worksheet 6).
+02562 worksheet 6), then the diffuse bounce of the path tracer (Suffern ch. 7 and 26, 02562
+worksheet 7).
 """
 from __future__ import annotations
 
@@ -364,8 +365,51 @@ A08 = Assignment(
            "need only assignment 1. There is no image to hand in."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08)
-ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08)}
+A09 = Assignment(
+    id="a09_path_tracing",
+    title="Cosine-weighted hemisphere sampling and one bounce of diffuse interreflection",
+    blocks=(
+        Block("sampling/maps.py", "hemisphere_map",
+              "Suffern's map of (x, y) in [0, 1)^2 to a direction about +z with density\n"
+              "(e + 1) / (2 pi) cos^e(theta): phi = 2 pi x, cos(theta) = (1 - y)^(1 / (e + 1)),\n"
+              "sin(theta) = sqrt(1 - cos^2(theta)); return Float3(sin(theta) cos(phi), sin(theta) sin(phi), cos(theta))."),
+        Block("lambertian.py", "Lambertian.sample_f",
+              "Draw w_i cosine-weighted about n: about(n, hemisphere_map(u, v, 1.0)) turns a direction about\n"
+              "+z into one about n. Its density is pdf = (n . w_i) / pi. Return (self.f(), w_i, pdf)."),
+    ),
+    task=("Write the two functions that make PathTrace's diffuse bounce: Suffern's map of a point of\n"
+          "the unit square to the hemisphere, with density proportional to cos^e(theta)\n"
+          "(`hemisphere_map(x, y, e)`; e = 1 is the cosine-weighted hemisphere, e = 0 the uniform one,\n"
+          "larger e a Phong lobe), and `Lambertian.sample_f(n, u, v)`, which draws the direction a path\n"
+          "takes after a diffuse surface and says with which density it drew it. PathTrace (given)\n"
+          "multiplies the path's throughput by f (n . w_i) / pdf: any density gives the right image on\n"
+          "average as long as pdf is the density you drew with, and the cosine-weighted one gives the\n"
+          "least noise. The tests are statistical: they draw many directions with your code and test\n"
+          "their distribution (chi-square) and the mean of f (n . w_i) / pdf, and they render a sphere\n"
+          "in the white furnace (exactly rho in expectation) and the Cornell box lit by a point light\n"
+          "under its ceiling, with the direct light and one bounce of diffuse interreflection, and\n"
+          "compare them with the truth or the reference image within the Monte Carlo error."),
+    formulas=("- Hemisphere map (Suffern ch. 7, \"Mapping Samples to a Hemisphere\"): phi = 2 pi x,\n"
+              "  cos(theta) = (1 - y)^(1 / (e + 1)), density (e + 1) / (2 pi) cos^e(theta) per unit solid angle;\n"
+              "  e = 1: cos(theta) = sqrt(1 - y), density cos(theta) / pi\n"
+              "- Lambertian BRDF (Suffern ch. 13): f_r = rho / pi\n"
+              "- The Monte Carlo estimator of the reflected light (Suffern ch. 26; 02562 worksheet 7):\n"
+              "  L_r = mean of f_r L_i(w_i) (n . w_i) / pdf(w_i); with pdf = (n . w_i) / pi the weight\n"
+              "  f_r (n . w_i) / pdf is rho"),
+    slides=("Suffern ch. 7: Mapping Samples to a Hemisphere",
+            "Suffern ch. 26: Global Illumination (Lambertian::sample_f, the path tracer)",
+            "02562 worksheet 7: progressive path tracing, cosine-weighted hemisphere sampling"),
+    time_limit=60.0,
+    extra=("The Cornell box test renders 20 x 20 pixels at 64 samples with the lecture layer in pure\n"
+           "Python, about 10 s on one core; its reference is the mean of 16,384 samples per pixel from the\n"
+           "course's renderer. A correct image differs from it by noise only. A correct sampler other than\n"
+           "the cosine-weighted one (the uniform hemisphere with its own pdf 1 / (2 pi)) passes too, and the\n"
+           "message says how much noisier it is. The tests need assignments 1-5 (your own or the revealed\n"
+           "solutions). There is no image to hand in."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09)}
 
 
 def register(assignment: Assignment) -> None:

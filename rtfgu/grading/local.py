@@ -101,7 +101,7 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
         if c.visibility != "visible" or (only is not None and c.slug not in only):
             continue
         t0 = time.monotonic()
-        data, output, failure = run_probe(root, c.probe, time_limit * 6 if c.kind == "image" else time_limit)
+        data, output, failure = run_probe(root, c.probe, c.time_limit or (time_limit * 6 if c.kind == "image" else time_limit))
         reference = load_reference(c)
         image = None
         if failure is not None:
@@ -109,12 +109,18 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
         elif c.kind == "image":
             diff = out_dir / "diffs" / (c.slug + ".png") if out_dir is not None else None
             fraction, lines, image = judge_image(c, data, reference, diff)
+        elif c.kind == "statistic":
+            try:
+                fraction, lines = c.judge(c, data, reference)
+            except Exception as error:      # an answer of the wrong form: this test only
+                fraction, lines = 0.0, ["the test's answer was not in the form the test writes (%s)"
+                                        % type(error).__name__]
         else:
             fraction, lines = judge_cases(c, data, reference)
         if output.strip() and fraction < 1.0:
             lines.append("What your code printed:\n" + output)
         message = "\n".join(lines) if lines else "all cases right"
-        if fraction >= 1.0 and c.kind != "image":
+        if fraction >= 1.0 and c.kind == "cases":
             message = "all %d cases right" % len(reference.get("cases", []))
         test = TestResult(c.number, c.name, float(c.weight), round(c.weight * fraction, 4), c.visibility,
                           message, str(image) if image else None)

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from .assignments import ASSIGNMENTS
 from .checks import IMAGE_FRACTION, IMAGE_LEVELS, checks_for
+from .checks.statistics import CHI_SQUARE_ALPHA, PIXEL_FRACTION, Z_LIMIT, Z_PIXEL
 
 
 def assignment_readme(a) -> str:
@@ -21,16 +22,25 @@ def assignment_readme(a) -> str:
     lines += ["- %s" % s for s in a.slides]
     lines += ["", "## Check your work", "",
               "From the top of the repository:", "",
-              "    make check A=%s     # the visible tests below, on your files in assignments/%s/" % (a.short, a.id),
-              "    make render A=%s    # this assignment's images, rendered with your code, into renders/%s/" % (a.short, a.short),
-              "",
-              "A failing test says what was expected, what your code gave, and for which ray, point or pixel.",
-              "Image tests compare your render with the reference: a pixel counts as different only if it differs",
-              "by more than %d of 255 levels from every pixel in the 3 x 3 neighbourhood of the reference pixel,"
-              % IMAGE_LEVELS,
-              "and up to %.1f%% of the pixels may differ. Every image test writes a diff image" % (100 * IMAGE_FRACTION),
-              "(yours | reference | differences in red).", "",
-              "## Hand in", "", "The file%s" % ("s" if len(a.files) > 1 else ""), ""]
+              "    make check A=%s     # the visible tests below, on your files in assignments/%s/" % (a.short, a.id)]
+    if a.images:
+        lines.append("    make render A=%s    # this assignment's images, rendered with your code, into renders/%s/"
+                     % (a.short, a.short))
+    lines += ["", "A failing test says what was expected, what your code gave, and for which ray, point or pixel."]
+    if any(c.kind == "image" for c in checks):
+        lines += ["Image tests compare your render with the reference: a pixel counts as different only if it differs",
+                  "by more than %d of 255 levels from every pixel in the 3 x 3 neighbourhood of the reference pixel,"
+                  % IMAGE_LEVELS,
+                  "and up to %.1f%% of the pixels may differ. Every image test writes a diff image" % (100 * IMAGE_FRACTION),
+                  "(yours | reference | differences in red)."]
+    if any(c.kind == "statistic" for c in checks):
+        lines += ["Statistical tests judge random samples: a chi-square test of where your directions fall (it",
+                  "fails a correct sampler once in %d gradings), and means of many samples against the truth or" % round(1 / CHI_SQUARE_ALPHA),
+                  "the reference estimate, which pass within %g standard errors of the Monte Carlo noise of both;" % Z_LIMIT,
+                  "an image also fails when more than %g%% of its pixel channels are beyond %g standard errors."
+                  % (100 * PIXEL_FRACTION, Z_PIXEL),
+                  "The probes draw from a fixed stream of random numbers, so a test gives the same answer every run."]
+    lines += ["", "## Hand in", "", "The file%s" % ("s" if len(a.files) > 1 else ""), ""]
     lines += ["- `%s`" % f for f in a.files]
     if a.images:
         lines += ["", "and these images, rendered with `make render A=%s` (PNG, the size the scene registers):" % a.short, ""]

@@ -1,3 +1,4 @@
+# release: solves a04 a05 a09
 """PathTrace on the numba path: rtfgu.path_trace.trace_path, operation for operation, over the
 flat layout (the same random numbers, so the same paths as the lecture layer).
 
@@ -16,7 +17,7 @@ from ..sampling.random import BOUNCE_U, BOUNCE_V, CHOICE, ROULETTE, VERTEX_DIMEN
 from ..shading import SPAWN_EPSILON
 from .environment import ENVIRONMENT, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
-from .float3 import add, dot, lit, load3, mul, neg, scale
+from .float3 import add, div, dot, lit, load3, mul, neg, scale
 from .glossy import about, lobe_direction
 from .sampling import hemisphere_map, random_float
 from .shaders import continue_mirror, continue_transparent
@@ -24,7 +25,8 @@ from .shaders import continue_mirror, continue_transparent
 
 @njit(cache=True, error_model="numpy")
 def cosine_direction(n, u, v):
-    """rtfgu.path_trace.cosine_direction: density cos(theta) / pi about the unit n."""
+    """The direction of rtfgu.lambertian.Lambertian.sample_f: density cos(theta) / pi about
+    the unit n."""
     return about(n, hemisphere_map(u, v, lit(1.0, u)))
 
 
@@ -116,8 +118,15 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             u = random_float(pixel, sample, first + BOUNCE_U, seed, zero)
             v = random_float(pixel, sample, first + BOUNCE_V, seed, zero)
             if xi < q_d:
-                throughput = mul(throughput, (rho[0] / q_d, rho[1] / q_d, rho[2] / q_d))
-                direction = cosine_direction(normal, u, v)
+                # rtfgu.lambertian.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
+                f = div(rho, lit(math.pi, zero))
+                w_i = cosine_direction(normal, u, v)
+                cos_theta = dot(normal, w_i)
+                pdf = cos_theta / lit(math.pi, zero)
+                if not (pdf > zero and cos_theta > zero):
+                    break
+                throughput = scale(mul(throughput, f), cos_theta / (pdf * q_d))
+                direction = w_i
             elif xi < q_d + q_s:
                 w_i = lobe_direction(continue_mirror(mat, direction, normal), shininess, u, v)
                 cos_theta = dot(normal, w_i)

@@ -1,3 +1,4 @@
+# release: solves a09
 """The random stream, the pixel samples and the maps for the kernels, operation for
 operation as rtfgu/sampling/ (random.py, sampler.py, maps.py).
 

@@ -42,11 +42,13 @@ def hemisphere_map(x: float, y: float, e: float) -> Float3:
     """A direction about +z with density (e + 1) / (2 pi) cos^e(theta), as Suffern's
     Sampler::map_samples_to_hemisphere: phi = 2 pi x, cos(theta) = (1 - y)^(1 / (e + 1)).
     e = 1 is the cosine-weighted hemisphere."""
+    ### BEGIN SOLUTION
     cos_phi = math.cos(2.0 * math.pi * x)
     sin_phi = math.sin(2.0 * math.pi * x)
     cos_theta = (1.0 - y) ** (1.0 / (e + 1.0))
     sin_theta = math.sqrt(1.0 - cos_theta * cos_theta)
     return Float3(sin_theta * cos_phi, sin_theta * sin_phi, cos_theta)
+    ### END SOLUTION
 
 
 def orthonormal_basis(n: Float3) -> tuple:

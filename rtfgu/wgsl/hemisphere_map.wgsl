@@ -1,3 +1,4 @@
+// release: solves a09
 // A direction about +z with density (e + 1) / (2 pi) cos^e(theta), as Suffern's
 // Sampler::map_samples_to_hemisphere (rtfgu/sampling/maps.py); e = 1 is cosine-weighted.
 fn hemisphere_map(p: vec2f, e: f32) -> vec3f

@@ -1,4 +1,4 @@
-// release: solves a04 a05
+// release: solves a04 a05 a09
 // PathTrace (rtfgu/path_trace.py; Suffern ch. 26, 02562 worksheet 7): one path per sample,
 // next-event estimation at every diffuse vertex (an area light through a point of it drawn
 // from the random stream), a cosine-weighted bounce with Russian roulette, emission counted
@@ -24,7 +24,7 @@ fn about(axis: vec3f, local: vec3f) -> vec3f
     return t * local.x + bt * local.y + axis * local.z;
 }
 
-// A direction about n with density cos(theta) / pi (rtfgu.path_trace.cosine_direction).
+// A direction about n with density cos(theta) / pi (rtfgu.lambertian.Lambertian.sample_f).
 fn cosine_direction(n: vec3f, u: f32, v: f32) -> vec3f
 {
     return about(n, hemisphere_map(vec2f(u, v), 1.0));
@@ -187,8 +187,15 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
             let v = random_float(pixel, s, first + BOUNCE_V, uniforms.seed);
             var w_i: vec3f;
             if (xi < q_d) {
-                throughput *= rho / q_d;
+                // rtfgu.lambertian.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
+                let f = rho * (1.0 / PI);
                 w_i = cosine_direction(n, u, v);
+                let cos_theta = dot(n, w_i);
+                let pdf = cos_theta / PI;
+                if (!(pdf > 0.0 && cos_theta > 0.0)) {
+                    break;
+                }
+                throughput = throughput * f * (cos_theta / (pdf * q_d));
             } else if (xi < q_d + q_s) {
                 // #if glossy_reflector
                 let d = r.direction;

@@ -36,7 +36,7 @@ class Check:
     weight: float
     probe: tuple                    # (module of rtfgu.grading.probes, function, kwargs): runs in the child
     visibility: str = "visible"     # "visible" or "hidden"
-    kind: str = "cases"             # "cases" or "image"
+    kind: str = "cases"             # "cases", "image" or "statistic"
     hint: object = None             # hint(inputs, expected, got) -> str | None (grader side)
     rtol: float = 1e-6
     atol: float = 1e-9
@@ -48,6 +48,12 @@ class Check:
     memory_mb: int | None = None    # overrides the grader's limit (0: none; llvmpipe reserves much address space)
     needs: tuple = ()               # the student files the test runs (relative to rtfgu/); () : all of them
     known: str = ""                 # a function of rtfgu.grading.mistakes: the known mistakes per case
+    # kind "statistic": judge(check, got, reference) -> (fraction, message lines), and
+    # reference() -> the reference observation, computed on the grader's side (an exact truth
+    # or the staff renderer's estimate) instead of by running the probe on the solution
+    judge: object = None
+    time_limit: float | None = None  # this test's own limit in seconds, over the grader's (a render in pure Python)
+    reference: object = None
     assignment: str = ""
 
     def __post_init__(self):
@@ -91,7 +97,7 @@ def checks_for(assignment_id: str):
 
 
 def _load():
-    from . import a01, a02, a03, a04, a05, a07, a08  # noqa: F401  (each registers its checks)
+    from . import a01, a02, a03, a04, a05, a07, a08, a09  # noqa: F401  (each registers its checks)
     try:
         from . import a06  # noqa: F401
     except ImportError:
