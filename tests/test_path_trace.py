@@ -29,8 +29,8 @@ What is checked, and the exact value each check compares with:
 
 The paths: the lecture layer ("reference", pure Python), numba float64 and numba float32.
 The wgpu path does not path trace yet. All numba scenes here use few kinds of shape, so
-numba compiles few kernels: spheres + triangles + area lights, spheres + triangles, one
-sphere, and the box (a mesh + area lights).
+numba compiles few kernels: spheres + triangles + area lights, spheres + triangles without
+a light (the furnaces), and the box (a mesh + area lights, as the Cornell box scenes).
 """
 from __future__ import annotations
 
@@ -116,20 +116,24 @@ RATIO_BAND = (2.5, 6.0)
 FURNACE_CAMERA = dict(eye=(0.0, 1.0, 4.0), lookat=(0.0, 0.6, 0.0), up=(0.0, 1.0, 0.0), d=1.0)
 # A floor triangle (its front, (v1 - v0) x (v2 - v0) = (0, 36, 0), faces up).
 FLOOR = ((-3.0, 0.0, 3.0), (3.0, 0.0, 3.0), (0.0, 0.0, -3.0))
+# A small triangle 6 behind the camera of the furnace, facing it, out of its view.
+BEHIND_THE_CAMERA = ((-0.5, 0.5, 10.0), (0.0, 1.5, 10.0), (0.5, 0.5, 10.0))
 
 
 def furnace_scene(layout: str, rho=None) -> Scene:
     """The furnace: a white environment (background 1) and diffuse shapes.
 
-    layout "sphere": one sphere; "cluster": three spheres 10^-3 apart above a floor 10^-3
-    below them (light goes back and forth between them), and beside them a mirror sphere
-    and a glass sphere (ior 1.5), both lossless; "emissive": two diffuse spheres 0.35 apart
-    above a floor 0.3 below (the gaps bound the light samples' 1 / d^2, so the variance
-    stays moderate), with albedos ``rho`` (three greys) and each emitting 1 - rho as an
-    AreaLight, and a mirror sphere (it reflects the radiance 1 it receives, so the truth
-    stays 1; a path that did not count the emission it sees after the mirror, or counted
-    the emission it sees after a diffuse bounce, would be off). Without ``rho`` every
-    albedo is 1 and nothing emits."""
+    layout "sphere": one sphere, and behind the camera a triangle of albedo 1 like it (a
+    path that meets it still brings exactly 1) that keeps the kinds of the cluster, so numba
+    compiles no other kernel; "cluster": three spheres 10^-3 apart above a floor 10^-3 below
+    them (light goes back and forth between them), and beside them a mirror sphere and a
+    glass sphere (ior 1.5), both lossless; "emissive": two diffuse spheres 0.35 apart above
+    a floor 0.3 below (the gaps bound the light samples' 1 / d^2, so the variance stays
+    moderate), with albedos ``rho`` (three greys) and each emitting 1 - rho as an AreaLight,
+    and a mirror sphere (it reflects the radiance 1 it receives, so the truth stays 1; a
+    path that did not count the emission it sees after the mirror, or counted the emission
+    it sees after a diffuse bounce, would be off). Without ``rho`` every albedo is 1 and
+    nothing emits."""
     scene = Scene(PinholeCamera(**FURNACE_CAMERA))
     scene.background = Float3(1.0)
     # max_depth 256: with albedo 1 a path stops only when it leaves the scene, which it does
@@ -147,7 +151,7 @@ def furnace_scene(layout: str, rho=None) -> Scene:
     specular = []
     if layout == "sphere":
         spheres = [((0.0, 0.6, 0.0), 1.2)]
-        floor = None
+        floor = BEHIND_THE_CAMERA
     elif layout == "cluster":
         spheres = [((-0.5005, 0.501, 0.0), 0.5), ((0.5005, 0.501, 0.0), 0.5),
                    ((0.0, 0.501 + 0.5005 * math.sqrt(3.0), 0.0), 0.5)]

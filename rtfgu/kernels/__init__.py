@@ -83,9 +83,9 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), table, terms)
             eye = (terms, cone_table(camera64, table))
     continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
-    bounces = MAX_DEPTH if continues else None
+    cast, path = (MAX_DEPTH if continues else None,), None
     if flat.max_depth:
-        bounces = (flat.max_depth,)
+        cast, path = None, (flat.max_depth,)
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
@@ -93,7 +93,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     if sampler is not None:
         sampler = (sampler.samples, sampler.shuffled, sampler.num_samples, sampler.num_sets)
     return ((width, height), (flat.camera_kind, camera, camera64), shapes, lights, scene, eye,
-            settings, bounces, sampler, _coprime_stride(tiles)), tiles
+            settings, (cast, path), sampler, _coprime_stride(tiles)), tiles
 
 
 class NumbaAccumulator:

@@ -7,13 +7,15 @@ rtfgu.kernels.dispatch), every bounce written to a record (render.record_bounce)
 the ray left the scene (the colour is then the background); the normal is not computed
 for base_color, whose shader reads none.
 
-Every shape and light kind reaches the kernel as an array (empty for a kind the scene
-lacks) and the path loop is always on, so one compiled kernel per precision serves every
-scene: an empty table tests nothing, and a shader that ends the path ends it after one
-bounce as in a render. Primary rays test every sphere with intersect_sphere rather than
-the render's per-frame eye terms and culled candidates: the terms are the same operations
-on the same numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling drops only
-spheres the ray cannot hit.
+Every row shape kind and light kind reaches the kernel as an array (empty for a kind the
+scene lacks: render.shape_arrays with ``empty``) and the path loop is always on, so one
+compiled kernel per precision serves every scene (and one more with textures, with a mesh,
+with spheres in its BVH, with an environment, which change the render's kernel as they
+change this one): an empty table tests nothing, and a shader that ends the path ends it
+after one bounce as in a render. Primary rays test every sphere with intersect_sphere
+rather than the render's per-frame eye terms and culled candidates: the terms are the same
+operations on the same numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling
+drops only spheres the ray cannot hit.
 """
 from __future__ import annotations
 
@@ -58,7 +60,7 @@ def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:
     """Records (paths, MAX_DEPTH, RECORD_FIELDS) of the FlatScene ``flat``: of ``pixel``
     (ix, iy, width, height), iy from the bottom, or of every row of ``rays`` ((n, 8):
     origin, direction, tmin, tmax)."""
-    shapes = shape_arrays(flat)
+    shapes = shape_arrays(flat, empty=True)
     lights = tuple(flat.lights[kind.name] for kind in LIGHTS)
     camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
     scene = scene_tuple(flat)

@@ -400,45 +400,56 @@ def source() -> str:
            "    n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
         + ["    return result, n_shadow"]))
 
+    # One branch per BRDF function: shaders that share one (brdf_of) share its branch.
+    brdf_of = {}
+    for shader in SHADERS:
+        if shader.brdf:
+            brdf_of.setdefault(shader.brdf_of or shader.name, []).append(shader.id)
     brdf_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                   "def brdf(shader, mat, color, normal, w_o, w_i, cos_theta):",
                   '    """The BRDF term of the shader with id ``shader``."""']
-    for shader in SHADERS:
-        if shader.brdf:
-            brdf_lines.append("    if shader == %d:\n        return brdf_%s(mat, color, normal, w_o, w_i, cos_theta)"
-                              % (shader.id, shader.brdf_of or shader.name))
+    for name, ids in brdf_of.items():
+        brdf_lines.append("    if %s:\n        return brdf_%s(mat, color, normal, w_o, w_i, cos_theta)"
+                          % (" or ".join("shader == %d" % i for i in ids), name))
     brdf_lines.append("    return color")
     parts.append("\n".join(brdf_lines))
 
+    def case(shader) -> str:
+        guard = "bounces is not None and " if shader.continues else ""
+        return "%sshader == %d" % (guard, shader.id)
+
+    # The light loop is written once, for every shader with a BRDF (each supplies its term
+    # through ``brdf``); such a shader that continues the path does so after it.
     light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
                    "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS) if light.ray_cast]
+    lit_shaders = [shader for shader in SHADERS if shader.brdf and not shader.emits]
     shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                    "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
                    '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',
                    '    shadow rays); ``color`` is the surface\'s (surface_color). A shader that continues',
                    '    the path exists only when ``bounces`` does."""',
                    "    n_shadow = 0"]
+    if lit_shaders:
+        shade_lines.append("    if %s:  # %s" % (" or ".join("(%s)" % case(s) if s.continues else case(s)
+                                                             for s in lit_shaders),
+                                                 ", ".join(s.name for s in lit_shaders)))
+        shade_lines.append("        result = surface(mat, color)")
+        shade_lines += light_calls
+        for shader in lit_shaders:
+            if shader.continues:
+                shade_lines.append("        if %s:  # %s" % (case(shader), shader.name))
+                shade_lines.append("            return result, False, continue_%s(mat, r_d, surface_point[1]), n_shadow"
+                                   % shader.name)
+        shade_lines.append("        return result, True, r_d, n_shadow")
     for shader in SHADERS:
         if shader.emits:
             shade_lines.append("    if shader == %d:  # %s" % (shader.id, shader.name))
             shade_lines.append("        return load3(mat, MAT_EMISSION), True, r_d, n_shadow")
-            continue
-        if not (shader.brdf or shader.continues):
-            continue
-        body = []
-        if shader.brdf:
-            body.append("        result = surface(mat, color)")
-            body += light_calls
-        else:
-            body.append("        result = load3(mat, MAT_EMISSION)")
-        if shader.continues:
-            body.append("        return result, False, continue_%s(mat, r_d, surface_point[1]), n_shadow"
-                        % shader.name)
-        else:
-            body.append("        return result, True, r_d, n_shadow")
-        guard = "bounces is not None and " if shader.continues else ""
-        shade_lines.append("    if %sshader == %d:  # %s" % (guard, shader.id, shader.name))
-        shade_lines += body
+        elif shader.continues and not shader.brdf:
+            shade_lines.append("    if %s:  # %s" % (case(shader), shader.name))
+            shade_lines.append("        result = load3(mat, MAT_EMISSION)")
+            shade_lines.append("        return result, False, continue_%s(mat, r_d, surface_point[1]), n_shadow"
+                               % shader.name)
     shade_lines.append("    return color, True, r_d, n_shadow")
     parts.append("\n".join(shade_lines))
     return "\n\n\n".join(parts) + "\n"

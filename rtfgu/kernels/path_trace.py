@@ -2,8 +2,8 @@
 """PathTrace on the numba path: rtfgu.path_trace.trace_path, operation for operation, over the
 flat layout (the same random numbers, so the same paths as the lecture layer).
 
-rtfgu.kernels.render's ``trace_any`` calls it when ``bounces`` is the tuple (max_depth,), and
-the ray-cast loop otherwise, so a ray-cast scene compiles none of it.
+rtfgu.kernels.render's ``render_tile`` calls it when its ``path`` is the tuple (max_depth,),
+and the ray-cast loop otherwise, so a ray-cast scene compiles none of it.
 """
 from __future__ import annotations
 

@@ -13,10 +13,16 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
               environment None without an EnvironmentLight (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
-    bounces   None when no shader continues a path: that code then compiles to nothing;
-              (max_depth,) for PathTrace (rtfgu.kernels.path_trace)
+    tracer    (cast, path), exactly one of them None: ``cast`` the ray-cast loop's
+              (bounces,), bounces None when no shader continues a path (that code then
+              compiles to nothing), else MAX_DEPTH; ``path`` PathTrace's (max_depth,)
+              (rtfgu.kernels.path_trace)
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
+
+render_tile takes ``cast`` and ``path`` as arguments of their own: numba removes a branch on
+``argument is not None`` before it types a function whose argument is None, so render_tile
+compiles only the scene's tracer, inlined, and types it once.
 
 ``image`` holds each pixel's sum of samples: a render adds samples first <= s < end to
 it, in order, so passes that split the samples sum to the same bits as one render.
@@ -56,9 +62,11 @@ SECONDARY = 2
 RECORD_FIELDS = 16
 
 
-def shape_arrays(flat) -> tuple:
+def shape_arrays(flat, empty: bool = False) -> tuple:
     """The kernels' ``shapes``: table, index per row kind, the FlatMesh's arrays and the BVH
-    (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks."""
+    (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks.
+    With ``empty``, a row kind the scene lacks is its empty table and index instead (a mesh
+    kind stays None: a BVH has at least one node)."""
     shapes = ()
     for kind in SHAPES:
         if kind.bvh:
@@ -66,7 +74,7 @@ def shape_arrays(flat) -> tuple:
             shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links)
                        if mesh is not None else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
-            shapes += (None, None)
+            shapes += (flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)
         elif kind.name == "sphere" and flat.mesh is not None and flat.mesh.spheres:
             # The BVH holds the spheres: no loop of their own (scan and any_hit are absent
             # without an index), their table kept for the BVH, their normals and (u, v).
@@ -188,44 +196,22 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     return result, n_shadow, n_secondary
 
 
-def trace_any(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, pixel,
-              sample):
-    """The scene's tracer, typed on ``bounces`` by the overload below: PathTrace
-    (rtfgu.kernels.path_trace) when it is (max_depth,), the ray-cast ``trace`` otherwise.
-    Returns (radiance, shadow rays, secondary rays)."""
-    return as_python(_typed_trace_any, ray, shapes, lights, scene, terms, candidates, n_candidates,
-                     settings, bounces, pixel, sample)
-
-
-@overload(trace_any, inline="always")
-def _typed_trace_any(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces,
-                     pixel, sample):
-    if isinstance(bounces, types.BaseTuple):
-        def path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, pixel,
-                 sample):
-            return trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
-                              bounces[0], pixel, sample)
-        return path
-
-    def cast(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, pixel,
-             sample):
-        return trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces)
-    return cast
-
-
 @njit(cache=True, error_model="numpy", _nrt=False)
-def render_tile(tile, camera, shapes, lights, scene, terms, candidates, n_candidates,
-                settings, bounces, sampler, image):
+def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, sampler,
+                image):
     """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
-    y1, width, height)) to the image (the
-    lecture's render loop, rtfgu.renderer.render_reference): (primary, shadow, secondary)
-    rays cast. ``candidates[:n_candidates]`` are the from-eye kind's rows the tile's primary
-    rays can hit, with their per-frame ``terms`` (None and -1 without a pinhole eye).
+    y1, width, height)) to the image (the lecture's render loop,
+    rtfgu.renderer.render_reference), each traced by the ray-cast ``trace`` (``cast``) or
+    by PathTrace (``path``): (primary, shadow, secondary) rays cast. ``eye_rows`` is (terms,
+    candidates, n_candidates): ``candidates[:n_candidates]`` are the from-eye kind's rows
+    the tile's primary rays can hit, with their per-frame ``terms`` (None and -1 without a
+    pinhole eye).
 
     Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
     cost an atomic increment and decrement each per pixel, twice the time of the pixel."""
     x0, x1, y0, y1, width, height = tile
+    terms, candidates, n_candidates = eye_rows
     camera_kind, camera_row = camera[0], camera[1]
     show_ray_direction, seed, first, end = settings[1], settings[3], settings[4], settings[5]
     n_shadow = 0
@@ -251,9 +237,15 @@ def render_tile(tile, camera, shapes, lights, scene, terms, candidates, n_candid
                     half = lit(0.5, one)
                     color = add(scale(ray[1], half), (half, half, half))
                 else:
-                    color, shadow_rays, secondary_rays = trace_any(ray, shapes, lights, scene, terms,
+                    # Exactly one of these stays in a compiled kernel (the module docstring).
+                    if cast is not None:
+                        color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
                                                                    candidates, n_candidates, settings,
-                                                                   bounces, pixel, s)
+                                                                   cast[0])
+                    if path is not None:
+                        color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
+                                                                        terms, candidates, n_candidates,
+                                                                        settings, path[0], pixel, s)
                     n_shadow += shadow_rays
                     n_secondary += secondary_rays
                 total = add(total, color)
@@ -264,7 +256,7 @@ def render_tile(tile, camera, shapes, lights, scene, terms, candidates, n_candid
 
 
 @njit(parallel=True, cache=True, error_model="numpy")
-def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, sampler, tile_stride,
+def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sampler, tile_stride,
                   image, counts):
     """Add the samples settings[4] <= s < settings[5] of every pixel to ``image`` (height,
     width, 3), row 0 at the top, and fill ``counts`` (tiles, 3); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
@@ -276,6 +268,7 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, s
     n_tiles = tiles_x * tiles_y
     candidates = np.empty((n_tiles, from_eye_rows(eye)), dtype=np.int64)
     terms = eye_terms(eye)
+    cast, path = tracer
     for k in prange(n_tiles):
         # prange hands each thread a contiguous block of k; the stride (coprime with
         # n_tiles) spreads every block over the whole image, so the threads share the work.
@@ -284,9 +277,9 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, bounces, s
         y0 = (tile // tiles_x) * TILE
         box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
-        n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene, terms,
-                                                       candidates[tile], n_candidates, settings,
-                                                       bounces, sampler, image)
+        n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene,
+                                                       (terms, candidates[tile], n_candidates),
+                                                       settings, cast, path, sampler, image)
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
