@@ -1,7 +1,7 @@
 """``make bench``: speed and error of every rendering path on a few scenes, against the
 lecture layer; prints a table, writes docs/bench.md and the plot docs/bench_speed_error.png.
 Its last sections come from benchmarks/sampling.py (the samplers' error against render
-time), benchmarks/meshes.py (the numba BVH over meshes against Embree and Mitsuba 3) and
+time), benchmarks/meshes.py (the numba and WGSL BVH over meshes against Embree and Mitsuba 3) and
 benchmarks/path_tracing.py (the path tracer's time to an RMSE of 1/255 against Mitsuba 3).
 A script, not a test: nothing is asserted.
 

@@ -1,4 +1,5 @@
-"""The mesh section of docs/bench.md: rtfgu's numba BVH over triangle meshes against Embree
+"""The mesh section of docs/bench.md: rtfgu's BVH over triangle meshes, on the numba path and
+on the WGSL path (on wgpu's adapter: Mesa's llvmpipe where there is no GPU), against Embree
 (through embreex) and Mitsuba 3, on the same meshes and the same rays, in one run; and
 Mitsuba 3 on the 64 spheres of the first table. Writes the plot docs/bench_meshes.png.
 
@@ -8,7 +9,9 @@ Mitsuba 3 on the 64 spheres of the first table. Writes the plot docs/bench_meshe
 
 measures this section only and replaces it in docs/bench.md (the text between START and END;
 appended when the file has none). A script, not a test: nothing is asserted, and a peer that
-cannot be installed or run is named in the section with the reason instead of a figure.
+cannot be installed or run is named in the section with the reason instead of a figure
+(so is the WGSL path where wgpu has no adapter, or where a mesh's buffers exceed the
+adapter's storage binding size).
 
 Meshes (MESHES): an icosphere subdivided ICOSPHERE_SUBDIVISIONS times (1.3 M triangles) whose
 vertices are moved along their radius by a smooth, seeded noise (displaced_icosphere), and
@@ -16,13 +19,22 @@ the Stanford bunny shipped with rtfgu. Rays, per mesh (RAY_SETS), float64 and se
 PRIMARY x PRIMARY primary rays of a pinhole camera whose square view the mesh fills, and
 INCOHERENT rays from points uniform in the mesh's bounding box in directions uniform on the
 sphere. Every ray is a unit direction, so t is a distance; tmin = 0, tmax = inf; closest hit.
-The float32 paths (rtfgu float32, Embree, Mitsuba) get the same rays rounded to float32 and
-the vertices rounded to float32; rtfgu float64 gets the float64 ones.
+The float32 paths (rtfgu float32, rtfgu WGSL, Embree, Mitsuba) get the same rays rounded to
+float32 and the vertices rounded to float32; rtfgu float64 gets the float64 ones.
 
 The paths (``System.paths``):
   rtfgu numba    rtfgu.accelerators.flat_bvh.build over the faces' boxes, the faces permuted
                  into leaf order, and rtfgu.kernels.mesh.mesh_closest called per ray by a
                  prange kernel (closest_hits); float64 and float32 on the one node table.
+  rtfgu WGSL     the same build's node table, faces and float32 vertices in storage buffers
+                 and rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest (the render's traversal)
+                 called per ray by a small entry point (WGSL_MAIN), assembled and compiled
+                 by rtfgu/wgsl/harness.py (batch_program, compile_batch) on the render's
+                 device (rtfgu.wgsl.device: a GPU when there is one, else llvmpipe); the rays
+                 go in dispatches of at most WGSL_BATCH (and what one storage binding holds),
+                 one submit each, into one result buffer read back at the end. The row's
+                 note names the adapter; its threads are "-" (the adapter's own). WGSL_RAYS,
+                 when set, limits it to the first rays of a set.
   Embree         embreex.rtcore_scene.EmbreeScene (robust=True) with one
                  embreex.mesh_construction.TriangleMesh; ``scene.run(origins, directions,
                  output=1)`` traces its rays one by one (rtcIntersect1) without the GIL, so
@@ -37,12 +49,15 @@ The paths (``System.paths``):
 Timing: every path is run once first (the warm-up: numba and Dr.Jit compile then), then RUNS
 rounds time each path once (round-robin, so a change in the machine's load hits all alike);
 the median is quoted. A time covers tracing the rays and returning t and the face: not making
-the rays, nor turning them into Dr.Jit arrays for Mitsuba (done once, before the timing).
-Build: from the vertex and face arrays to a structure ready to trace, median of BUILD_RUNS
-after a warm-up build; rtfgu: triangle_bounds + flat_bvh.build + the permuted faces; Embree:
-a new scene, TriangleMesh and the commit (done by the first ``run``, of one ray); Mitsuba:
-mi.Mesh, its buffers and mi.load_dict. Bytes per triangle: rtfgu's node table + the (F, 4)
-int32 faces + the vertices, over the triangles; the peers do not say what they keep.
+the rays, nor turning them into Dr.Jit arrays for Mitsuba, nor uploading them for WGSL (done
+once, before the timing; WGSL's timed part is its dispatches and the readback of the
+results, and its pipeline is compiled before anything is timed). Build: from the vertex and
+face arrays to a structure ready to trace, median of BUILD_RUNS after a warm-up build; rtfgu:
+triangle_bounds + flat_bvh.build + the permuted faces (WGSL: and their upload to the
+adapter); Embree: a new scene, TriangleMesh and the commit (done by the first ``run``, of one
+ray); Mitsuba: mi.Mesh, its buffers and mi.load_dict. Bytes per triangle: rtfgu's node table
++ the (F, 4) int32 faces + the vertices, over the triangles; the peers do not say what they
+keep.
 
 Error against Embree (reported, not asserted): the share of rays that one path hits and the
 other misses; of rays both hit, the share hitting another face, and of those the share whose
@@ -83,6 +98,7 @@ from rtfgu.accelerators import flat_bvh  # noqa: E402
 from rtfgu.kernels.camera import gen_ray  # noqa: E402
 from rtfgu.kernels.float3 import lit  # noqa: E402
 from rtfgu.kernels.mesh import mesh_closest  # noqa: E402
+from rtfgu.layout import MESH  # noqa: E402
 
 from bench import cpu_model, replace_section  # noqa: E402
 
@@ -98,6 +114,8 @@ BUILD_RUNS = 3
 TOL = 1e-4
 EMBREE_CHUNKS = 64
 SCALAR_RAYS = 1 << 16
+WGSL_BATCH = 1 << 16  # rays per dispatch of the WGSL path (fewer if the adapter's limits say so)
+WGSL_RAYS = None      # the WGSL path traces only this many first rays of a set (None: all)
 SPHERE_SIZE, QUICK_SPHERE_SIZE = 1024, 128
 
 
@@ -221,6 +239,7 @@ class Path_:
     prepare: Callable = None
     result: Callable = None
     note: str = ""
+    device: str = ""  # the adapter a GPU path runs on (its threads are then 0: not a count)
 
     @property
     def label(self) -> str:
@@ -254,8 +273,9 @@ def closest_hits(vertices, faces4, nodes, links, origins, directions, t_out, fac
         origin = (origins[i, 0], origins[i, 1], origins[i, 2])
         direction = (directions[i, 0], directions[i, 1], directions[i, 2])
         tmin = lit(0, origins[i, 0])
-        hit = mesh_closest(vertices, faces4, nodes, links, 0, origin, direction, tmin,
-                           (lit(math.inf, tmin), -1, -1, -1))
+        # no spheres in the BVH (None), the faces' kind MESH, formula 0 (used by spheres only)
+        hit = mesh_closest(vertices, faces4, nodes, links, None, MESH, origin, direction, tmin,
+                           (lit(math.inf, tmin), -1, -1, -1), 0)
         t_out[i] = hit[0]
         face_out[i] = hit[1]
 
@@ -450,6 +470,188 @@ class Mitsuba(System):
                       note="scalar_rgb from Python, on at most the first %d rays" % SCALAR_RAYS)]
 
 
+# The entry point of the WGSL path's program (rtfgu/wgsl/harness.py's conventions: inputs at
+# bindings 0 .. 3, the result at 4, ``main`` with @workgroup_size(64)): one invocation per
+# ray, through intersect_mesh.wgsl's mesh_closest with no feature on (flat faces, no spheres
+# in the BVH), as intersect_scene calls it for a scene of one mesh. Rays: [o, tmin],
+# [w, tmax] per ray; result: [t (-1 on a miss), bitcast face (-1), 0, 0] per ray.
+WGSL_MAIN = """\
+@group(0) @binding(0) var<storage, read> mesh_vertices: array<f32>;
+@group(0) @binding(1) var<storage, read> mesh_faces: array<vec4i>;
+@group(0) @binding(2) var<storage, read> bvh_nodes: array<BVHNode>;
+@group(0) @binding(3) var<storage, read> rays: array<vec4f>;
+@group(0) @binding(4) var<storage, read_write> result: array<vec4f>;
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) gid: vec3u)
+{
+    let i = gid.x;
+    if (i >= arrayLength(&result)) {
+        return;
+    }
+    let a = rays[2u * i];
+    let b = rays[2u * i + 1u];
+    var r = Ray(a.xyz, b.xyz, a.w, b.w);
+    var hit = empty_hit();
+    var shape = -1;
+    var kind = -1;
+    var row = 0u;
+    let found = mesh_closest(&r, &hit, &shape, &kind, &row);
+    result[i] = vec4f(select(-1.0, hit.dist, found), bitcast<f32>(select(-1, shape, found)), 0.0, 0.0);
+}
+"""
+
+
+def wgsl_next_up() -> str:
+    """intersect_scene.wgsl's next_up (mesh_closest calls it), cut from that file: the rest
+    of it needs the scene's tables."""
+    import re
+
+    from rtfgu.wgsl.assemble import read_piece
+    m = re.search(r"^fn next_up\(.*?^\}\n", read_piece("intersect_scene.wgsl"), re.M | re.S)
+    if m is None:
+        raise RuntimeError("no fn next_up in rtfgu/wgsl/intersect_scene.wgsl")
+    return m.group(0)
+
+
+class Wgsl(System):
+    """rtfgu's WGSL BVH traversal (intersect_mesh.wgsl, the render's) through the batch
+    harness on wgpu's adapter: the pipeline is compiled once (here), ``build`` makes the
+    node table as ``Rtfgu`` does and uploads the vertices (float32), faces and nodes;
+    ``prepare`` uploads the rays and makes one bind group per dispatch of at most WGSL_BATCH
+    rays (and no more than a storage binding holds); a timed run is the dispatches and the
+    readback of t and the face."""
+    name = "rtfgu WGSL"
+
+    def __init__(self, threads):
+        from rtfgu.wgsl.device import adapter_description, get_device
+        from rtfgu.wgsl.harness import batch_program, compile_batch
+
+        self.adapter, self.device = get_device()  # NoAdapterError: the section names why
+        self.adapter_name = adapter_description()
+        info = self.adapter.info
+        self.device_name = info.get("device", "?").split(" (")[0]
+        self.limits = self.device.limits
+        self.max_binding = int(self.limits["max-storage-buffer-binding-size"])
+        self.max_groups = int(self.limits["max-compute-workgroups-per-dimension"])
+        self.alignment = int(self.limits["min-storage-buffer-offset-alignment"])
+        start = time.perf_counter()
+        program = batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl",
+                                 "intersect_mesh.wgsl", "mesh_bench_main.wgsl"],
+                                overrides={"next_up.wgsl": wgsl_next_up(),
+                                           "mesh_bench_main.wgsl": WGSL_MAIN})
+        self.batch = compile_batch(program)
+        self.layout, self.pipeline = self.batch.pipeline(4)
+        self.compile_seconds = time.perf_counter() - start
+        self.threads = 0  # not a thread count: the adapter's
+        self.about = ("rtfgu's WGSL path (rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest through "
+                      "rtfgu/wgsl/harness.py) with wgpu %s on %s (pipeline compile %.2g s)"
+                      % (version("wgpu"), self.adapter_name, self.compile_seconds))
+        self.upload_seconds, self.buffers, self.mesh = [], None, None
+
+    def build(self, mesh):
+        import wgpu
+
+        if self.mesh is not mesh:
+            self.mesh, self.upload_seconds = mesh, []
+        self.buffers = None  # the previous mesh's buffers are released first
+        start = time.perf_counter()
+        lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+        bvh = flat_bvh.build(lo, hi)
+        faces4 = np.empty((len(mesh.faces), 4), dtype=np.int32)
+        faces4[:, :3] = mesh.faces[bvh.order]
+        faces4[:, 3] = bvh.order
+        vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float32)
+        arrays = (vertices, faces4, bvh.nodes)
+        self.nbytes = sum(a.nbytes for a in arrays)
+        too_big = [(name, a.nbytes) for name, a in zip(("vertices", "faces", "BVH nodes"), arrays)
+                   if a.nbytes > self.max_binding]
+        if too_big:
+            raise RuntimeError("over the max storage buffer binding size of %s (%d bytes): "
+                               "%s" % (self.adapter_name, self.max_binding,
+                                       ", ".join("%s %d bytes" % kv for kv in too_big)))
+        upload = time.perf_counter()
+        buffers = []
+        for a in arrays:
+            raw = a.tobytes()
+            raw += bytes(-len(raw) % 16 if raw else 16)  # whole vec4s, as the harness pads
+            buffers.append(self.device.create_buffer_with_data(
+                data=raw, usage=wgpu.BufferUsage.STORAGE | wgpu.BufferUsage.COPY_SRC))
+        # create_buffer_with_data has copied the data when it returns; a tiny round trip
+        # through the queue makes sure the upload is done before the clock stops.
+        self.device.queue.read_buffer(buffers[-1], 0, 16)
+        end = time.perf_counter()
+        self.upload_seconds.append(end - upload)
+        self.buffers, self.bvh = buffers, bvh
+        return end - start
+
+    def prepare(self, rays):
+        import wgpu
+
+        from rtfgu.layout import FAR
+        origins, directions = rays.of("float32")
+        n = len(origins) if WGSL_RAYS is None else min(len(origins), WGSL_RAYS)
+        data = np.zeros((n, 2, 4), dtype=np.float32)
+        data[:, 0, :3], data[:, 1, :3] = origins[:n], directions[:n]
+        data[:, 1, 3] = FAR  # tmin 0, tmax "infinity" as the render passes it
+        # Rays per dispatch: WGSL_BATCH at most, within one binding and one dispatch's
+        # workgroups, and a multiple of what keeps every binding's offset aligned.
+        step = math.lcm(64, self.alignment // math.gcd(self.alignment, 16))
+        batch = min(WGSL_BATCH, self.max_binding // 32, self.max_groups * 64) // step * step
+        usage = wgpu.BufferUsage
+        ray_buffer = self.device.create_buffer_with_data(data=data.tobytes(), usage=usage.STORAGE)
+        output = self.device.create_buffer(size=16 * n, usage=usage.STORAGE | usage.COPY_SRC)
+        groups = []
+        for a in range(0, n, batch):
+            b = min(n, a + batch)
+            groups.append((self.device.create_bind_group(layout=self.layout, entries=[
+                *({"binding": k, "resource": {"buffer": buffer, "offset": 0,
+                                              "size": buffer.size}}
+                  for k, buffer in enumerate(self.buffers)),
+                {"binding": 3, "resource": {"buffer": ray_buffer, "offset": 32 * a,
+                                            "size": 32 * (b - a)}},
+                {"binding": 4, "resource": {"buffer": output, "offset": 16 * a,
+                                            "size": 16 * (b - a)}}]), b - a))
+        return ray_buffer, output, groups
+
+    def run(self, prepared):
+        _, output, groups = prepared
+        for group, count in groups:  # one submit per dispatch, as the render's tiles
+            encoder = self.device.create_command_encoder()
+            compute = encoder.begin_compute_pass()
+            compute.set_pipeline(self.pipeline)
+            compute.set_bind_group(0, group)
+            compute.dispatch_workgroups(-(-count // 64), 1, 1)
+            compute.end()
+            self.device.queue.submit([encoder.finish()])
+        return np.frombuffer(self.device.queue.read_buffer(output), dtype=np.float32)
+
+    @staticmethod
+    def result(raw):
+        out = raw.reshape(-1, 4)
+        face = out[:, 1].view(np.int32).astype(np.int64)
+        t = out[:, 0].copy()
+        t[face < 0] = np.inf
+        return t, face
+
+    def paths(self):
+        note = self.adapter_name
+        if WGSL_RAYS is not None:
+            note += "; on at most the first %d rays" % WGSL_RAYS
+        return [Path_(self.name, "float32", self.threads, self.run, self.prepare, self.result,
+                      note=note, device=self.device_name)]
+
+    def bytes_per_triangle(self):
+        return {"float32": self.nbytes / len(self.mesh.faces)}
+
+    def build_note(self):
+        return "rtfgu numba's flat_bvh.build, uploaded to %s: upload %.3g s " \
+               "(median), %.1f MB" % (self.device_name,
+                                      statistics.median(self.upload_seconds[1:]
+                                                        or self.upload_seconds),
+                                      self.nbytes / 1e6)
+
+
 # ---- measuring --------------------------------------------------------------------------
 
 @dataclass
@@ -529,7 +731,7 @@ def round_robin(measured, prepared, runs, log, what):
 def bench_mesh(mesh, systems, ray_sets, runs, build_runs, log):
     """(build rows, trace rows) of one mesh: every system built, then every path timed on
     every ray set."""
-    builds, measured, built = [], [], []
+    builds, measured, built, unbuilt = [], [], [], []
     for system in systems:
         row = Built(mesh.name, len(mesh.faces), system.name)
         try:
@@ -539,9 +741,14 @@ def bench_mesh(mesh, systems, ray_sets, runs, build_runs, log):
         except Exception as error:
             row.failed = str(error).splitlines()[0] if str(error) else repr(error)
             log("  %s: build failed: %s" % (system.name, row.failed))
+            unbuilt.append(row)
         builds.append(row)
     for rays in ray_sets:
-        rows, prepared = [], {}
+        # a system that could not build (the WGSL path on a mesh over the adapter's limits)
+        # is named on every ray set with the reason
+        rows = [Measured(mesh.name, len(mesh.faces), rays.name, Path_(b.system, "float32", 0, None),
+                         failed="build failed: %s" % b.failed) for b in unbuilt]
+        prepared = {}
         for system in built:
             for path in system.paths():
                 m = Measured(mesh.name, len(mesh.faces), rays.name, path)
@@ -701,8 +908,8 @@ def trace_table(measured) -> list:
             continue
         base = embree.get((m.mesh, m.rays)) or embree1.get((m.mesh, m.rays))
         e = m.error or {}
-        lines.append("| %s | %s | %s | %s | %d | %s | %s | %s | %s | %s | %s | %s | %s |" % (
-            m.mesh, m.rays, p.system, p.precision, p.threads, fmt_rate(m.rate),
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+            m.mesh, m.rays, p.system, p.precision, p.threads or "-", fmt_rate(m.rate),
             "%.2f" % (m.rate / base) if base else "-", fmt_share(e.get("hit_miss")),
             fmt_share(e.get("other_face")), fmt_share(e.get("other_far")),
             fmt_rel(e.get("rel_same")), fmt_rel(e.get("rel_both")),
@@ -743,18 +950,19 @@ def plot(measured, title, path):
     import matplotlib.pyplot as plt
     import matplotlib.ticker
 
+    def label_of(p):
+        return "%s %s, %s" % (p.system, p.precision,
+                              p.device if p.device else "%d thr." % p.threads)
+
     groups = list(dict.fromkeys((m.mesh, m.rays) for m in measured))
-    labels = list(dict.fromkeys("%s %s, %d thr." % (m.path.system, m.path.precision,
-                                                   m.path.threads)
-                                for m in measured if not m.failed))
+    labels = list(dict.fromkeys(label_of(m.path) for m in measured if not m.failed))
     fig, ax = plt.subplots(figsize=(9, 4.2))
     width = 0.8 / max(1, len(labels))
     for j, label in enumerate(labels):
         xs, ys = [], []
         for i, g in enumerate(groups):
             for m in measured:
-                if (m.mesh, m.rays) == g and not m.failed and label == "%s %s, %d thr." % (
-                        m.path.system, m.path.precision, m.path.threads):
+                if (m.mesh, m.rays) == g and not m.failed and label == label_of(m.path):
                     xs.append(i + (j - (len(labels) - 1) / 2) * width)
                     ys.append(m.rate / 1e6)
         ax.bar(xs, ys, width, label=label, color=plt.get_cmap("tab10")(j))
@@ -767,7 +975,8 @@ def plot(measured, title, path):
     ax.set_ylabel("million rays/s (closest hit; median)")
     ax.grid(True, axis="y", which="both", alpha=0.3)
     ax.legend(fontsize=7, ncol=2)
-    ax.set_title("rtfgu's numba BVH, Embree and Mitsuba 3 on %s" % title, fontsize=9)
+    ax.set_title("rtfgu's BVH (numba; WGSL on the adapter), Embree and Mitsuba 3 on %s" % title,
+                 fontsize=9)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -786,14 +995,18 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     sphere_size = QUICK_SPHERE_SIZE if quick else SPHERE_SIZE
 
     systems, missing = [Rtfgu(threads)], {}
-    for cls, package in ((Embree, "embreex"), (Mitsuba, "mitsuba")):
+    bench_extra = " (`make bench` installs the bench extra)"
+    # the WGSL path's reason (rtfgu.wgsl.device.NoAdapterError) names what to install
+    for cls, package, hint in ((Wgsl, "wgpu", ""), (Embree, "embreex", bench_extra),
+                               (Mitsuba, "mitsuba", bench_extra)):
         try:
             systems.append(cls(threads))
         except Exception as error:  # the section says which peer did not run, and why
-            missing[cls.name] = "%s: %s (`make bench` installs the bench extra)" % (
-                package, str(error).splitlines()[0] if str(error) else repr(error))
+            missing[cls.name] = "%s: %s%s" % (
+                package, str(error).splitlines()[0] if str(error) else repr(error), hint)
             log("%s: not run: %s" % (cls.name, missing[cls.name]))
     mitsuba = next((s for s in systems if isinstance(s, Mitsuba)), None)
+    wgsl = next((s for s in systems if isinstance(s, Wgsl)), None)
 
     meshes = [displaced_icosphere(QUICK_SUBDIVISIONS if quick else ICOSPHERE_SUBDIVISIONS),
               bunny()]
@@ -828,8 +1041,16 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     for m in measured:
         if m.path.system == Rtfgu.name and not m.failed:
             first_calls.setdefault(m.path.precision, m.first_call)
-    peers = [s.about for s in systems if s.about] + [
-        "%s not run (%s)" % kv for kv in missing.items()]
+    peers = [s.about for s in systems if s.about and not isinstance(s, Wgsl)] + [
+        "%s not run (%s)" % kv for kv in missing.items() if kv[0] != Wgsl.name]
+    if wgsl is not None:
+        wgsl_line = ("%s; float32; the rays in dispatches of at most %d, one submit each; "
+                     "the mesh's buffers (vertices, faces, nodes) must each fit one storage "
+                     "binding (%.4g MiB on this adapter)%s" % (
+                         wgsl.about, WGSL_BATCH, wgsl.max_binding / 2 ** 20,
+                         "; only the first %d rays of a set" % WGSL_RAYS if WGSL_RAYS else ""))
+    else:
+        wgsl_line = "not run (%s)" % missing.get(Wgsl.name)
     lines = [
         START,
         "## Meshes and the BVH",
@@ -843,14 +1064,18 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
         "of a pinhole camera whose square view the mesh fills; %d incoherent rays (origins "
         "uniform in the mesh's bounding box, directions uniform on the sphere). float32 paths "
         "get the rays and vertices rounded to float32." % (primary, primary, incoherent),
+        "- rtfgu WGSL: %s." % wgsl_line,
         "- Peers: %s." % "; ".join(peers),
         "- Time: median of %d round(s) after a warm-up run of every path (so numba's and "
-        "Dr.Jit's compile is excluded; rtfgu's first calls, compile included: %s); a round "
-        "times every path once (round-robin). Timed: tracing and returning t and the face, "
-        "not making the rays. Build: median of %d after a warm-up build, from the arrays to "
-        "a structure ready to trace (Embree: scene, TriangleMesh, commit; Mitsuba: mi.Mesh "
-        "and mi.load_dict)." % (runs, ", ".join("%s %.1f s" % kv for kv in first_calls.items())
-                                or "-", build_runs),
+        "Dr.Jit's compile, and the adapter's first dispatch, are excluded; rtfgu numba's "
+        "first calls, compile included: %s); a round times every path once (round-robin). "
+        "Timed: tracing and returning t and the face, not making the rays (WGSL: the "
+        "dispatches and the readback of the results, not the upload of the rays). Build: "
+        "median of %d after a warm-up build, from the arrays to a structure ready to trace "
+        "(rtfgu WGSL: rtfgu numba's build and the upload of its arrays; Embree: scene, "
+        "TriangleMesh, commit; Mitsuba: mi.Mesh and mi.load_dict)." % (
+            runs, ", ".join("%s %.1f s" % kv for kv in first_calls.items()) or "-",
+            build_runs),
         "- Error against Embree (float32, the multi-threaded row), reported, not asserted: "
         "rays one path hits and the other misses (share of all rays); rays both hit on "
         "another face (share of rays both hit), and of those the ones whose t differs by "
@@ -874,7 +1099,8 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
         *build_table(builds),
         "",
         "rtfgu's bytes per triangle: the BVH's nodes (32 bytes each) + the faces (16 bytes) + "
-        "the vertices in that precision, over the triangles.",
+        "the vertices in that precision, over the triangles (WGSL: what is uploaded, the "
+        "float32 arrays).",
         "",
         "### The 64 spheres",
         "",
