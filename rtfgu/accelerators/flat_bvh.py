@@ -1,10 +1,15 @@
 """The BVH of the numba and WGSL paths: the binned SAH build of rtfgu.accelerators.bvh over
 arrays, into a flat node table that both paths traverse.
 
-The build is the lecture BVH's (BINS bins, LEAF_SIZE, the same cost), over the primitives'
+The build is the lecture BVH's (BINS bins, LEAF_SIZE, C_INTERSECT) over the primitives'
 boxes as arrays, with numba when it is installed (the build of a 1.3-million-triangle mesh
-takes about a second; docs/bvh.md has the figures) and as plain Python otherwise. The tree it
-returns is a table of 32-byte nodes, children of a node next to each other:
+takes under a second; docs/bvh.md has the figures) and as plain Python otherwise. It has one
+constant of its own: a step down the tree costs C_TRAVERSE = 2 shape tests, where the
+lecture's costs 1. Leaves then hold two shapes or more where they can (the lecture's tree
+splits down to single shapes, so a student sees every step and ties meet across leaves):
+0.7 nodes per triangle instead of 1.16, at the same speed on the numba path (docs/bvh.md,
+"Cost constants"). The tree it returns is a table of 32-byte nodes, children of a node next
+to each other:
 
     nodes  (N, 8) float32   [lo.x, lo.y, lo.z, a, hi.x, hi.y, hi.z, b]
                             a, b are int32 bit patterns (nodes.view(np.int32)[:, 3], [:, 7]):
@@ -23,7 +28,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bvh import BINS, C_INTERSECT, C_TRAVERSE, LEAF_SIZE
+from .bvh import BINS, C_INTERSECT, LEAF_SIZE
 
 try:
     from numba import njit
@@ -36,6 +41,8 @@ NODE_WIDTH = 8
 # primitives split evenly is 31 deep; an uneven SAH tree is deeper, so the build refuses a
 # tree deeper than this (it never happens on a mesh whose boxes are not degenerate).
 MAX_DEPTH = 64
+# The cost of a step down the tree, in shape tests (module docstring).
+C_TRAVERSE = 2.0
 
 
 @dataclass

@@ -14,7 +14,8 @@ The mesh arrives as (rtfgu.layout.compile_scene):
 A face is hit where rtfgu.robust.intersect_triangle_watertight hits it (Woop, Benthin and
 Wald 2013): two faces that share an edge compute its edge function from the same two
 vertices, so a ray through the edge hits one of them, in float32 too. The ray's shear
-(the permutation kx, ky, kz and Sx, Sy, Sz) is computed once per ray, not once per face.
+(the permutation kx, ky, kz and Sx, Sy, Sz) and the origin on its axes are computed once per
+ray (ray_frame), not once per face.
 Its normal and (u, v) are those of SmoothMeshTriangle / FlatMeshTriangle (rtfgu.shapes.mesh).
 
 The traversal (rtfgu.accelerators.bvh.BVH.intersect): the nearer child first, a stack of the
@@ -62,28 +63,30 @@ def _stack_pointer(typingctx, dtype):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _vertex(vertices, i, origin):
-    return (vertices[i, 0] - origin[0], vertices[i, 1] - origin[1], vertices[i, 2] - origin[2])
+def ray_frame(origin, direction):
+    """What every face test of a ray shares: its shear (ray_shear) and its origin's
+    coordinates on the shear's axes kx, ky, kz (so a face reads only the vertex coordinates
+    it uses: vertices[i, k] - origin[k] is A[k] of the watertight test, the same number)."""
+    shear = ray_shear(direction)
+    return shear, (_pick(origin, shear[0]), _pick(origin, shear[1]), _pick(origin, shear[2]))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def intersect_face(vertices, faces, f, origin, shear, tmin, tmax):
+def intersect_face(vertices, faces, f, frame, tmin, tmax):
     """t of face ``f`` in [tmin, tmax), else inf: rtfgu.robust.intersect_triangle_watertight
-    with the ray's ``shear`` (ray_shear). A mesh has no zero-area face (Mesh refuses one)."""
-    kx, ky, kz, Sx, Sy, Sz = shear
+    with the ray's ``frame`` (ray_frame). A mesh has no zero-area face (Mesh refuses one)."""
+    (kx, ky, kz, Sx, Sy, Sz), (okx, oky, okz) = frame
     zero = lit(0, tmin)
-    A = _vertex(vertices, faces[f, 0], origin)
-    B = _vertex(vertices, faces[f, 1], origin)
-    C = _vertex(vertices, faces[f, 2], origin)
-    Az = _pick(A, kz)
-    Bz = _pick(B, kz)
-    Cz = _pick(C, kz)
-    ax = _pick(A, kx) - Sx * Az
-    ay = _pick(A, ky) - Sy * Az
-    bx = _pick(B, kx) - Sx * Bz
-    by = _pick(B, ky) - Sy * Bz
-    cx = _pick(C, kx) - Sx * Cz
-    cy = _pick(C, ky) - Sy * Cz
+    i0, i1, i2 = faces[f, 0], faces[f, 1], faces[f, 2]
+    Az = vertices[i0, kz] - okz
+    Bz = vertices[i1, kz] - okz
+    Cz = vertices[i2, kz] - okz
+    ax = (vertices[i0, kx] - okx) - Sx * Az
+    ay = (vertices[i0, ky] - oky) - Sy * Az
+    bx = (vertices[i1, kx] - okx) - Sx * Bz
+    by = (vertices[i1, ky] - oky) - Sy * Bz
+    cx = (vertices[i2, kx] - okx) - Sx * Cz
+    cy = (vertices[i2, ky] - oky) - Sy * Cz
     U = cx * by - cy * bx
     V = ax * cy - ay * cx
     W = bx * ay - by * ax
@@ -127,18 +130,17 @@ def _typed_sphere_prim(spheres, row, origin, direction, tmin, tmax, formula):
 @njit(cache=True, error_model="numpy", inline="always")
 def box_entry(nodes, n, origin, inv, tmin, tmax):
     """BBox.hit for node ``n``: the t at which the ray enters its box within [tmin, tmax],
-    or inf. ``inv`` = 1 / direction (inf for a zero component); a NaN from 0 * inf (the
-    origin on a face of the slab the ray runs in) fails every comparison, so it narrows
-    nothing."""
+    or inf. ``inv`` = (1 / direction (inf for a zero component), the column offsets of each
+    axis's near and far plane: 0 and 4, or 4 and 0 where the component is negative, so the
+    slab's near and far ends need no swap). A NaN from 0 * inf (the origin on a plane of a
+    slab the ray runs in) fails every comparison, so it narrows nothing."""
     widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    inv, (near_at, far_at) = inv
     t0 = tmin
     t1 = tmax
     for a in range(3):
-        near = (lit(nodes[n, a], tmin) - origin[a]) * inv[a]
-        far = (lit(nodes[n, 4 + a], tmin) - origin[a]) * inv[a]
-        if near > far:
-            near, far = far, near
-        far = far * widen
+        near = (lit(nodes[n, a + near_at[a]], tmin) - origin[a]) * inv[a]
+        far = (lit(nodes[n, a + far_at[a]], tmin) - origin[a]) * inv[a] * widen
         if near > t0:
             t0 = near
         if far < t1:
@@ -150,8 +152,12 @@ def box_entry(nodes, n, origin, inv, tmin, tmax):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def _inverse(direction):
+    """box_entry's ``inv``: 1 / direction and each axis's near and far plane columns."""
     one = lit(1, direction[0])
-    return (one / direction[0], one / direction[1], one / direction[2])
+    inv = (one / direction[0], one / direction[1], one / direction[2])
+    zero = lit(0, one)
+    near_at = (4 if inv[0] < zero else 0, 4 if inv[1] < zero else 0, 4 if inv[2] < zero else 0)
+    return inv, (near_at, (4 - near_at[0], 4 - near_at[1], 4 - near_at[2]))
 
 
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
@@ -164,7 +170,7 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
     sphere (SPHERE, its row in the sphere table)."""
     tmax, best, best_kind, best_row = hit
     inf = lit(math.inf, tmin)
-    shear = ray_shear(direction)
+    frame = ray_frame(origin, direction)
     inv = _inverse(direction)
     node_stack = _stack_pointer(np.int32)
     entry_stack = _stack_pointer(tmin)
@@ -183,7 +189,7 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
                     t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
                     k, r = SPHERE, faces[f, 1]
                 else:
-                    t = intersect_face(vertices, faces, f, origin, shear, tmin, limit)
+                    t = intersect_face(vertices, faces, f, frame, tmin, limit)
                     k, r = kind, f
                 if t < tmax or (t == tmax and idx < best):
                     tmax = t
@@ -221,7 +227,7 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
 def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula):
     """A shadow ray: is any face or sphere hit in [tmin, tmax)?"""
     inf = lit(math.inf, tmin)
-    shear = ray_shear(direction)
+    frame = ray_frame(origin, direction)
     inv = _inverse(direction)
     node_stack = _stack_pointer(np.int32)
     sp = 0
@@ -234,7 +240,7 @@ def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tm
                 if faces[f, 0] == SPHERE_ROW:
                     if sphere_prim(spheres, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
                         return True
-                elif intersect_face(vertices, faces, f, origin, shear, tmin, tmax) < tmax:
+                elif intersect_face(vertices, faces, f, frame, tmin, tmax) < tmax:
                     return True
             node = -1
         else:
