@@ -165,7 +165,8 @@ FAR = 1.0e30
 @dataclass
 class FlatMesh:
     """The scene's BVH and what it holds: every mesh triangle and, in a scene with a mesh or
-    with BVH_MIN_SPHERES spheres or more, every sphere. ``vertices`` (V, 3) in the scene's
+    with BVH_MIN_SPHERES spheres or more and rays other than a pinhole's primary ones, every
+    sphere. ``vertices`` (V, 3) in the scene's
     float type, each mesh's once; ``faces`` (F, 4) int32 in the BVH's leaf order, a face
     [i0, i1, i2, scene index] or a sphere [SPHERE_ROW, row in the sphere table, 0, scene
     index]; ``normals`` (V, 3) vertex normals (zero for a flat mesh's vertices) or None when
@@ -339,7 +340,11 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     shapes = {kind.name: (table(rows[kind.name][0], kind.record),
                           np.array(rows[kind.name][1], dtype=np.int32)) for kind in ROW_SHAPES}
     spheres = shapes["sphere"]
-    bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or len(spheres[0]) >= BVH_MIN_SPHERES)
+    # Only primary rays from a pinhole: the per-tile culling finds a tile's spheres for less.
+    eye_rays_only = camera_kind == PINHOLE and "shadows" not in features and "path_trace" not in features \
+        and not any(SHADER_BY_ID[s].continues for s in shaders)
+    bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
+                                                                and not eye_rays_only))
     mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype) \
         if mesh_faces or bvh_spheres else None
     if mesh is not None:
@@ -384,8 +389,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     return flat
 
 
-# A scene with this many spheres finds them through the BVH (a scene with a mesh, with any):
-# below it a loop over the spheres (with the eye's per-tile culling) costs less.
+# A scene with this many spheres finds them through the BVH (a scene with a mesh, with any),
+# unless its only rays are primary rays from a pinhole: below it, and there, a loop over the
+# spheres (with the eye's per-tile culling of primary rays) costs less (docs/bvh.md).
 BVH_MIN_SPHERES = 16
 # The first entry of a sphere's row in FlatMesh.faces.
 SPHERE_ROW = -1

@@ -214,6 +214,33 @@ def test_a_scene_of_many_spheres_finds_them_through_the_bvh_and_a_few_in_a_loop(
     assert few.mesh is None and "bvh_spheres" not in few.features
 
 
+def test_spheres_seen_only_by_primary_rays_from_a_pinhole_stay_in_the_culled_loop():
+    """Without shadow rays, mirrors or path tracing, a pinhole's per-tile culling finds the
+    spheres: no BVH. The same spheres under another camera, or casting shadows, are in it."""
+    from rtfgu import PinholeCamera
+    from rtfgu.layout import BVH_MIN_SPHERES
+    from rtfgu.material import BASE_COLOR
+
+    def spheres(camera, shadows):
+        scene = Scene(camera)
+        rng = random.Random(5)
+        for _ in range(BVH_MIN_SPHERES * 2):
+            center = Float3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1))
+            scene.shapes.append(Sphere(center, 0.1, Float3(0.5), Material(BASE_COLOR)))
+        if shadows:
+            scene.shapes[0].material = Material(LAMBERTIAN)
+            scene.lights.append(PointLight(Float3(0, 3, 0), Float3(1.0)))
+        return scene
+
+    pinhole = PinholeCamera(Float3(0, 0, 5), Float3(0, 0, 0), Float3(0, 1, 0), 1.0)
+    flat = compile_scene(spheres(pinhole, shadows=False))
+    assert flat.mesh is None and "bvh_spheres" not in flat.features
+    lit = compile_scene(spheres(pinhole, shadows=True))
+    assert lit.mesh is not None and lit.mesh.spheres
+    orthographic = OrthographicCamera(-1.0, 1.0, -1.0, 1.0)
+    assert compile_scene(spheres(orthographic, shadows=False)).mesh.spheres
+
+
 def test_spheres_in_the_bvh_give_the_lecture_layers_hits_shadows_and_reflections(path):
     from rtfgu.layout import BVH_MIN_SPHERES
 
