@@ -280,6 +280,17 @@ def closest_hits(vertices, faces4, nodes, links, origins, directions, t_out, fac
         face_out[i] = hit[1]
 
 
+def bvh_of(mesh: MeshArrays):
+    """rtfgu's BVH over the mesh's faces and the (F, 4) faces in its leaf order, each with
+    its index in the mesh's face list (what rtfgu.layout.compile_scene makes of a mesh)."""
+    lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+    bvh = flat_bvh.build(lo, hi)
+    faces4 = np.empty((len(mesh.faces), 4), dtype=np.int32)
+    faces4[:, :3] = mesh.faces[bvh.order]
+    faces4[:, 3] = bvh.order
+    return bvh, faces4
+
+
 class Rtfgu(System):
     name = "rtfgu numba"
 
@@ -291,11 +302,7 @@ class Rtfgu(System):
         if getattr(self, "mesh", None) is not mesh:
             self.mesh, self.tree_seconds = mesh, []
         start = time.perf_counter()
-        lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
-        bvh = flat_bvh.build(lo, hi)
-        faces4 = np.empty((len(mesh.faces), 4), dtype=np.int32)
-        faces4[:, :3] = mesh.faces[bvh.order]
-        faces4[:, 3] = bvh.order
+        bvh, faces4 = bvh_of(mesh)
         seconds = time.perf_counter() - start
         self.tree_seconds.append(bvh.build_seconds)
         self.bvh, self.faces4 = bvh, faces4
@@ -556,11 +563,7 @@ class Wgsl(System):
             self.mesh, self.upload_seconds = mesh, []
         self.buffers = None  # the previous mesh's buffers are released first
         start = time.perf_counter()
-        lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
-        bvh = flat_bvh.build(lo, hi)
-        faces4 = np.empty((len(mesh.faces), 4), dtype=np.int32)
-        faces4[:, :3] = mesh.faces[bvh.order]
-        faces4[:, 3] = bvh.order
+        bvh, faces4 = bvh_of(mesh)
         vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float32)
         arrays = (vertices, faces4, bvh.nodes)
         self.nbytes = sum(a.nbytes for a in arrays)
