@@ -8,7 +8,11 @@ samples of as many renders as fill SAMPLE_SECONDS, and reports the median time p
 ratio, and each image's largest difference from the lecture layer's float64 image (on every
 4th row and column for the 1024 x 1024 scene), so no speed figure stands without its error.
 
-    python benchmarks/before_after.py --before REV [--rounds 3] [--out docs/registry_speed.md]
+    python benchmarks/before_after.py --before REV [--suite registry|book] [--rounds 3] [--out FILE]
+
+``--suite registry`` (the default) times the numba and WGSL paths on CONFIGS; ``--suite book``
+times the lecture layer itself (the reference backend, small images) and the flat paths on
+the scenes whose materials, lights and tracer the book's classes express (BOOK_CONFIGS).
 """
 from __future__ import annotations
 
@@ -37,6 +41,16 @@ PATHS = [("numba", "float64", "slide"), ("numba", "float64", "robust"),
          ("wgpu", "float32", "slide"), ("wgpu", "float32", "robust")]
 REPS = 5
 SAMPLE_SECONDS = 0.25
+REFERENCE = [("reference", "float64", "slide")]
+FLAT = [("numba", "float64", "slide"), ("numba", "float32", "slide"), ("wgpu", "float32", "robust")]
+BOOK_CONFIGS = [
+    (("default_lambertian_shadows", 48, 48), REFERENCE), (("default_glossy_sphere", 48, 48), REFERENCE),
+    (("default_mirror_sphere", 48, 48), REFERENCE), (("suffern_disks", 48, 48), REFERENCE),
+    (("lecture01_flat_colors", 64, 64), REFERENCE), (("teapot", 40, 24), REFERENCE),
+    (("default_lambertian_shadows", 256, 256), FLAT), (("default_glossy_sphere", 256, 256), FLAT),
+    (("suffern_disks", 256, 256), FLAT), (("teapot", 400, 225), FLAT), (("cornell_box_blocks", 256, 256), FLAT),
+]
+SUITES = {"registry": [(config, PATHS) for config in CONFIGS], "book": BOOK_CONFIGS}
 
 
 def _scene(name):
@@ -107,6 +121,7 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--before", help="the earlier commit (a git revision)")
     parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--suite", default="registry", choices=sorted(SUITES))
     parser.add_argument("--out", default=None, help="write the markdown table here")
     parser.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
     for name in ("scene", "backend", "precision", "formula", "image"):
@@ -129,9 +144,9 @@ def main(argv=None) -> int:
         trees = {"before": before, "after": ROOT}
         try:
             rows = []
-            for config in CONFIGS:
+            for config, paths in SUITES[args.suite]:
                 ref, step = reference(*config)
-                for path in PATHS:
+                for path in paths:
                     seconds = {"before": [], "after": []}
                     errors = {}
                     for _ in range(args.rounds):

@@ -4,9 +4,10 @@ a peer per pixel.
     python benchmarks/cornell_reference.py [--spp N] [--passes P] [--size S] [--out PATH]
                                            [--png PATH] [--variant V]
 
-The scene is rtfgu.scenes.meshes.cornell_box_blocks() lit by its emissive ceiling quad
-only: every light but an AreaLight is removed (a point light standing in for the quad, in
-rtfgu versions without area lights). The quad's two triangles face down (-y) and become
+The scene is the box of rtfgu.scenes.meshes.cornell_box_area_light() (cornell_box_blocks()
+with path-traced surfaces: kd 1, the albedo each face's colour) lit by its emissive ceiling
+quad only: every light but an AreaLight is removed (a point light standing in for the quad,
+in rtfgu versions without area lights). The quad's two triangles face down (-y) and become
 one Mitsuba ``area`` emitter (benchmarks/mitsuba_scene.py converts the scene). The
 integrator is Mitsuba's ``path`` with max_depth -1 (unbounded, Russian roulette from depth
 5), the film a box-filtered S x S hdrfilm.
@@ -44,10 +45,12 @@ MAX_DEPTH = -1
 
 
 def cornell_scene():
-    """cornell_box_blocks() lit by its emissive quad only."""
-    from rtfgu.scenes.meshes import cornell_box_blocks
-    scene = cornell_box_blocks()
+    """The Cornell box with its blocks, every face a path-traced Matte (kd 1: its albedo is
+    its colour), lit by its emissive quad only: cornell_box_area_light()'s box."""
+    from rtfgu.scenes.meshes import cornell_box_area_light
+    scene = cornell_box_area_light()
     scene.lights = [light for light in scene.lights if type(light).__name__ == "AreaLight"]
+    scene.sampler = None            # an rtfgu render of it takes render's spp (rtfgu.options.pixel_sampler)
     return scene
 
 

@@ -33,18 +33,22 @@ The mapping (Mitsuba 3 plugin reference, https://mitsuba.readthedocs.io/en/stabl
   Disk            ``disk`` with to_world = frame of the normal scaled by the radius.
   Plane           a square mi.Mesh of half side PLANE_EXTENT x the scene's radius, centred at
                   the scene's centre projected onto the plane, facing the plane's normal.
-  material        LAMBERTIAN -> ``twosided`` ``diffuse``, reflectance = the shape's colour
-                  (PathTrace shades a face seen from behind as its front);
-                  MIRROR -> ``twosided`` ``conductor`` material "none" (reflectance 1);
-                  DIELECTRIC (clear) -> ``dielectric`` int_ior = ior, ext_ior = 1;
-                  EMISSIVE -> ``diffuse`` reflectance 0.
-                  Other shaders (base_color, phong, glossy) and textures: ValueError.
+  material        Matte -> ``twosided`` ``diffuse``, reflectance = its albedo kd cd (cd the
+                  shape's colour where None; PathTrace adds no ambient term, and shades a
+                  face seen from behind as its front);
+                  a mirror Reflective -> ``twosided`` ``conductor`` material "none"
+                  (reflectance 1);
+                  Dielectric (clear) -> ``dielectric`` int_ior = ior, ext_ior = 1;
+                  Emissive -> ``diffuse`` reflectance 0.
+                  Other materials (Material, Phong, Transparent, GlossyReflector) and
+                  textures: ValueError.
   emission        a shape with material.emission != 0 gets an ``area`` emitter, radiance =
                   emission, from its front only (the side of its geometric normal), as
                   rtfgu's PathTrace.
-  lights          PointLight -> ``point`` (position, intensity); an AreaLight is the
-                  emission of its shape, converted with the shape (its shape must be in
-                  scene.shapes). Other light kinds: ValueError.
+  lights          PointLight (the 02562 light, inverse_square) -> ``point`` (position,
+                  intensity); an AreaLight is the emission of its shape, converted with the
+                  shape (its shape must be in scene.shapes). Other light kinds, and a light
+                  that casts no shadows: ValueError.
   background      ``constant`` emitter, radiance = scene.background, if nonzero.
 
 Differences that stay: Mitsuba's ``dielectric`` splits light by the Fresnel equations where
@@ -84,14 +88,21 @@ def _nonzero(v) -> bool:
     return any(c != 0.0 for c in _xyz(v))
 
 
+def _surface_colour(color, material):
+    """The colour of a material on a shape of colour ``color``: its cd, or the shape's."""
+    from rtfgu.float3 import Float3
+    return material.cd if isinstance(material.cd, Float3) else color
+
+
 def _bsdf(color, material) -> dict:
     """The Mitsuba BSDF dict of an rtfgu material on a shape of colour ``color``."""
-    from rtfgu import material as rm
+    from rtfgu import materials as rm
     if material.texture is not None:
         raise ValueError("to_mitsuba: textured materials are not converted (%r)" % (material,))
     shader = material.shader
     if shader == rm.LAMBERTIAN:
-        return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": _rgb(color)}}
+        albedo = [material.kd * c for c in _xyz(_surface_colour(color, material))]
+        return {"type": "twosided", "bsdf": {"type": "diffuse", "reflectance": _rgb(albedo)}}
     if shader == rm.MIRROR:
         return {"type": "twosided", "bsdf": {"type": "conductor", "material": "none"}}
     if shader == rm.DIELECTRIC:
@@ -103,8 +114,9 @@ def _bsdf(color, material) -> dict:
     if shader == rm.EMISSIVE:
         return {"type": "diffuse", "reflectance": _rgb((0.0, 0.0, 0.0))}
     name = rm.SHADER_NAMES.get(shader, shader)
-    raise ValueError("to_mitsuba: shader %r has no Mitsuba counterpart here (lambertian, mirror, "
-                     "dielectric, emissive only; transparent refracts without Fresnel's reflection)" % (name,))
+    raise ValueError("to_mitsuba: %r (shader %r) has no Mitsuba counterpart here (Matte, a mirror Reflective, "
+                     "Dielectric, Emissive only; a Transparent refracts without Fresnel's reflection)"
+                     % (material, name))
 
 
 def _emitter(material) -> dict | None:
@@ -114,8 +126,9 @@ def _emitter(material) -> dict | None:
 
 
 def _material_key(color, material) -> tuple:
-    return (tuple(_xyz(color)), material.shader, tuple(_xyz(material.specular)),
-            material.shininess, material.ior, tuple(_xyz(material.emission)), id(material.texture))
+    return (tuple(_xyz(_surface_colour(color, material))), material.shader, material.kd,
+            tuple(_xyz(material.specular)), material.shininess, material.ior, tuple(_xyz(material.emission)),
+            tuple(_xyz(material.absorption)), id(material.texture))
 
 
 def _mesh(mi, name: str, vertices, faces, normals, bsdf: dict, emitter: dict | None):
@@ -178,7 +191,7 @@ def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_dept
     DEFAULT_VARIANT is set if none is), so load the dict in that variant. Anything that has
     no counterpart (see the module docstring) is a ValueError naming it."""
     from rtfgu.cameras import PinholeCamera
-    from rtfgu.lights import PointLight
+    from rtfgu.lights import AreaLight, PointLight
     from rtfgu.shapes import Disk, Plane, Sphere
     from rtfgu.shapes.mesh import MeshTriangle
     from rtfgu.shapes.triangle import Triangle
@@ -196,8 +209,10 @@ def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_dept
                          "(Mitsuba's pixels are square)" % (camera.aspect, width / height))
     if scene.show_ray_direction:
         raise ValueError("to_mitsuba: Scene.show_ray_direction has no Mitsuba counterpart")
-    if not scene.shadows:
-        raise ValueError("to_mitsuba: Scene.shadows = False has no Mitsuba counterpart")
+    for i, light in enumerate(scene.lights):
+        if not light.casts_shadows():
+            raise ValueError("to_mitsuba: scene.lights[%d] casts no shadows (set_shadows(False)), which has no "
+                             "Mitsuba counterpart" % i)
     if max_depth is None:
         max_depth = -1
     if isinstance(max_depth, bool) or not isinstance(max_depth, (int, np.integer)) or max_depth < -1:
@@ -269,13 +284,9 @@ def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_dept
                                           _bsdf(color, material), _emitter(material))
         count += 1
 
-    try:
-        from rtfgu.area_light import AreaLight
-    except ImportError:
-        AreaLight = None
     shape_ids = {id(shape) for shape in scene.shapes}
     for i, light in enumerate(scene.lights):
-        if AreaLight is not None and type(light) is AreaLight:
+        if type(light) is AreaLight:
             if id(light.shape) not in shape_ids:
                 raise ValueError("to_mitsuba: scene.lights[%d] is an AreaLight whose shape is not in "
                                  "scene.shapes" % i)
@@ -283,6 +294,9 @@ def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_dept
         if type(light) is not PointLight:
             raise ValueError("to_mitsuba: scene.lights[%d] is a %s; only PointLight and AreaLight "
                              "are converted" % (i, type(light).__name__))
+        if not light.inverse_square:
+            raise ValueError("to_mitsuba: scene.lights[%d] is the book's PointLight (inverse_square = False), "
+                             "which Mitsuba's point light is not" % i)
         out["light_%04d" % i] = {"type": "point", "position": _xyz(light.position),
                                  "intensity": _rgb(light.intensity)}
     if _nonzero(scene.background):

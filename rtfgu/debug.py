@@ -30,11 +30,11 @@ from typing import NamedTuple
 
 from .cameras import PinholeCamera
 from .float3 import Float3
-from .material import SHADER_NAMES
+from .materials.material import SHADER_NAMES
 from .ray import Ray
 from .registry import SHAPES, shape_kind_of
-from .renderer import DEFAULT_FORMULAS, FORMULAS
-from .shading import MAX_DEPTH, HitInfo, shade
+from .options import DEFAULT_FORMULAS, FORMULAS
+from .tracers.whitted import Whitted
 
 BACKENDS = ("reference", "numba", "wgpu")
 # Every path, as (label, backend, precision), in the order a report shows them.
@@ -114,30 +114,60 @@ class _Logged:
         return getattr(self._shape, name)
 
 
+class _Collect(Whitted):
+    """A tracer that traces nothing: it notes the rays a material's ``shade`` sends on and
+    returns black for each, so that ``shade`` returns what the hit itself adds."""
+
+    def __init__(self, samples_area_lights: bool, rays: list):
+        super().__init__()
+        self.samples_area_lights, self.rays = samples_area_lights, rays
+
+    def trace_ray(self, ray, depth: int = 0) -> Float3:
+        self.rays.append(ray)
+        return Float3(0.0)
+
+
+class _Recording(Whitted):
+    """Whitted (the 02562 path loop), noting a Bounce per ray it traces, depth first: the
+    shape hit (the last to report a hit, on a view of the scene whose shapes note their place
+    in Scene.shapes), and the radiance its material's ``shade`` adds there, the rays it sends
+    on seen as black; then those rays in the order the material sent them."""
+
+    def __init__(self, scene, out: list):
+        super().__init__()
+        self.scene, self.out, self.log = scene, out, []
+        self.world = copy.copy(scene)
+        self.world.shapes = [_Logged(shape, i, self.log) for i, shape in enumerate(scene.shapes)]
+        self.world.tracer = self
+
+    def trace_ray(self, ray, depth: int = 0) -> Float3:
+        if depth >= self.max_depth:
+            return Float3(0.0)
+        origin, direction = ray.origin, ray.direction
+        self.log.clear()
+        sr = self.hit(ray, depth)
+        if sr is None:
+            self.out.append(_miss(origin, direction, self.scene.background_radiance(direction)))
+            return Float3(0.0)
+        index = self.log[-1]
+        sent = []
+        self.world.tracer = _Collect(self.samples_area_lights, sent)
+        color = sr.material.shade(sr)
+        self.world.tracer = self
+        kind = shape_kind_of(self.scene.shapes[index])[1]
+        self.out.append(_hit(origin, direction, index, kind.name if kind else None, sr.dist, sr.normal,
+                             sr.material.shader, color))
+        for next_ray in sent:
+            self.trace_ray(next_ray, depth + 1)
+        return Float3(0.0)
+
+
 def _reference(scene, r: Ray) -> list:
-    """rtfgu.renderer.trace, recording each bounce: the scene's own intersect (the last
-    shape to report a hit is the nearest) and shade, on a view of the scene whose shapes
-    note their place in Scene.shapes."""
+    """The lecture layer's Whitted tracer on ``r``, recording each bounce (_Recording)."""
     if scene.show_ray_direction:
         return [_miss(r.origin, r.direction, r.direction * 0.5 + Float3(0.5), "ray direction")]
-    log = []
-    view = copy.copy(scene)
-    view.shapes = [_Logged(shape, i, log) for i, shape in enumerate(scene.shapes)]
     out = []
-    hit = HitInfo()
-    for _ in range(MAX_DEPTH):
-        origin, direction = r.origin, r.direction
-        log.clear()
-        if not type(scene).intersect(view, r, hit):
-            out.append(_miss(origin, direction, scene.background_radiance(direction)))
-            break
-        index = log[-1]
-        dist, normal, shader = hit.dist, hit.normal, hit.shader
-        color = shade(view, r, hit)
-        kind = shape_kind_of(scene.shapes[index])[1]
-        out.append(_hit(origin, direction, index, kind.name if kind else None, dist, normal, shader, color))
-        if hit.has_hit:
-            break
+    _Recording(scene, out).trace_ray(r, 0)
     return out
 
 
@@ -232,7 +262,7 @@ def _trace(scene, backend, precision, formula, pixel=None, rays=None) -> list:
 
 
 def _check_pixel(x, y, width, height) -> None:
-    from .renderer import check_size
+    from .options import check_size
 
     check_size(width, height)
     for name, value, limit in (("X", x, width), ("Y", y, height)):

@@ -18,14 +18,14 @@ class Float3:
     def __init__(self, x: float = 0.0, y: float | None = None, z: float | None = None):
         # Float3() is zero, Float3(c) repeats c, Float3(x, y, z) sets each component
         # (the slide's constructors Float3(), Float3(float c), Float3(x, y, z)).
-        if y is None and z is None:
-            self.x = self.y = self.z = float(x)
-        elif y is None or z is None:
-            raise TypeError("Float3 takes no argument, one (c) or three (x, y, z)")
-        else:
+        if z is not None and y is not None:
             self.x = float(x)
             self.y = float(y)
             self.z = float(z)
+        elif y is None and z is None:
+            self.x = self.y = self.z = float(x)
+        else:
+            raise TypeError("Float3 takes no argument, one (c) or three (x, y, z)")
 
     # --- the union's aliases -------------------------------------------------
     r = property(lambda v: v.x, lambda v, c: setattr(v, "x", float(c)))

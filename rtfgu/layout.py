@@ -45,6 +45,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .cameras import OrthographicCamera, PinholeCamera, ThinLens
+from .float3 import Float3
 from .ray import RAY_EPSILON
 from .registry import (LIGHTS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
                        shape_kind_of, texture_kind_of)
@@ -75,8 +76,10 @@ def pack_fields(fields) -> tuple:
 
 # texture: the texture kind's id (its place in rtfgu.registry.TEXTURES), -1 for none;
 # texture_row: its row in that kind's table.
-MATERIAL_FIELDS = (("color", 3), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1),
-                   ("texture", 1), ("texture_row", 1), ("absorption", 3))
+# color: the surface's colour (its material's cd, or the shape's); kd: the diffuse BRDF's kd;
+# ambient: ka times the scene's ambient radiance (rtfgu/materials/matte.py).
+MATERIAL_FIELDS = (("color", 3), ("kd", 1), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1),
+                   ("texture", 1), ("texture_row", 1), ("absorption", 3), ("ambient", 3))
 CAMERA_FIELDS = {
     "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
                            ("yon", 1), ("tmin", 1)),
@@ -132,6 +135,8 @@ MAT_IOR = offset("Material", "ior")
 MAT_TEXTURE = offset("Material", "texture")
 MAT_TEXTURE_ROW = offset("Material", "texture_row")
 MAT_ABSORPTION = offset("Material", "absorption")
+MAT_KD = offset("Material", "kd")
+MAT_AMBIENT = offset("Material", "ambient")
 # ImageTexture.filter and .address as numbers in the layout.
 TEXTURE_FILTERS = {"nearest": 0, "bilinear": 1}
 TEXTURE_ADDRESSES = {"repeat": 0, "clamp": 1}
@@ -214,8 +219,14 @@ class FlatScene:
     sampler: object = None
     # The mesh triangles (FlatMesh), None in a scene without any.
     mesh: object = None
-    # PathTrace's max_depth (rtfgu.path_trace), 0 for the ray-cast loop.
+    # PathTrace's or GlobalTrace's max_depth (rtfgu/tracers), 0 for the ray-cast loop.
     max_depth: int = 0
+    # Whether a path samples the lights at every vertex (PathTrace) or at the first only
+    # (GlobalTrace).
+    lights_at_every_vertex: bool = True
+    # Whether the ray-cast loop draws points of area lights (AreaLighting) instead of
+    # worksheet 5's point at their centre.
+    area_lighting: bool = False
     # The EnvironmentLight's image (height, width, 3), or None: rays that leave the scene
     # see ``background`` then.
     environment: np.ndarray = None
@@ -247,6 +258,34 @@ def pack_row(record: str, obj) -> list:
     return row
 
 
+def compile_tracer(scene) -> tuple:
+    """("path_trace", max_depth) for PathTrace and GlobalTrace, (None, 0) for the 02562
+    ray-cast loop (Whitted with its 10 rays); a ValueError naming Scene.tracer for a tracer the
+    flat paths do not run yet (they take it by its kind, so a subclass is not taken for its
+    base)."""
+    from .tracers import MAX_DEPTH, AreaLighting, GlobalTrace, PathTrace, Whitted
+
+    tracer = scene.tracer
+    if type(tracer) in (PathTrace, GlobalTrace):
+        return "path_trace", tracer.max_depth
+    if type(tracer) in (Whitted, AreaLighting) and tracer.max_depth == MAX_DEPTH:
+        return ("area_lighting" if type(tracer) is AreaLighting else None), 0
+    if scene.show_ray_direction:
+        return None, 0
+    raise ValueError("Scene.tracer (%r): numba and WGSL run Whitted and AreaLighting with max_depth=%d (the 02562 "
+                     "loop), PathTrace and GlobalTrace; render this one with backend='reference'" % (tracer, MAX_DEPTH))
+
+
+def compile_shadows(scene) -> bool:
+    """Whether the flat paths cast shadow rays: every light casts shadows, or none does (the
+    flat paths hold one switch for the scene)."""
+    casts = {light.casts_shadows() for light in scene.lights}
+    if len(casts) > 1:
+        raise ValueError("Scene.lights: numba and WGSL cast shadow rays toward every light or none; these lights "
+                         "differ in casts_shadows() (render with backend='reference')")
+    return casts == {True}
+
+
 def compile_camera(camera) -> tuple[int, np.ndarray]:
     if isinstance(camera, OrthographicCamera):
         # gen_ray's ray: origin z = hither, tmin = RAY_EPSILON, tmax = yon - hither.
@@ -272,6 +311,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     scene.validate()
     camera_kind, camera = compile_camera(scene.camera)
 
+    tracer_feature, max_depth = compile_tracer(scene)
+    shadows = compile_shadows(scene)
+    ambient = scene.ambient_light.L(None)
     rows = {kind.name: ([], []) for kind in SHAPES}
     mesh_faces = []
     materials, shaders = [], []
@@ -309,9 +351,13 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                 texture_rows[tkind.name].append(pack_row(tkind.record, source))
                 features.update((tkind.name, "textures"))
             texture, texture_row = placed[id(m.texture)]
+        limit = m.flat_limit(scene.tracer)
+        if limit is not None:
+            raise ValueError("Scene.shapes[%d].material (%r): %s" % (i, m, limit))
         materials.append(pack_row("Material", SimpleNamespace(
-            color=shape.color, specular=m.specular, shininess=m.shininess, emission=m.emission,
-            ior=m.ior, texture=texture, texture_row=texture_row, absorption=m.absorption)))
+            color=m.cd if isinstance(m.cd, Float3) else shape.color, kd=m.kd, specular=m.specular,
+            shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
+            absorption=m.absorption, ambient=ambient * m.ka)))
         shaders.append(m.shader)
         features.add(SHADER_BY_ID[m.shader].name)
 
@@ -321,16 +367,19 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         if kind is None:
             raise ValueError("Scene.lights[%d]: the flat layout knows %s, got %s"
                              % (j, ", ".join(k.record for k in LIGHTS), type(light).__name__))
+        limit = light.flat_limit()
+        if limit is not None:
+            raise ValueError("Scene.lights[%d] (%r): %s" % (j, light, limit))
         lights[kind.name].append(pack_row(kind.record, light))
         features.add(kind.name)
     if scene.lights:
         features.add("lights")
-    if scene.shadows and scene.lights:
+    if shadows:
         features.add("shadows")
     if scene.show_ray_direction:
         features.add("ray_direction")
-    elif scene.tracer is not None:
-        features.add("path_trace")
+    elif tracer_feature:
+        features.add(tracer_feature)
     if scene.environment is not None:
         features.add("environment")
 
@@ -367,13 +416,15 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         shaders=np.array(shaders, dtype=np.int32),
         lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
         background=np.array(_vec(scene.background) + [0.0], dtype=dtype),
-        shadows=bool(scene.shadows),
+        shadows=shadows,
         show_ray_direction=bool(scene.show_ray_direction),
         features=frozenset(features),
         textures={kind.name: table(texture_rows[kind.name], kind.record) for kind in TEXTURES},
         texels=np.array(texels or [0.0, 0.0, 0.0], dtype=dtype),
         mesh=mesh,
-        max_depth=scene.tracer.max_depth if "path_trace" in features else 0,
+        max_depth=max_depth if "path_trace" in features else 0,
+        lights_at_every_vertex=bool(getattr(scene.tracer, "samples_lights_at", lambda depth: True)(1)),
+        area_lighting=tracer_feature == "area_lighting",
         environment=None if scene.environment is None else scene.environment.texels.astype(dtype),
     )
     arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]

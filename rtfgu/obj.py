@@ -35,6 +35,8 @@ is read once more, line by line, to find the line (rtfgu.obj._diagnose).
 """
 from __future__ import annotations
 
+import copy
+
 import io
 import math
 import re
@@ -43,8 +45,9 @@ from pathlib import Path
 
 import numpy as np
 
-from .material import Material
+from .materials.material import Material
 from .shapes.mesh import Mesh, zero_area_faces
+from .validation import colour
 
 DEFAULT_COLOR = (0.8, 0.8, 0.8)
 MESHES_DIR = Path(__file__).resolve().parent / "meshes"
@@ -382,8 +385,8 @@ def _face_materials(names, counts, library, material, default_color):
         ke = entry.get("Ke")
         if ke is not None and any(ke):
             if name not in emitting:
-                emitting[name] = Material(base.shader, base.specular, base.shininess, base.ior,
-                                          emission=ke, texture=base.texture)
+                emitting[name] = copy.copy(base)
+                emitting[name].emission = colour(ke, "load_obj: material %r Ke" % (name,))
             materials += [emitting[name]] * count
         else:
             materials += [base] * count

@@ -40,3 +40,7 @@ class Ray:
 
     def __repr__(self) -> str:
         return "Ray(%r, %r, tmin=%r, tmax=%r)" % (self.origin, self.direction, self.tmin, self.tmax)
+
+# How far along its direction a secondary (shadow, mirror, refracted, path) ray starts, so
+# that it does not hit the surface it leaves: the slide's tmin idea, sized for float32 too.
+SPAWN_EPSILON = 1e-4

@@ -26,11 +26,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .ambient_occluder import AmbientOccluder
-from .area_light import AreaLight
-from .directional_light import Directional
-from .lights import PointLight
-from .material import BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT
+from .lights import AmbientOccluder, AreaLight, Directional, PointLight
+from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR,
+                                 PHONG, TRANSPARENT)
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
@@ -81,13 +79,17 @@ class ShapeKind(_Rows):
 
 @dataclass(frozen=True)
 class ShaderKind:
-    """A case of the slide's ``shade`` switch. ``brdf``: the shader adds light from the
-    lights through the one light loop with this BRDF term (numba ``brdf_<name>``, WGSL
-    ``fn brdf_<name>`` in ``<name>.wgsl``); ``continues``: the shader may continue the path
-    (numba ``continue_<name>``, WGSL ``fn continue_<name>``), so the path loop is needed."""
+    """A material kind: a case of the slide's ``shade`` switch, which the numba and WGSL
+    paths dispatch on by id, and the lecture layer's material class it stands for
+    (``material``, rtfgu/materials; a class's ``shader`` property says which case an
+    instance is). ``brdf``: the shader adds light from the lights through the one light
+    loop with this BRDF term (numba ``brdf_<name>``, WGSL ``fn brdf_<name>`` in
+    ``<name>.wgsl``); ``continues``: the shader may continue the path (numba
+    ``continue_<name>``, WGSL ``fn continue_<name>``), so the path loop is needed."""
 
     id: int
     name: str
+    material: str
     brdf: bool = False
     continues: bool = False
     brdf_of: str = ""                   # the shader whose BRDF term this one uses ("" : its own)
@@ -96,19 +98,23 @@ class ShaderKind:
 
 @dataclass(frozen=True)
 class LightKind(_Rows):
-    """A light: the lecture class with an attribute per field, numba
-    ``sample_<name>(lights, j, position)`` and WGSL ``fn sample_<name>(pos, i) -> Light``
-    in ``lights.wgsl``, both returning the slide's (L_i, w_i, dist). ``area``: PathTrace
-    samples a point of the light with two random numbers (the class's ``sample_area(pos,
-    normal, u, v)``, numba ``sample_<name>_area(lights, j, position, normal, u, v)``, WGSL
-    ``sample_<name>_area(pos, normal, i, u, v)``); ``ray_cast``: the ray-cast loop has it
-    too (``sample_<name>``; a light without it needs PathTrace, Scene.validate says so)."""
+    """A light: the lecture class (rtfgu/lights, the book's get_direction, L, G, pdf) with an
+    attribute per field, numba ``sample_<name>(lights, j, position)`` and WGSL ``fn
+    sample_<name>(pos, i) -> Light`` in ``lights.wgsl``, both returning the slide's (L_i,
+    w_i, dist) as the ray-cast tracers ask the class. ``area``: a tracer that samples lights
+    draws a point or a direction of it with two random numbers (the class's get_direction
+    then incident = L G / pdf, numba ``sample_<name>_area(lights, j, position, normal, u,
+    v)``, WGSL ``sample_<name>_area(pos, normal, i, u, v)``); ``ray_cast``: the ray-cast
+    tracers have it too (a light without it needs PathTrace, Scene.validate says so)."""
 
     name: str
     cls: type
     fields: tuple
     area: bool = False
-    ray_cast: bool = True
+
+    @property
+    def ray_cast(self) -> bool:
+        return self.cls.drawn_by_ray_casting
 
 
 SHAPES = (
@@ -123,28 +129,30 @@ SHAPES = (
 ROW_SHAPES = tuple(kind for kind in SHAPES if not kind.bvh)   # the kinds laid out a row per shape
 
 SHADERS = (
-    ShaderKind(BASE_COLOR, "base_color"),
-    ShaderKind(LAMBERTIAN, "lambertian", brdf=True),
-    ShaderKind(PHONG, "phong", brdf=True),
-    ShaderKind(MIRROR, "mirror", continues=True),
-    ShaderKind(TRANSPARENT, "transparent", continues=True),
-    ShaderKind(GLOSSY, "glossy", brdf=True, continues=True, brdf_of="phong"),
-    ShaderKind(EMISSIVE, "emissive", emits=True),
-    # rtfgu.material.Dielectric, rtfgu/fresnel.py: the ray-cast loop refracts as transparent does; PathTrace picks
-    # reflection or refraction by Fresnel's reflectance.
-    ShaderKind(DIELECTRIC, "dielectric", continues=True),
-    # rtfgu.material.GlossyReflector: phong in the ray-cast loop; PathTrace samples its lobe.
-    ShaderKind(GLOSSY_REFLECTOR, "glossy_reflector", brdf=True, brdf_of="phong"),
+    ShaderKind(BASE_COLOR, "base_color", "Material"),
+    ShaderKind(LAMBERTIAN, "lambertian", "Matte", brdf=True),
+    ShaderKind(PHONG, "phong", "Phong", brdf=True),
+    # A Reflective with nothing but kr cr = 1.
+    ShaderKind(MIRROR, "mirror", "Reflective", continues=True),
+    # A Transparent with nothing but kt = 1; "glossy" is one with a Phong part (02562 worksheet 3).
+    ShaderKind(TRANSPARENT, "transparent", "Transparent", continues=True),
+    ShaderKind(GLOSSY, "glossy", "Transparent", brdf=True, continues=True, brdf_of="phong"),
+    ShaderKind(EMISSIVE, "emissive", "Emissive", emits=True),
+    # PathTrace picks reflection or refraction by Fresnel's reflectance (numba and WGSL trace it
+    # under PathTrace only: under the ray-cast tracers it sends two rays).
+    ShaderKind(DIELECTRIC, "dielectric", "Dielectric", continues=True),
+    # Phong under the ray-cast tracers; PathTrace samples its lobe.
+    ShaderKind(GLOSSY_REFLECTOR, "glossy_reflector", "GlossyReflector", brdf=True, brdf_of="phong"),
 )
 
 LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
     LightKind("directional", Directional, (("direction", 3), ("intensity", 3))),
-    # rtfgu/area_light.py: one emitting triangle or sphere.
+    # rtfgu/lights/area_light.py: one emitting triangle or sphere.
     LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3)),
               area=True),
-    # rtfgu/ambient_occluder.py: ambient light seen through the unoccluded directions.
-    LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3),), area=True, ray_cast=False),
+    # rtfgu/lights/ambient_occluder.py: ambient light seen through the unoccluded directions.
+    LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3),), area=True),
 )
 
 

@@ -7,46 +7,27 @@ the top (+y), before gamma. The slide's loop counts iy from the bottom (sy = -1)
 """
 from __future__ import annotations
 
-import importlib.util
-import math
 
 import numpy as np
 
 from .float3 import Float3
 from .ray import Ray
-from .sampling import Jittered, NRooks, concentric_map
-from .sampling.random import LENS_SET, check_seed
-from .sampling.sampler import sampler_of
-from .shading import MAX_DEPTH, HitInfo, shade
+from .options import (BACKENDS, DEFAULT_BACKEND, DEFAULT_FORMULAS, FORMULAS, PRECISIONS, check_options,  # noqa: F401
+                      check_size, lens_sample, pixel_sampler)
+from .sampling import concentric_map
+from .sampling.random import check_seed
 
-BACKENDS = ("reference", "numba", "wgpu")
-DEFAULT_BACKEND = "reference"
-PRECISIONS = ("float64", "float32")
-# Intersection formulas: the lecture's and the robust ones (Ray Tracing Gems ch. 7 for the
-# sphere, rtfgu/robust.py). The reference computes the slide formulas only. Each path's
-# default, decided once here from the measured cost and hard-case counts in
-# docs/robust_defaults.md: numba keeps the slide formula (the robust sphere costs it
-# speed on many spheres), WGSL takes the robust one (no measurable cost there).
-FORMULAS = ("slide", "robust")
-DEFAULT_FORMULAS = {"reference": "slide", "numba": "slide", "wgpu": "robust"}
-
-
-def trace(scene, r: Ray) -> Float3:
-    """The 02562 path loop: shade each hit until a shader ends the path (has_hit stays
-    true) or the ray leaves the scene (background), at most MAX_DEPTH times."""
+def trace(scene, r: Ray, stream=(0, 0, 0)) -> Float3:
+    """The colour of the eye ray ``r``: the scene's tracer's ``trace_ray(r, 0)`` (Whitted by
+    default, the 02562 path loop), or with ``show_ray_direction`` the ray's direction as a
+    colour, d * 0.5 + 0.5 (02562 week 1). ``stream``: the (pixel, sample, seed) whose random
+    numbers a stochastic tracer draws."""
     if scene.show_ray_direction:
         return r.direction * 0.5 + Float3(0.5)
-    result = Float3(0.0)
-    hit = HitInfo()
-    for i in range(MAX_DEPTH):
-        if scene.intersect(r, hit):
-            result += shade(scene, r, hit)
-        else:
-            result += scene.background_radiance(r.direction)
-            break
-        if hit.has_hit:
-            break
-    return result
+    tracer = scene.tracer
+    tracer.world = scene
+    tracer.stream = stream
+    return tracer.trace_ray(r, 0)
 
 
 def render_reference(scene, width: int, height: int, progress=None, sampler=None, seed: int = 0,
@@ -80,10 +61,7 @@ def render_reference(scene, width: int, height: int, progress=None, sampler=None
                 else:
                     ray = camera.gen_ray(sx, sy)
 
-                if scene.tracer is None or scene.show_ray_direction:
-                    color = trace(scene, ray)
-                else:
-                    color = scene.tracer.trace_ray(scene, ray, pixel, s, seed)
+                color = trace(scene, ray, (pixel, s, seed))
 
                 total[0] += color.x
                 total[1] += color.y
@@ -91,66 +69,6 @@ def render_reference(scene, width: int, height: int, progress=None, sampler=None
         if progress is not None:
             progress(iy + 1, height)
     return sums
-
-
-def lens_sample(sampler, pixel: int, s: int, seed: int) -> tuple:
-    """The square sample a ThinLens maps to its lens: the sampler's, from a set of its own
-    (the stream's LENS_SET dimension); the centre without a sampler."""
-    if sampler is None:
-        return (0.5, 0.5)
-    return sampler.sample_unit_square(pixel, s, seed, LENS_SET)
-
-
-def pixel_sampler(scene, spp):
-    """The sampler of a render: the scene's (Suffern's view-plane sampler), with ``spp``
-    samples if given; without one in the scene, Jittered(spp) for a square spp and
-    NRooks(spp) otherwise. None for one sample through each pixel's centre."""
-    if spp is None:
-        return scene.sampler
-    if isinstance(spp, bool) or not isinstance(spp, (int, np.integer)) or spp < 1:
-        raise ValueError("spp (samples per pixel) must be an integer >= 1, got %r" % (spp,))
-    spp = int(spp)
-    if scene.sampler is not None:
-        if scene.sampler.num_samples == spp:
-            return scene.sampler
-        try:
-            return scene.sampler.with_num_samples(spp)
-        except ValueError as error:
-            raise ValueError("spp: %s" % error) from None
-    if spp == 1:
-        return None
-    return sampler_of(Jittered if math.isqrt(spp) ** 2 == spp else NRooks, spp)
-
-
-def check_size(width, height) -> None:
-    for name, value in (("width", width), ("height", height)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:
-            raise ValueError("%s must be an integer >= 1, got %r" % (name, value))
-
-
-def check_options(backend, precision, formula):
-    """The backend, and its precision (each backend's own if None), checked."""
-    if backend not in BACKENDS:
-        raise ValueError("backend must be one of %s, got %r" % (", ".join(BACKENDS), backend))
-    if precision is None:  # each backend's own: WGSL computes in float32
-        precision = "float32" if backend == "wgpu" else "float64"
-    if precision not in PRECISIONS:
-        raise ValueError("precision must be one of %s, got %r" % (", ".join(PRECISIONS), precision))
-    if formula is not None and formula not in FORMULAS:
-        raise ValueError("formula must be one of %s, got %r" % (", ".join(FORMULAS), formula))
-    if backend == "reference":
-        if precision != "float64":
-            raise ValueError("precision: the reference backend computes in float64 only")
-        if formula not in (None, "slide"):
-            raise ValueError("formula: the reference backend computes the slide formulas only, got %r"
-                             % formula)
-    elif backend == "numba":
-        if importlib.util.find_spec(__package__ + ".kernels") is None:
-            raise ValueError("backend: the numba path is not part of this release of rtfgu (it computes "
-                             "the assignments' functions again); render with backend='reference'")
-    elif precision != "float32":
-        raise ValueError("precision: the wgpu backend computes in float32 only, got %r" % precision)
-    return precision
 
 
 def render_passes(scene, width: int, height: int, backend: str = "reference",

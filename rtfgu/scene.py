@@ -1,32 +1,35 @@
-"""Scene: a camera and a number of shapes (lecture 01, "Scene"), plus the 02562 additions a
-shaded image needs: lights, a background colour, whether shadow rays are cast, and which
-tracer turns a ray into a colour."""
+"""Scene: a camera and a number of shapes (lecture 01, "Scene"), plus what the book's World
+holds for shading (Suffern ch. 14): lights, the ambient light, a background colour, and the
+tracer that turns a ray into a colour."""
 from __future__ import annotations
 
 from .cameras.camera import Camera
 from .float3 import Float3, as_float3
+from .hit_info import HitInfo
 from .ray import Ray
-from .shading import HitInfo
 
 
 class Scene:
     def __init__(self, camera: Camera | None = None):
+        from .lights.ambient import Ambient
+        from .tracers.whitted import Whitted
+
         self.camera = camera
         self.shapes = []
         self.lights = []
         self.background = Float3(0.0)
-        # 02562 week 2 renders diffuse shading first without, then with, shadow rays.
-        self.shadows = True
+        # The book's world.ambient_ptr: Ambient() (ls 1, white) is the 02562 scene's, whose
+        # 10 % ambient term is a Matte's ka = 0.1.
+        self.ambient_light = Ambient()
         # 02562 week 1's first image: every pixel shows its eye ray's direction, d * 0.5 + 0.5.
         self.show_ray_direction = False
         # Suffern's view-plane sampler (ch. 5): the points of each pixel that rays go through.
         # None: one ray through each pixel's centre. render(..., spp=N) overrides its count.
         self.sampler = None
-        # How a pixel's ray becomes a colour: None is the 02562 ray-cast loop
-        # (rtfgu.renderer.trace); Suffern's PathTrace (rtfgu.path_trace) traces paths.
-        self.tracer = None
+        # How a ray becomes a colour (rtfgu/tracers): Whitted() is the 02562 path loop.
+        self.tracer = Whitted()
         # What a ray that leaves the scene sees: None is ``background`` from every direction;
-        # an EnvironmentLight (rtfgu.environment_light) its image.
+        # an EnvironmentLight (rtfgu/lights/environment_light.py) its image.
         self.environment = None
 
     def background_radiance(self, direction: Float3) -> Float3:
@@ -38,7 +41,8 @@ class Scene:
 
     def intersect(self, ray: Ray, hit: HitInfo) -> bool:
         """``intersect_scene``: the slide's inner loop over the shapes; each hit shrinks
-        ray.tmax, so the last shape that reports a hit is the nearest one."""
+        ray.tmax, so the last shape that reports a hit is the nearest one. The hit records
+        the shape's material and the surface's colour there (Material.color_at)."""
         hit_shape = None
         for shape in self.shapes:
             if shape.intersect_p(ray):
@@ -48,47 +52,61 @@ class Scene:
             hit.dist = ray.tmax
             hit.position = ray(ray.tmax)
             hit.normal = hit_shape.normal_at(hit.position)
-            color = hit_shape.color
-            texture = hit_shape.material.texture
-            if texture is not None:      # the texture's colour at the hit replaces the shape's
-                color = texture.color_at(*hit_shape.texcoord(hit.position))
-            hit.set_material(color, hit_shape.material)
+            hit.material = hit_shape.material
+            hit.color = hit_shape.material.color_at(hit_shape, hit.position)
         return hit.has_hit
+
+    def light_sample(self, light, sr) -> tuple:
+        """The point (u, v) of the unit square from which ``light`` draws at ``sr``: its
+        sampler's, or the random stream's in the path dimensions LIGHT_U + 2 j and the next,
+        j the number of lights of its kind before it in ``lights``."""
+        from .sampling.random import LIGHT_U, path_dimension, random_float
+
+        j = 0
+        for other in self.lights:
+            if other is light:
+                break
+            j += type(other) is type(light)
+        dimension = path_dimension(sr.depth, LIGHT_U + 2 * j)
+        if light.sampler is not None:
+            return light.sampler.sample_unit_square(sr.pixel, sr.sample, sr.seed, dimension)
+        return (random_float(sr.pixel, sr.sample, dimension, sr.seed),
+                random_float(sr.pixel, sr.sample, path_dimension(sr.depth, LIGHT_U + 2 * j + 1), sr.seed))
 
     def validate(self) -> None:
         """Raise a ValueError naming the field if this scene cannot be rendered."""
-        from .cameras.camera import Camera as _Camera
-        from .registry import LIGHTS
+        from .lights.ambient import Ambient
+        from .lights.environment_light import EnvironmentLight
+        from .lights.light import Light
         from .sampling.sampler import Sampler
         from .shapes.shape import Shape
+        from .tracers.tracer import Tracer
 
-        if not isinstance(self.camera, _Camera):
+        if not isinstance(self.camera, Camera):
             raise ValueError("Scene.camera must be a Camera, got %r" % (self.camera,))
         for i, shape in enumerate(self.shapes):
             if not isinstance(shape, Shape):
                 raise ValueError("Scene.shapes[%d] must be a Shape, got %r" % (i, shape))
         for i, light in enumerate(self.lights):
-            if not isinstance(light, tuple(kind.cls for kind in LIGHTS)):
-                raise ValueError("Scene.lights[%d] must be one of %s, got %r"
-                                 % (i, ", ".join(kind.record for kind in LIGHTS), light))
+            if not isinstance(light, Light) or isinstance(light, (Ambient, EnvironmentLight)):
+                raise ValueError("Scene.lights[%d] must be a PointLight, Directional, AreaLight or "
+                                 "AmbientOccluder, got %r (the ambient light is Scene.ambient_light, an "
+                                 "environment Scene.environment)" % (i, light))
+        if not isinstance(self.ambient_light, Ambient):
+            raise ValueError("Scene.ambient_light must be an Ambient, got %r" % (self.ambient_light,))
         if self.sampler is not None and not isinstance(self.sampler, Sampler):
             raise ValueError("Scene.sampler must be a Sampler or None, got %r" % (self.sampler,))
         self.background = as_float3(self.background, "Scene.background")
-        if self.environment is not None:
-            from .environment_light import EnvironmentLight
-            if not isinstance(self.environment, EnvironmentLight):
-                raise ValueError("Scene.environment must be None or an EnvironmentLight, got %r"
-                                 % (self.environment,))
-        if self.tracer is None:
+        if self.environment is not None and not isinstance(self.environment, EnvironmentLight):
+            raise ValueError("Scene.environment must be None or an EnvironmentLight, got %r"
+                             % (self.environment,))
+        if not isinstance(self.tracer, Tracer):
+            raise ValueError("Scene.tracer must be a Tracer (RayCast, Whitted, AreaLighting, PathTrace, "
+                             "GlobalTrace), got %r" % (self.tracer,))
+        if not hasattr(self.tracer, "samples_lights_at"):
             for i, light in enumerate(self.lights):
-                kind = next(k for k in LIGHTS if isinstance(light, k.cls))
-                if not kind.ray_cast:
-                    raise ValueError("Scene.lights[%d]: a %s samples directions, which the ray-cast loop does "
-                                     "not; render with scene.tracer = PathTrace(...) (max_depth=1 for its "
-                                     "image alone)" % (i, kind.record))
-        if self.tracer is not None:
-            from .path_trace import PathTrace
-            if not isinstance(self.tracer, PathTrace):
-                raise ValueError("Scene.tracer must be None (ray casting) or a PathTrace, got %r"
-                                 % (self.tracer,))
-            self.tracer.validate(self)
+                if not light.drawn_by_ray_casting:
+                    raise ValueError("Scene.lights[%d]: a %s samples directions, which the %s tracer does not; "
+                                     "render with scene.tracer = PathTrace(...) (max_depth=1 for its image alone)"
+                                     % (i, type(light).__name__, type(self.tracer).__name__))
+        self.tracer.validate(self)

@@ -55,12 +55,12 @@ def test_solution_files_are_the_source_without_the_marker_lines(aid):
 
 
 def test_later_assignments_are_stubbed_and_earlier_ones_kept_in_a_shared_file():
-    a04 = student_files("a04")["shading.py"]
-    a05 = student_files("a05")["shading.py"]
-    assert 'NotImplementedError(\'a04: lambertian\')' in a04
-    assert 'NotImplementedError(\'a05: phong\')' in a04          # not yet released in a04
-    assert "NotImplementedError('a04: lambertian')" not in a05     # a04's solution is released by a05
-    assert "NotImplementedError('a05: in_shadow')" in a05
+    a04 = student_files("a04")["brdfs/lambertian.py"]
+    a09 = student_files("a09")["brdfs/lambertian.py"]
+    assert "NotImplementedError('a04: Lambertian.f')" in a04
+    assert "NotImplementedError('a09: Lambertian.sample_f')" in a04     # not yet released in a04
+    assert "NotImplementedError('a04: Lambertian.f')" not in a09        # a04's solution is released by a09
+    assert "NotImplementedError('a09: Lambertian.sample_f')" in a09
 
 
 def test_transform_keeps_nested_indentation_and_rejects_unknown_blocks():
@@ -87,8 +87,10 @@ def test_readmes_name_the_task_formulas_slides_and_images():
 def test_block_table_covers_the_lecture_layer_files():
     files = {key[0] for key in block_table()}
     for f in ("float3.py", "ray.py", "cameras/orthographic.py", "cameras/pinhole.py", "shapes/plane.py",
-              "shapes/sphere.py", "shapes/triangle.py", "lights.py", "shading.py", "textures/image_texture.py",
-              "accelerators/bbox.py", "accelerators/bvh.py"):
+              "shapes/sphere.py", "shapes/triangle.py", "lights/point_light.py", "lights/light.py",
+              "brdfs/lambertian.py", "brdfs/glossy_specular.py", "brdfs/perfect_specular.py",
+              "btdfs/perfect_transmitter.py", "materials/matte.py", "materials/reflective.py",
+              "textures/image_texture.py", "accelerators/bbox.py", "accelerators/bvh.py", "sampling/maps.py"):
         assert f in files
         assert (PACKAGE_DIR / f).is_file()
 

@@ -98,13 +98,15 @@ def test_shape_colour_non_finite():
         Sphere(Float3(0, 0, 0), 1.0, Float3(NAN, 0, 0))
 
 
-def test_material_unknown_shader_and_bad_numbers():
-    with raises_naming("shader"):
+def test_material_bad_colour_and_bad_numbers():
+    # A material's kind is its class (its ``shader`` follows from it); its first argument is
+    # the surface colour cd.
+    with raises_naming("Material.cd"):
         Material(99)
-    with raises_naming("ior"):
-        Material(rtfgu.TRANSPARENT, ior=0.0)
-    with raises_naming("shininess"):
-        Material(rtfgu.PHONG, shininess=NAN)
+    with raises_naming("Transparent.ior"):
+        rtfgu.Transparent(ior=0.0)
+    with raises_naming("Phong.exp"):
+        rtfgu.Phong(exp=NAN)
 
 
 def test_point_light_non_finite():

@@ -21,7 +21,7 @@ import numpy as np
 import pytest
 
 from rtfgu import PathTrace, render
-from rtfgu.scenes.meshes import cornell_box_blocks
+from rtfgu.scenes.meshes import cornell_box_area_light
 
 DATA = Path(__file__).resolve().parent / "data" / "cornell_mitsuba.npz"
 SEEDS = 16
@@ -29,8 +29,12 @@ SPP = {"numba": 256, "wgpu": 128}      # per seed; llvmpipe is slower
 
 
 def cornell():
-    scene = cornell_box_blocks()
+    """The box with its blocks, every face a path-traced Matte (kd 1: its albedo is its
+    colour, as Mitsuba's diffuse reflectance), path traced to full depth, no sampler of its
+    own (render's spp)."""
+    scene = cornell_box_area_light()
     scene.tracer = PathTrace()
+    scene.sampler = None
     return scene
 
 

@@ -14,7 +14,7 @@ import pytest
 from rtfgu import Float3, OrthographicCamera, Plane, Scene, Sphere
 from rtfgu.__main__ import main
 from rtfgu.debug import TOLERANCES, Bounce, first_difference, trace_pixel
-from rtfgu.material import LAMBERTIAN, MIRROR, Material
+from rtfgu.materials import Matte, Reflective
 from rtfgu.scenes import get_scene
 from wgsl_support import wgpu_device  # noqa: F401  (fixture)
 
@@ -24,8 +24,8 @@ BESIDE_THE_SPHERE = (0, 0)  # the mirrored ray passes the far sphere by 0.7 radi
 
 def far_sphere_in_a_mirror():
     scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
-    scene.shapes = [Plane((0.0, 0.0, -1.0), (0.0, 0.0, 1.0), (1.0, 1.0, 1.0), Material(MIRROR)),
-                    Sphere((0.0, 0.0, 1.0e4), 0.5, (1.0, 0.0, 0.0), Material(LAMBERTIAN))]
+    scene.shapes = [Plane((0.0, 0.0, -1.0), (0.0, 0.0, 1.0), (1.0, 1.0, 1.0), Reflective()),
+                    Sphere((0.0, 0.0, 1.0e4), 0.5, (1.0, 0.0, 0.0), Matte())]
     scene.background = Float3(0.1, 0.3, 0.6)
     return scene
 

@@ -10,8 +10,8 @@ import pytest
 
 from rtfgu import Directional, Float3, OrthographicCamera, Plane, Scene, Sphere
 from rtfgu.layout import compile_scene
-from rtfgu.material import LAMBERTIAN, Material
-from rtfgu.shading import AMBIENT_FRACTION, DIFFUSE_FRACTION
+from rtfgu.materials import Matte
+from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
 
 CLOSE = {"float64": 1e-14, "float32": 1e-6}
 COLOR = (0.5, 0.25, 1.0)
@@ -19,13 +19,14 @@ COLOR = (0.5, 0.25, 1.0)
 
 def lit_floor(shadows: bool) -> Scene:
     scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
-    scene.shadows = shadows
-    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(*COLOR),
-                              Material(LAMBERTIAN)))
+    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(*COLOR), Matte()))
     # Far along the light's way back from x = 100: it hides that point, 10^6 away, from the light.
-    scene.shapes.append(Sphere(Float3(100.0 + 3e5, 4e5, 0.0), 10.0, Float3(1.0), Material(LAMBERTIAN)))
-    # Light travelling along (-3, -4, 0): w_i = (0.6, 0.8, 0), cos = 0.8 on the floor.
-    scene.lights.append(Directional(Float3(-3.0, -4.0, 0.0), Float3(math.pi)))
+    scene.shapes.append(Sphere(Float3(100.0 + 3e5, 4e5, 0.0), 10.0, Float3(1.0), Matte()))
+    # Toward the light (3, 4, 0), the light travelling along (-3, -4, 0): w_i = (0.6, 0.8, 0),
+    # cos = 0.8 on the floor.
+    light = Directional(Float3(3.0, 4.0, 0.0), Float3(math.pi))
+    light.set_shadows(shadows)
+    scene.lights.append(light)
     return scene
 
 
@@ -54,7 +55,9 @@ def test_a_shape_anywhere_along_the_way_back_casts_a_shadow(path):
 
 def test_light_from_below_adds_nothing(path):
     scene = lit_floor(False)
-    scene.lights[0] = Directional(Float3(0.0, 1.0, 0.0), Float3(math.pi))
+    # toward the light (0, -1, 0): it shines up, on the floor's back
+    scene.lights[0] = Directional(Float3(0.0, -1.0, 0.0), Float3(math.pi))
+    scene.lights[0].set_shadows(False)
     bounce = path.trace(scene, [((0.0, 1.0, 0.0), (0.0, -1.0, 0.0), 0.0, math.inf)])[0][0]
     assert close(bounce.color, expected(0.0), path.precision)
 
@@ -64,6 +67,7 @@ def test_point_and_directional_lights_add_up(path):
 
     scene = lit_floor(False)
     scene.lights.append(PointLight(Float3(0.0, 2.0, 0.0), Float3(4 * math.pi)))
+    scene.lights[1].set_shadows(False)
     bounce = path.trace(scene, [((0.0, 1.0, 0.0), (0.0, -1.0, 0.0), 0.0, math.inf)])[0][0]
     # The point light 2 above: L_i = 4 pi / 4 = pi, cos = 1.
     want = tuple(a + c * DIFFUSE_FRACTION for a, c in zip(expected(0.8), COLOR))

@@ -66,7 +66,8 @@ def test_fresh_stubs_score_zero_and_the_grader_finishes(tmp_path, aid):
 # submission, assignment, {test number: words the message must contain}; every other test keeps its points
 PLANTED = [
     ("a03_discriminant_sign", "a03", {"3.2": "b^2 - 4ac", "3.3": "discriminant", "3.4": "discriminant",
-                                      "3.7": "pixels", "3.8": "pixels", "3.10": "discriminant"}),
+                                      "3.7": "pixels", "3.8": "pixels", "3.9": "closest shape should be",
+                                      "3.10": "discriminant"}),
     ("a03_missing_tmin", "a03", {"3.4": "less than ray.tmin"}),
     ("a03_unnormalised_normal", "a03", {"3.6": "unit vector"}),
     ("a03_sphere_a_is_one", "a03", {"3.2": "as if a = d . d were 1", "3.9": "should be",
@@ -86,9 +87,9 @@ PLANTED = [
                                   "7.6": "upside down", "7.7": "pixels", "7.8": "pixels", "7.9": "upside down",
                                   "7.10": "upside down", "7.11": "pixels", "7.12": "pixels"}),
     ("a08_slab_no_swap", "a08", {"8.2": "swap t_near and t_far", "8.3": "swap t_near and t_far",
-                                 "8.4": "swap t_near and t_far", "8.5": "never visited", "8.6": "found nothing",
-                                 "8.7": "never visited", "8.9": "swap t_near and t_far",
-                                 "8.10": "swap t_near and t_far", "8.11": "never visited", "8.12": "never visited"}),
+                                 "8.4": "swap t_near and t_far", "8.5": "BBox.hit", "8.6": "found nothing",
+                                 "8.7": "BBox.hit", "8.8": "BBox.hit", "8.9": "swap t_near and t_far",
+                                 "8.10": "swap t_near and t_far", "8.11": "BBox.hit", "8.12": "BBox.hit"}),
     ("a08_slab_ignores_tmax", "a08", {"8.3": "start with t1 = ray.tmax"}),
     ("a08_first_hit_found", "a08", {"8.7": "stopped at the first hit found", "8.8": "earlier one",
                                     "8.11": "first hit found"}),
@@ -469,8 +470,9 @@ def test_under_the_user_fallback_a_result_folder_is_closed_to_the_sandbox_users(
 
 
 def test_a_state_file_a_sandbox_user_planted_does_not_choose_the_mode_the_checkout_gets_back(tmp_path, monkeypatch):
-    # The fallback records the staff folder's mode in a file in the temporary folder, which
-    # any user may write to first; a file that is not the grader's own is replaced.
+    # The fallback records the staff folder's mode in its own root-only state folder; a file a
+    # sandbox user plants in the temporary folder, where the state once lived, chooses nothing
+    # and is left as it is.
     import stat
     import tempfile
 
@@ -493,7 +495,8 @@ def test_a_state_file_a_sandbox_user_planted_does_not_choose_the_mode_the_checko
     with sandbox.hidden_from_sandbox_user("unprivileged user"):
         assert stat.S_IMODE(os.stat(staff).st_mode) == 0o700
     assert stat.S_IMODE(os.stat(staff).st_mode) == 0o755
-    assert planted.stat().st_uid == os.getuid() and not planted.stat().st_mode & 0o077
+    assert planted.stat().st_uid == sandbox.SANDBOX_UID
+    assert json.loads(planted.read_text()) == {str(staff): {"mode": 0o777, "pids": []}}
 
 
 def test_bwrap_grades_while_the_fallback_has_the_checkout_closed(tmp_path, monkeypatch):

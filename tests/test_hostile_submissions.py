@@ -8,7 +8,9 @@ connection is made.
 An attack that gets what it is after says so: it returns the right answer (the score rises)
 or raises ``LEAKED ...`` (the message shows it). Every attack runs under bubblewrap (skipped,
 naming the Debian package, where it cannot run) and the important ones also under the
-fallback this machine allows as root (an unprivileged user).
+fallback this machine allows as root (an unprivileged user), with the namespaces root may
+make here and without them (RTFGU_FALLBACK_NAMESPACES=0), as a container that forbids them
+runs it. tests/test_grader_fallback.py holds the attacks on the grader itself.
 """
 from __future__ import annotations
 
@@ -44,6 +46,7 @@ ONLY = ("01_plane_intersect_p_hits_misses_and_the_ray_interv", "02_sphere_inters
         "05_triangle_intersect_p_inside_outside_and_the_ray_",
         "10_sphere_intersect_p_with_directions_that_are_not_")
 FALLBACK = "user"
+BARE = "user without namespaces"       # the fallback as a container that forbids namespaces runs it
 
 
 def _skip_without(isolation: str) -> None:
@@ -51,14 +54,15 @@ def _skip_without(isolation: str) -> None:
         if not bwrap_works(find_bwrap()):
             pytest.skip("bubblewrap is not installed or cannot run here (Debian package bubblewrap; "
                         "`make venv` fetches it)")
-    elif isolation == "user" and os.geteuid() != 0:
+    elif isolation in (FALLBACK, BARE) and os.geteuid() != 0:
         pytest.skip("the unprivileged-user fallback needs the grader to run as root")
 
 
-@pytest.fixture(params=["bwrap", FALLBACK])
+@pytest.fixture(params=["bwrap", FALLBACK, BARE])
 def isolation(request, monkeypatch):
     _skip_without(request.param)
-    monkeypatch.setenv("RTFGU_ISOLATION", request.param)
+    monkeypatch.setenv("RTFGU_ISOLATION", "user" if request.param == BARE else request.param)
+    monkeypatch.setenv("RTFGU_FALLBACK_NAMESPACES", "0" if request.param == BARE else "1")
     return request.param
 
 
@@ -119,7 +123,7 @@ def _staff_digest() -> dict:
 def _grade_attack(tmp_path: Path, isolation: str, attack: str, only=ONLY):
     before, staff = _git_status(), _staff_digest()
     result = grade("a03", _submission(tmp_path / "sub", attack), tmp_path / "out", only=only)
-    assert result.isolation == {"bwrap": "bwrap", "user": "unprivileged user"}[isolation]
+    assert result.isolation == {"bwrap": "bwrap", FALLBACK: "unprivileged user", BARE: "unprivileged user"}[isolation]
     assert _staff_digest() == staff
     assert _git_status() == before
     for test in result.tests:

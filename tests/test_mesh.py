@@ -72,7 +72,7 @@ def test_a_mesh_triangle_is_the_watertight_test_with_the_normal_and_texcoord_of_
 
 def test_mesh_triangles_are_shapes_with_the_faces_colour_and_material():
     colors = np.array([(i / 8, 0.25, 0.5) for i in range(8)])
-    materials = [Material(rtfgu.LAMBERTIAN) for _ in range(8)]
+    materials = [rtfgu.Matte() for _ in range(8)]
     mesh = octahedron()
     mesh = Mesh(mesh.vertices, mesh.faces, colors, material=materials)
     triangles = mesh.triangles()
@@ -81,7 +81,7 @@ def test_mesh_triangles_are_shapes_with_the_faces_colour_and_material():
         assert isinstance(t, rtfgu.Shape) and t.mesh is mesh and t.face == i
         assert (t.index0, t.index1, t.index2) == OCTAHEDRON_FACES[i]
         assert components(t.color) == tuple(colors[i]) and t.material is materials[i]
-    one = Material(rtfgu.PHONG, specular=(0.1, 0.1, 0.1), shininess=10)
+    one = rtfgu.Phong(cs=(0.1, 0.1, 0.1), exp=10)
     assert all(t.material is one for t in octahedron(material=one).triangles())
     with pytest.raises(TypeError):
         MeshTriangle(mesh, 0)                                    # the normal is the subclass's
@@ -302,7 +302,7 @@ def colour_at(mesh: Mesh, x: float) -> tuple:
 
 def test_load_obj_gives_each_face_its_mtl_material(tmp_path):
     write(tmp_path, "box.mtl", MATERIALS_MTL)
-    base = Material(rtfgu.LAMBERTIAN)
+    base = rtfgu.Matte()
     mesh = load_obj(write(tmp_path, "box.obj", MATERIALS_OBJ), material=base, default_color=(0.25, 0.5, 1))
     assert mesh.num_triangles == 4
     assert colour_at(mesh, 1) == ((0.25, 0.5, 1), base)         # before any usemtl: the default

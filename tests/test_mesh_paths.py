@@ -15,7 +15,7 @@ import trimesh
 from rtfgu import Float3, OrthographicCamera, Plane, PointLight, Scene, Sphere, Triangle
 from rtfgu.accelerators import flat_bvh
 from rtfgu.layout import compile_scene
-from rtfgu.material import LAMBERTIAN, Material
+from rtfgu.materials import Material, Matte, Reflective
 from rtfgu.shapes.mesh import Mesh
 
 GREY = (0.5, 0.5, 0.5)
@@ -110,8 +110,8 @@ def test_two_copies_of_a_mesh_at_the_same_place_show_the_earlier_one(path):
 
 def test_a_mesh_casts_shadows_and_a_light_in_front_of_it_lights_the_floor(path):
     square = Mesh(np.array([(-1, 1, -1), (1, 1, -1), (-1, 1, 1), (1, 1, 1)], float),
-                  np.array([(0, 2, 1), (1, 2, 3)]), GREY, material=Material(LAMBERTIAN))
-    floor = Plane(Float3(0, 0, 0), Float3(0, 1, 0), Float3(1.0), Material(LAMBERTIAN))
+                  np.array([(0, 2, 1), (1, 2, 3)]), GREY, material=Matte())
+    floor = Plane(Float3(0, 0, 0), Float3(0, 1, 0), Float3(1.0), Matte())
     ray = [((0.0, 0.5, 0.0), (0.0, -1.0, 0.0), 0.0, math.inf)]
     above = scene_of(floor, square)
     above.lights.append(PointLight(Float3(0, 4, 0), Float3(16.0)))
@@ -192,14 +192,12 @@ def test_a_mesh_takes_at_most_64_bytes_per_triangle_with_its_bvh_in_float32():
 def many_spheres(count: int, seed: int = 11) -> Scene:
     """``count`` spheres, some mirrors, over a floor, under a point light: shadow and
     secondary rays meet spheres through the BVH when count >= BVH_MIN_SPHERES."""
-    from rtfgu.material import MIRROR
-
     rng = random.Random(seed)
-    scene = scene_of(Plane(Float3(0, -1, 0), Float3(0, 1, 0), Float3(0.8), Material(LAMBERTIAN)))
+    scene = scene_of(Plane(Float3(0, -1, 0), Float3(0, 1, 0), Float3(0.8), Matte()))
     for i in range(count):
         center = Float3(rng.uniform(-1, 1), rng.uniform(-0.8, 0.8), rng.uniform(-1, 1))
         scene.shapes.append(Sphere(center, rng.uniform(0.05, 0.2), Float3(0.2, 0.5, 0.9),
-                                   Material(MIRROR if i % 3 == 0 else LAMBERTIAN)))
+                                   Reflective() if i % 3 == 0 else Matte()))
     scene.lights.append(PointLight(Float3(0.5, 3, 0.5), Float3(10.0)))
     return scene
 
@@ -219,16 +217,15 @@ def test_spheres_seen_only_by_primary_rays_from_a_pinhole_stay_in_the_culled_loo
     spheres: no BVH. The same spheres under another camera, or casting shadows, are in it."""
     from rtfgu import PinholeCamera
     from rtfgu.layout import BVH_MIN_SPHERES
-    from rtfgu.material import BASE_COLOR
 
     def spheres(camera, shadows):
         scene = Scene(camera)
         rng = random.Random(5)
         for _ in range(BVH_MIN_SPHERES * 2):
             center = Float3(rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-1, 1))
-            scene.shapes.append(Sphere(center, 0.1, Float3(0.5), Material(BASE_COLOR)))
+            scene.shapes.append(Sphere(center, 0.1, Float3(0.5), Material()))
         if shadows:
-            scene.shapes[0].material = Material(LAMBERTIAN)
+            scene.shapes[0].material = Matte()
             scene.lights.append(PointLight(Float3(0, 3, 0), Float3(1.0)))
         return scene
 
@@ -269,7 +266,7 @@ def test_a_textured_mesh_takes_its_colour_at_the_faces_barycentrics(path):
     sphere = trimesh.creation.icosphere(subdivisions=1)
     checker = Checker(Float3(1.0, 0.25, 0.0), Float3(0.0, 0.5, 1.0), 0.25)
     mesh = Mesh(np.asarray(sphere.vertices), np.asarray(sphere.faces), GREY,
-                normals=np.asarray(sphere.vertex_normals), material=Material(LAMBERTIAN, texture=checker))
+                normals=np.asarray(sphere.vertex_normals), material=Matte(cd=checker))
     scene = scene_of(mesh)
     scene.lights.append(PointLight(Float3(2, 3, 4), Float3(20.0)))
     rays = random_rays(60, seed=23)

@@ -75,11 +75,13 @@ def reference_signatures(scene, width, height, spp=None):
                 sp = (0.5, 0.5) if sampler is None else sampler.sample_unit_square(pixel, s)
                 sx = 2 * (ix + sp[0]) / width - 1
                 sy = 2 * (iy + sp[1]) / height - 1
+                # the sample's own random numbers (seed 0, as render's): a stochastic
+                # tracer follows the path the image took
                 if scene.camera.uses_lens:
                     lens = concentric_map(*lens_sample(sampler, pixel, s, 0))
-                    trace(scene, scene.camera.gen_ray(sx, sy, lens))
+                    trace(scene, scene.camera.gen_ray(sx, sy, lens), (pixel, s, 0))
                 else:
-                    trace(scene, scene.camera.gen_ray(sx, sy))
+                    trace(scene, scene.camera.gen_ray(sx, sy), (pixel, s, 0))
             signatures[height - 1 - iy, ix] = tuple(log)
     return signatures
 

@@ -1,4 +1,4 @@
-"""PathTrace (rtfgu.path_trace) against exact truths, on the lecture layer and numba (float64
+"""PathTrace (rtfgu.tracers.path_trace) against exact truths, on the lecture layer and numba (float64
 and float32).
 
 What is checked, and the exact value each check compares with:
@@ -19,8 +19,9 @@ What is checked, and the exact value each check compares with:
    estimation over all the faces a path of at most D vertices has the expectation
    e * sum_{k=0}^{D} rho^k (derived at box_truth).
 3. Chi-square tests (as tests/test_sampling.py): cosine_direction has the density
-   cos(theta) / pi about its normal, AreaLight.sample_point is uniform by area on a
-   triangle and on a sphere; the numba twins give the lecture layer's numbers.
+   cos(theta) / pi about its normal, the points an AreaLight draws (get_direction) are
+   uniform by area on a triangle and on a sphere; the numba twins give the lecture layer's
+   numbers.
 4. The direct light of a spherical and of a square AreaLight on a diffuse floor (PathTrace
    with one vertex) against the closed-form irradiance: pixel = rho / pi * E.
 5. Bad input is a ValueError naming the field; a render with shading points on a light's
@@ -42,14 +43,15 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from rtfgu import (AreaLight, Emissive, Float3, LAMBERTIAN, MIRROR, TRANSPARENT, Material, Mesh,
-                   PinholeCamera, Plane, Regular, Scene, Sphere, Triangle, render)
+from rtfgu import (AreaLight, Emissive, Float3, GlossySpecular, Lambertian, Mesh, PathTrace, PinholeCamera, Plane,
+                   Reflective, Regular, Scene, Sphere, Transparent, Triangle, render)
+from rtfgu.brdfs.perfect_specular import reflect
+from rtfgu.hit_info import HitInfo
 from rtfgu.image import to_8bit
 from rtfgu.layout import compile_scene
-from rtfgu.float3 import dot
-from rtfgu.lambertian import Lambertian
-from rtfgu.path_trace import PathTrace
-from rtfgu.shading import HitInfo
+from rtfgu.float3 import dot, normalize
+from rtfgu.materials import Matte
+from rtfgu.scenes.meshes import path_matte
 from warp_support import chi_square_p
 
 # (label, backend, precision) of every path that path traces.
@@ -144,9 +146,10 @@ def furnace_scene(layout: str, rho=None) -> Scene:
     scene.tracer = PathTrace(max_depth=256)
 
     def material(albedo):
+        # kd 1, no ambient term: the albedo is the shape's colour
         if rho is None:
-            return Material(LAMBERTIAN)
-        return Material(LAMBERTIAN, emission=(1.0 - albedo,) * 3)
+            return path_matte()
+        return Matte(ka=0.0, kd=1.0, emission=(1.0 - albedo,) * 3)
 
     specular = []
     if layout == "sphere":
@@ -156,12 +159,12 @@ def furnace_scene(layout: str, rho=None) -> Scene:
         spheres = [((-0.5005, 0.501, 0.0), 0.5), ((0.5005, 0.501, 0.0), 0.5),
                    ((0.0, 0.501 + 0.5005 * math.sqrt(3.0), 0.0), 0.5)]
         floor = FLOOR
-        specular = [Sphere((1.6, 0.5, 0.3), 0.4, (1.0, 1.0, 1.0), Material(MIRROR)),
-                    Sphere((-1.6, 0.5, 0.3), 0.4, (1.0, 1.0, 1.0), Material(TRANSPARENT, ior=1.5))]
+        specular = [Sphere((1.6, 0.5, 0.3), 0.4, (1.0, 1.0, 1.0), Reflective()),
+                    Sphere((-1.6, 0.5, 0.3), 0.4, (1.0, 1.0, 1.0), Transparent(ior=1.5))]
     else:
         spheres = [((-0.7, 0.8, 0.0), 0.5), ((0.65, 0.8, 0.1), 0.5)]
         floor = FLOOR
-        specular = [Sphere((0.0, 0.55, 1.1), 0.45, (1.0, 1.0, 1.0), Material(MIRROR))]
+        specular = [Sphere((0.0, 0.55, 1.1), 0.45, (1.0, 1.0, 1.0), Reflective())]
     albedos = list(rho) if rho is not None else [1.0] * (len(spheres) + (floor is not None))
     for (center, radius), albedo in zip(spheres, albedos):
         scene.shapes.append(Sphere(center, radius, (albedo,) * 3, material(albedo)))
@@ -281,7 +284,7 @@ def box_scene(max_depth: int) -> Scene:
     least 1/2 from every edge (see test_box_mean_is_exact)."""
     scene = Scene(PinholeCamera((0.0, 0.0, 0.0), (0.0, 0.0, -1.0), (0.0, 1.0, 0.0), d=1.0))
     mesh = Mesh(BOX_VERTICES, BOX_FACES, (float(BOX_RHO),) * 3,
-                material=Material(LAMBERTIAN, emission=(float(BOX_EMISSION),) * 3))
+                material=Matte(ka=0.0, kd=1.0, emission=(float(BOX_EMISSION),) * 3))
     scene.shapes += mesh.triangles()
     scene.lights += [AreaLight(face) for face in scene.shapes]
     scene.tracer = PathTrace(max_depth=max_depth)
@@ -394,9 +397,16 @@ NORMALS = [(0.0, 0.0, 1.0), (0.0, 0.0, -1.0), (1.0, 0.0, 0.0),
            tuple(np.array([0.3, -0.8, 0.52]) / np.linalg.norm([0.3, -0.8, 0.52]))]
 
 
+def at_normal(n: Float3) -> HitInfo:
+    """A hit whose normal is n (all a BRDF's sample_f reads of it)."""
+    sr = HitInfo()
+    sr.normal = n
+    return sr
+
+
 def cosine_direction(n: Float3, u: float, v: float) -> Float3:
     """The direction of the diffuse bounce (Lambertian.sample_f)."""
-    return Lambertian(Float3(1.0)).sample_f(n, u, v)[1]
+    return Lambertian(kd=1.0, cd=Float3(1.0)).sample_f(at_normal(n), -n, u, v)[1]
 
 
 @pytest.mark.parametrize("n", NORMALS, ids=["+z", "-z", "+x", "generic"])
@@ -411,7 +421,7 @@ def test_lambertian_sample_f_returns_rho_over_pi_and_the_density_it_drew_with(uv
     rho = Float3(0.25, 0.5, 0.75)
     n = Float3(*NORMALS[3])
     for u, v in uv[:500]:
-        f, w_i, pdf = Lambertian(rho).sample_f(n, u, v)
+        f, w_i, pdf = Lambertian(kd=1.0, cd=rho).sample_f(at_normal(n), n, u, v)
         assert tuple(f) == tuple(rho / math.pi)
         assert pdf == pytest.approx(dot(n, w_i) / math.pi, rel=1e-15) and pdf > 0.0
 
@@ -449,12 +459,19 @@ def power_histogram(directions, axis, power, bins=16):
     return observed, np.full((bins, bins), len(directions) / bins ** 2)
 
 
+def lobe_direction(w_r: Float3, shininess: float, u: float, v: float) -> Float3:
+    """The direction GlossySpecular.sample_f draws about the mirror direction w_r: at a
+    surface whose normal is not w_r (halfway between w_r and another direction), for the
+    w_o that this normal mirrors into w_r."""
+    n = normalize(w_r + normalize(Float3(0.3, 0.9, 0.2)))
+    wo = reflect(n, w_r)
+    return GlossySpecular(exp=shininess).sample_f(at_normal(n), wo, u, v)[1]
+
+
 @pytest.mark.parametrize("shininess", [1.0, 20.0, 300.0])
 @pytest.mark.parametrize("w_r", NORMALS[1:], ids=["-z", "+x", "generic"])
 def test_glossy_lobe_direction_has_density_of_the_phong_lobe(uv, w_r, shininess):
     """GlossyReflector's sampled lobe: (s + 1) / (2 pi) cos^s(alpha) about the mirror direction."""
-    from rtfgu.path_trace import lobe_direction
-
     directions = np.array([tuple(lobe_direction(Float3(*w_r), shininess, u, v)) for u, v in uv])
     assert np.allclose(np.linalg.norm(directions, axis=1), 1.0, atol=1e-12)
     assert chi_square_p(*power_histogram(directions, w_r, shininess + 1.0)) > ALPHA
@@ -464,7 +481,6 @@ def test_glossy_lobe_direction_has_density_of_the_phong_lobe(uv, w_r, shininess)
 
 def test_numba_glossy_lobe_direction_is_the_lecture_layers(uv):
     from rtfgu.kernels.glossy import lobe_direction as lobe_numba
-    from rtfgu.path_trace import lobe_direction
 
     w_r = NORMALS[3]
     for u, v in uv[:2000]:
@@ -473,15 +489,42 @@ def test_numba_glossy_lobe_direction_is_the_lecture_layers(uv):
         assert np.abs(got - expected).max() <= 1e-12
 
 
+class GivenSample(Scene):
+    """A scene whose lights draw the given point (u, v) of the unit square (Scene.light_sample),
+    traced by PathTrace, a tracer that samples area lights."""
+
+    def __init__(self):
+        super().__init__()
+        self.tracer = PathTrace()
+        self.uv = (0.0, 0.0)
+
+    def light_sample(self, light, sr) -> tuple:
+        return self.uv
+
+
+def light_sample(light, position: Float3, normal: Float3, u: float, v: float):
+    """What a tracer that samples lights gets from ``light`` at a hit (position, normal) for
+    the point (u, v): the direction get_direction draws, then incident (L G / pdf) and
+    distance, as the slide's record (L_i, w_i, dist)."""
+    from rtfgu.lights import LightSample
+
+    scene = GivenSample()
+    scene.uv = (u, v)
+    sr = HitInfo(scene)
+    sr.position, sr.normal = position, normal
+    w_i = light.get_direction(sr)
+    return LightSample(light.incident(sr), w_i, light.distance(sr))
+
+
 @pytest.mark.parametrize("n", NORMALS, ids=["+z", "-z", "+x", "generic"])
 def test_ambient_occluder_directions_are_uniform_on_the_hemisphere(uv, n):
-    """AmbientOccluder.sample_area: a direction uniform on the hemisphere of n (P(cos <= c) = c),
+    """AmbientOccluder: a direction uniform on the hemisphere of n (P(cos <= c) = c),
     L_i = 2 pi L, unbounded; and the numba twin gives the same."""
     from rtfgu import AmbientOccluder
     from rtfgu.kernels.lights import sample_ambient_occluder_area
 
     light = AmbientOccluder(0.5, (1.0, 0.5, 0.25))
-    samples = [light.sample_area(Float3(0.0), Float3(*n), u, v) for u, v in uv]
+    samples = [light_sample(light, Float3(0.0), Float3(*n), u, v) for u, v in uv]
     directions = np.array([tuple(sample.w_i) for sample in samples])
     assert all(sample.dist == math.inf for sample in samples)
     assert np.allclose(tuple(samples[0].L_i), (math.pi, math.pi / 2, math.pi / 4), rtol=1e-15)
@@ -536,9 +579,15 @@ def sphere_cells(points, center, radius, bins=16):
     return observed, np.full((bins, bins), len(points) / bins ** 2)
 
 
+def drawn_point(light, u, v) -> tuple:
+    """The point of ``light`` that get_direction draws for (u, v), and its normal."""
+    light_sample(light, Float3(0.0, 0.0, 8.0), Float3(0.0, 0.0, -1.0), u, v)
+    return light.sample_point, light.light_normal
+
+
 def test_triangle_light_points_are_uniform_by_area(light_scene, uv):
     light = light_scene.lights[0]
-    samples = [light.sample_point(u, v) for u, v in uv]
+    samples = [drawn_point(light, u, v) for u, v in uv]
     points = np.array([tuple(p) for p, _ in samples])
     normal = np.cross(np.subtract(LIGHT_TRIANGLE[1], LIGHT_TRIANGLE[0]),
                       np.subtract(LIGHT_TRIANGLE[2], LIGHT_TRIANGLE[0]))
@@ -556,7 +605,7 @@ def test_triangle_light_points_are_uniform_by_area(light_scene, uv):
 def test_sphere_light_points_are_uniform_by_area(light_scene, uv):
     light = light_scene.lights[1]
     center, radius = LIGHT_SPHERE
-    samples = [light.sample_point(u, v) for u, v in uv]
+    samples = [drawn_point(light, u, v) for u, v in uv]
     points = np.array([tuple(p) for p, _ in samples])
     normals = np.array([tuple(n) for _, n in samples])
     assert np.allclose(np.linalg.norm(points - center, axis=1), radius, atol=1e-12)
@@ -577,9 +626,10 @@ def takes_normal(function) -> bool:
 @pytest.mark.parametrize("j, pos", [(0, (1.5, 2.0, 4.0)), (1, (-2.0, 1.0, 3.0))],
                          ids=["triangle", "sphere"])
 def test_numba_area_light_sample_is_the_lecture_layers(light_scene, uv, j, pos):
-    """sample_area_light_area (numba) against AreaLight.sample_area for the same (u, v):
-    L_i, w_i, dist and the point p' = pos + w_i dist, to 1e-12 in float64 (and 1e-5
-    relative in float32); the lecture layer's p' is sample_point(u, v)."""
+    """sample_area_light_area (numba) against the AreaLight a tracer that samples area lights
+    asks (get_direction, then incident = L G / pdf and distance) for the same (u, v): L_i,
+    w_i, dist and the point p' = pos + w_i dist, to 1e-12 in float64 (and 1e-5 relative in
+    float32); the lecture layer's p' is the shape's sample(u, v)."""
     from rtfgu.kernels.lights import sample_area_light_area
 
     light = light_scene.lights[j]
@@ -590,9 +640,7 @@ def test_numba_area_light_sample_is_the_lecture_layers(light_scene, uv, j, pos):
     normal = Float3(*n)
 
     def lecture(u, v):
-        if takes_normal(light.sample_area):
-            return light.sample_area(p, normal, u, v)
-        return light.sample_area(p, u, v)
+        return light_sample(light, p, normal, u, v)
 
     def numba(table, dtype, u, v):
         at, facing = tuple(dtype(c) for c in pos), tuple(dtype(c) for c in n)
@@ -610,7 +658,8 @@ def test_numba_area_light_sample_is_the_lecture_layers(light_scene, uv, j, pos):
         assert np.abs(np.subtract(L_i, tuple(expected.L_i))).max() <= 1e-12 * scale
         assert np.abs(np.subtract(w_i, tuple(expected.w_i))).max() <= 1e-12
         assert abs(dist - expected.dist) <= 1e-12
-        point, _ = light.sample_point(u, v)
+        point = light.shape.sample(u, v)
+        assert (light.sample_point - point).length() <= 1e-12     # the point the light drew
         assert (p + expected.w_i * expected.dist - point).length() <= 1e-12
         assert np.abs(np.add(pos, np.multiply(w_i, dist)) - tuple(point)).max() <= 1e-12
         lit += max(tuple(expected.L_i)) > 0
@@ -633,8 +682,8 @@ def floor_triangles():
     """The square [-4, 4]^2 of the plane y = 0, facing up, diffuse with albedo 0.6."""
     s = FLOOR_SIDE
     color = (FLOOR_RHO,) * 3
-    return [Triangle((-s, 0.0, -s), (-s, 0.0, s), (s, 0.0, s), color, Material(LAMBERTIAN)),
-            Triangle((-s, 0.0, -s), (s, 0.0, s), (s, 0.0, -s), color, Material(LAMBERTIAN))]
+    return [Triangle((-s, 0.0, -s), (-s, 0.0, s), (s, 0.0, s), color, path_matte()),
+            Triangle((-s, 0.0, -s), (s, 0.0, s), (s, 0.0, -s), color, path_matte())]
 
 
 SPHERE_LIGHT = dict(center=(0.0, 2.0, 0.0), radius=0.5, L_e=3.0)
@@ -701,7 +750,7 @@ def irradiance_scene(light: str) -> Scene:
             scene.shapes.append(Triangle(*v, (1.0, 1.0, 1.0), Emissive(SQUARE_LIGHT["L_e"])))
         # A sphere under the floor, which no ray meets, keeps the scene's kinds those of the
         # other scenes (spheres, triangles, area lights): numba compiles no other kernel.
-        scene.shapes.append(Sphere((0.0, -5.0, 0.0), 0.1, (0.5, 0.5, 0.5), Material(LAMBERTIAN)))
+        scene.shapes.append(Sphere((0.0, -5.0, 0.0), 0.1, (0.5, 0.5, 0.5), path_matte()))
     scene.lights += [AreaLight(s) for s in scene.shapes if s.material.emission.x > 0]
     scene.tracer = PathTrace(max_depth=1)
     return scene
@@ -736,7 +785,7 @@ def test_area_light_gives_the_exact_irradiance(path, irradiance_scenes, light):
 # 5. Bad input
 
 def lambertian_sphere(color, emission=None):
-    return Sphere((0.0, 0.0, 0.0), 1.0, color, Material(LAMBERTIAN, emission=emission))
+    return Sphere((0.0, 0.0, 0.0), 1.0, color, Matte(ka=0.0, kd=1.0, emission=emission))
 
 
 def small_scene(*shapes, lights=()):
@@ -748,7 +797,7 @@ def small_scene(*shapes, lights=()):
 
 
 @pytest.mark.parametrize("make, field", [
-    (lambda: Material(LAMBERTIAN, emission=(-1.0, 0.0, 0.0)), "Material.emission"),
+    (lambda: Matte(ka=0.0, kd=1.0, emission=(-1.0, 0.0, 0.0)), "Matte.emission"),
     (lambda: Emissive(-1.0), "Emissive.ls"),
     (lambda: PathTrace(max_depth=0), "PathTrace.max_depth"),
     (lambda: PathTrace(max_depth=1.5), "PathTrace.max_depth"),
@@ -770,8 +819,8 @@ def test_a_light_of_a_dark_shape_says_emission():
 
 
 @pytest.mark.parametrize("scene, field", [
-    (lambda: small_scene(Sphere((0.0, 3.0, 0.0), 0.5, (1.0, 1.0, 1.0), Material(LAMBERTIAN)),
-                         lambertian_sphere((0.2, 1.5, 0.2))), "Scene.shapes[1].color"),
+    (lambda: small_scene(Sphere((0.0, 3.0, 0.0), 0.5, (1.0, 1.0, 1.0), path_matte()),
+                         lambertian_sphere((0.2, 1.5, 0.2))), "Scene.shapes[1].material (Matte)"),
     (lambda: small_scene(lambertian_sphere((0.5, 0.5, 0.5)),
                          Sphere((0.0, 3.0, 0.0), 0.5, (1.0, 1.0, 1.0), Emissive(1.0))),
      "Scene.shapes[1]"),
@@ -782,6 +831,8 @@ def test_scenes_path_tracing_refuses_name_the_field(path, scene, field):
         render_on(path, s, 2, 1, seed=0)
     if field == "Scene.shapes[1]":
         assert "AreaLight" in str(error.value)
+    else:
+        assert "albedo" in str(error.value)
 
 
 def test_an_emitter_with_its_area_light_is_accepted():
@@ -803,8 +854,8 @@ def degenerate_scene() -> Scene:
     scene = Scene(PinholeCamera((0.0, 3.0, 0.0), (0.0, 0.0, 0.0), (0.0, 0.0, -1.0), d=0.5))
     grey, white = (0.5, 0.5, 0.5), (1.0, 1.0, 1.0)
     scene.shapes += [
-        Triangle((-2.0, 0.0, -2.0), (-2.0, 0.0, 0.0), (2.0, 0.0, 0.0), grey, Material(LAMBERTIAN)),
-        Triangle((-2.0, 0.0, -2.0), (2.0, 0.0, 0.0), (2.0, 0.0, -2.0), grey, Material(LAMBERTIAN)),
+        Triangle((-2.0, 0.0, -2.0), (-2.0, 0.0, 0.0), (2.0, 0.0, 0.0), grey, path_matte()),
+        Triangle((-2.0, 0.0, -2.0), (2.0, 0.0, 0.0), (2.0, 0.0, -2.0), grey, path_matte()),
         Triangle((-1.0, 0.0, 0.0), (-1.0, 0.0, 1.0), (1.0, 0.0, 0.0), white, Emissive(2.0)),     # panel
         Triangle((-1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (1.0, 0.0, 0.0), white, Emissive(3.0)),  # standing
         Sphere((-1.0, 0.3, -1.0), 0.3, white, Emissive(1.0))]
@@ -847,8 +898,8 @@ def parity_scene() -> Scene:
     scene.shapes.append(Triangle((-0.5, 1.8, -0.5), (0.5, 1.8, -0.5), (0.0, 1.8, 0.5), (1.0, 1.0, 1.0),
                                  Emissive(4.0)))
     scene.shapes.append(Sphere((1.0, 1.2, -0.5), 0.25, (1.0, 1.0, 1.0), Emissive(2.0, (1.0, 0.8, 0.6))))
-    scene.shapes.append(Sphere((-0.5, 0.5, 0.0), 0.5, (0.9, 0.9, 0.9), Material(MIRROR)))
-    scene.shapes.append(Sphere((0.6, 0.3, 0.4), 0.3, (0.2, 0.5, 0.8), Material(LAMBERTIAN)))
+    scene.shapes.append(Sphere((-0.5, 0.5, 0.0), 0.5, (0.9, 0.9, 0.9), Reflective()))
+    scene.shapes.append(Sphere((0.6, 0.3, 0.4), 0.3, (0.2, 0.5, 0.8), path_matte()))
     scene.lights += [AreaLight(scene.shapes[2]), AreaLight(scene.shapes[3])]
     scene.tracer = PathTrace(max_depth=16)
     return scene

@@ -89,9 +89,9 @@ def test_the_student_package_has_no_solution_line_no_twin_and_no_grader(tmp_path
     # revealed; the lecture layer's path tracer ships with a04 and a05, calling the a09 stubs
     a08 = build_package(tmp_path / "a08", reveal=("a01", "a02", "a03", "a04", "a05", "a06", "a07", "a08"))
     assert not (a08 / "kernels").exists() and not (a08 / "wgsl" / "hemisphere_map.wgsl").exists()
-    assert not (a08 / "wgsl" / "path_trace.wgsl").exists() and (a08 / "path_trace.py").is_file()
+    assert not (a08 / "wgsl" / "path_trace.wgsl").exists() and (a08 / "tracers" / "path_trace.py").is_file()
     assert "raise NotImplementedError('a09: hemisphere_map')" in (a08 / "sampling" / "maps.py").read_text()
-    assert "raise NotImplementedError('a09: Lambertian.sample_f')" in (a08 / "lambertian.py").read_text()
+    assert "raise NotImplementedError('a09: Lambertian.sample_f')" in (a08 / "brdfs" / "lambertian.py").read_text()
     assert (full / "kernels" / "sampling.py").is_file() and (full / "wgsl" / "hemisphere_map.wgsl").is_file()
 
 
@@ -113,16 +113,18 @@ TWIN_NAMES = {
     "a02": ("gen_ray", "get_camera_ray"),
     "a03": ("intersect_p", "normal_at", "intersect_plane", "intersect_sphere", "intersect_triangle",
             "normal_plane", "normal_sphere", "normal_triangle", "sphere_roots"),
-    "a04": ("sample_point_light", "lambertian", "brdf_lambertian", "direct_light"),
-    "a05": ("in_shadow", "phong", "brdf_phong", "mirror", "transparent", "glossy"),
+    "a04": ("sample_point_light", "point_light", "lambertian", "brdf_lambertian", "direct_light"),
+    "a05": ("in_shadow", "phong", "brdf_phong", "mirror", "transparent", "glossy", "glossy_lobe",
+            "transmitted_direction"),
     "a06": ("intersect_plane", "intersect_sphere", "intersect_triangle"),
     "a07": ("texel", "_texel", "get_color", "texture_image_texture"),
     "a08": ("bbox_hit", "hit_bbox", "box_hit", "box_entry", "slab_test", "intersect_bbox", "intersect_box",
             "intersect_bvh", "bvh_intersect", "traverse_bvh", "bvh_closest", "mesh_closest"),
 }
 # Block names too common to stand for their assignment in a twin's function names (BBox.hit,
-# BVH.intersect: intersect_disk is no BVH traversal); their twins go by the names above.
-GENERIC_BLOCK_NAMES = {"hit", "intersect"}
+# BVH.intersect: intersect_disk is no BVH traversal; the book's BRDF and light methods f, L,
+# rho; Material.shade, Matte.ambient, reflect); their twins go by the names above.
+GENERIC_BLOCK_NAMES = {"hit", "intersect", "f", "L", "rho", "shade", "ambient", "reflect", "get_direction"}
 TWIN_FOLDERS = ("kernels", "wgsl", "hardcases")
 _DEF = re.compile(r"^\s*(?:def|fn)\s+(?P<name>\w+)\s*\(", re.M)
 
@@ -300,7 +302,7 @@ def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_rende
 
 def test_running_a_student_file_directly_says_how_to_run_it(release):
     # a04's and a01's files: the a03 tests above replace the a03 files with the solution
-    done = subprocess.run([sys.executable, "rtfgu/lights.py"], cwd=release, capture_output=True,
+    done = subprocess.run([sys.executable, "rtfgu/lights/point_light.py"], cwd=release, capture_output=True,
                           text=True, timeout=60)
     assert done.returncode != 0
     assert "make check A=a04" in done.stderr and "make render A=a04" in done.stderr

@@ -17,7 +17,7 @@ from rtfgu.float3 import Float3
 from rtfgu.image import to_8bit
 from rtfgu.layout import compile_scene
 from rtfgu.lights import PointLight
-from rtfgu.material import LAMBERTIAN, Material
+from rtfgu.materials import Matte
 from rtfgu.renderer import render
 from rtfgu.scene import Scene
 from rtfgu.scenes import SCENES
@@ -42,8 +42,7 @@ def far_small_sphere() -> Scene:
     camera = PinholeCamera(eye, Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), d=0.4 * DISTANCE)
     scene = Scene(camera)
     scene.background = Float3(0.1, 0.3, 0.6)
-    scene.shadows = False
-    material = Material(LAMBERTIAN)
+    material = Matte()
     behind = 2.0 * DISTANCE
     scene.shapes.append(Plane(Float3(0.0, 0.0, behind), Float3(0.0, 0.0, 1.0),
                               Float3(0.1, 0.7, 0.0), material))
@@ -51,6 +50,7 @@ def far_small_sphere() -> Scene:
                                  Float3(0.0, 1.0, behind), Float3(0.4, 0.3, 0.2), material))
     scene.shapes.append(Sphere(Float3(0.0, 0.0, 0.0), 1.0, Float3(0.8, 0.6, 0.4), material))
     scene.lights.append(PointLight(Float3(3.0, 4.0, 5.0), Float3(150.0, 150.0, 150.0)))
+    scene.lights[0].set_shadows(False)
     return scene
 
 

@@ -17,7 +17,7 @@ import pytest
 from PIL import Image
 
 from rtfgu import Disk, Float3, OrthographicCamera, Plane, Scene, Sphere, Triangle
-from rtfgu.material import BASE_COLOR, LAMBERTIAN, Material
+from rtfgu.materials import Material, Matte
 from rtfgu.registry import SHAPES, TEXTURES
 from rtfgu.scenes import SCENES
 from rtfgu.shapes.shape import Shape, plane_texcoord
@@ -75,7 +75,7 @@ LOOKUPS = [
 def flat_plane_scene(texture) -> Scene:
     scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
     scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.0),
-                              Material(BASE_COLOR, texture=texture)))
+                              Material(cd=texture)))
     return scene
 
 
@@ -117,11 +117,11 @@ def test_checker_on_a_sphere_a_triangle_and_a_disk(path):
     red, blue = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0)
     scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
     scene.shapes.append(Sphere(Float3(0.0, 0.0, 0.0), 1.0, Float3(0.0),
-                               Material(BASE_COLOR, texture=Checker(red, blue, size=0.125))))
+                               Material(cd=Checker(red, blue, size=0.125))))
     scene.shapes.append(Triangle(Float3(10.0, 0.0, 0.0), Float3(14.0, 0.0, 0.0), Float3(10.0, 4.0, 0.0),
-                                 Float3(0.0), Material(BASE_COLOR, texture=Checker(red, blue, size=0.5))))
+                                 Float3(0.0), Material(cd=Checker(red, blue, size=0.5))))
     scene.shapes.append(Disk(Float3(20.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), 4.0, Float3(0.0),
-                             Material(BASE_COLOR, texture=Checker(red, blue, size=1.0))))
+                             Material(cd=Checker(red, blue, size=1.0))))
     rays, want = [], []
     # The sphere at (phi, theta): u = phi / 2 pi, v = 1 - theta / pi, inside a square.
     for phi, theta in ((0.2, math.pi / 2 - 0.1), (1.1, 1.3), (4.2, 0.3), (5.6, 2.7)):
@@ -148,12 +148,12 @@ def test_a_textured_diffuse_surface_is_lit_in_the_textures_colour(path):
 
     texture = ImageTexture(texels=TEXELS, filter="nearest", address="repeat")
     scene = flat_plane_scene(texture)
-    scene.shapes[0].material = Material(LAMBERTIAN, texture=texture)
+    scene.shapes[0].material = Matte(cd=texture)
     scene.shapes[0].color = Float3(1.0, 1.0, 1.0)
     scene.lights.append(PointLight(Float3(-0.5 / 3, 1.0, 0.75), Float3(math.pi)))
     bounce = path.trace(scene, [((-0.5 / 3, 1.0, 0.75), (0.0, -1.0, 0.0), 0.0, math.inf)])[0][0]
     # L = rho_d / pi * pi / r^2 * cos + L_a with r = 1, cos = 1: (0.9 + 0.1) * texel.
-    from rtfgu.shading import AMBIENT_FRACTION, DIFFUSE_FRACTION
+    from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
     want = [(DIFFUSE_FRACTION + AMBIENT_FRACTION) * c for c in TEXELS[0, 0]]
     assert close(bounce.color, want, path.precision), (path, bounce.color, want)
 
@@ -236,7 +236,7 @@ def test_a_texture_shared_by_shapes_is_laid_out_once():
 
     texture = ImageTexture(texels=TEXELS)
     scene = flat_plane_scene(texture)
-    scene.shapes.append(Sphere(Float3(0.0, 2.0, 0.0), 0.5, Float3(0.0), Material(BASE_COLOR, texture=texture)))
+    scene.shapes.append(Sphere(Float3(0.0, 2.0, 0.0), 0.5, Float3(0.0), Material(cd=texture)))
     flat = compile_scene(scene)
     assert len(flat.textures["image_texture"]) == 1
     assert flat.texels.size == TEXELS.size
@@ -320,5 +320,8 @@ def test_bad_checkers_name_the_field(kwargs, field):
 
 
 def test_a_material_texture_must_be_a_texture():
-    with pytest.raises(ValueError, match="Material.texture"):
-        Material(LAMBERTIAN, texture="grass.png")
+    with pytest.raises(ValueError, match=r"Matte\.cd") as error:
+        Matte(cd="grass.png")
+    assert "Texture" in str(error.value)
+    with pytest.raises(ValueError, match=r"Material\.cd"):
+        Material(cd="grass.png")

@@ -17,7 +17,7 @@ from rtfgu import layout
 from rtfgu.cameras import OrthographicCamera, PinholeCamera
 from rtfgu.float3 import Float3
 from rtfgu.lights import PointLight
-from rtfgu.material import PHONG, SHADER_NAMES, Material
+from rtfgu.materials import SHADER_NAMES, Transparent
 from rtfgu.scene import Scene
 from rtfgu.shapes import Plane, Sphere, Triangle
 from rtfgu.wgsl import structs
@@ -27,8 +27,9 @@ from wgsl_support import wgpu_device  # noqa: F401  (fixture)
 
 def _scene(camera) -> Scene:
     scene = Scene(camera)
-    material = Material(PHONG, specular=(0.25, 0.5, 0.75), shininess=17.0, ior=1.33,
-                        emission=(0.01, 0.02, 0.03))
+    # The 02562 glossy shader (Phong, then refraction): every field of the Material row is its own.
+    material = Transparent(ior=1.33, ka=0.125, kd=0.75, ks=1.0, cs=(0.25, 0.5, 0.75), exp=17.0,
+                           emission=(0.01, 0.02, 0.03))
     scene.shapes.append(Plane((1, 2, 3), (0, 2, 0), (0.1, 0.2, 0.3), material))
     scene.shapes.append(Triangle((0, 0, 0), (1, 0, 0), (0, 1, 0), (0.4, 0.5, 0.6)))
     scene.shapes.append(Sphere((4, 5, 6), 0.7, (0.7, 0.8, 0.9)))
@@ -69,6 +70,8 @@ def test_named_offsets_pick_the_compiled_values():
     assert _field(m, "shininess", "Material") == [17.0]
     assert _field(m, "emission", "Material") == [0.01, 0.02, 0.03]
     assert _field(m, "ior", "Material") == [1.33]
+    assert _field(m, "kd", "Material") == [0.75]
+    assert _field(m, "ambient", "Material") == [0.125, 0.125, 0.125]     # ka times Ambient() (ls 1, white)
     assert _field(flat.lights["point_light"][0], "position", "PointLight") == [-1, 3, 2]
     assert _field(flat.lights["point_light"][0], "intensity", "PointLight") == [5, 6, 7]
 

@@ -79,7 +79,7 @@ def test_wgsl_is_not_blank_where_the_scene_is_lit(wgpu_device):
 def test_broken_wgsl_function_is_reported_by_its_line(wgpu_device):
     text = read_piece("lambertian.wgsl")
     lines = text.splitlines()
-    target = next(i for i, line in enumerate(lines) if "DIFFUSE_FRACTION" in line)
+    target = next(i for i, line in enumerate(lines) if "(*hit).kd" in line)   # f_r = kd cd / pi
     lines[target] = "    return (*hit).color * undefined_diffuse;"
     broken = "\n".join(lines) + "\n"
     with pytest.raises(WGSLCompileError) as caught:

@@ -2,7 +2,7 @@
 
     python tools/make_sky.py
 
-A procedural sky, 256 x 128 texels of linear radiance (rtfgu/environment_light.py's
+A procedural sky, 256 x 128 texels of linear radiance (rtfgu/lights/environment_light.py's
 mapping: -z in the middle, +y the top row): blue overhead, paler toward the horizon, a
 warm glow of about 12 degrees radius around a sun 35 degrees above the horizon, a grey-brown
 ground below. Broad on purpose: PathTrace finds the environment only by its bounces (it

@@ -22,7 +22,7 @@ sys.path.insert(0, str(ROOT))
 from rtfgu import PathTrace, render  # noqa: E402
 from rtfgu.image import to_8bit  # noqa: E402
 from rtfgu.scenes import SCENES  # noqa: E402
-from rtfgu.scenes.meshes import cornell_box_blocks  # noqa: E402
+from rtfgu.scenes.meshes import cornell_box_area_light  # noqa: E402
 
 
 def big(image, side=256):
@@ -36,8 +36,9 @@ def main():
     size = int(peer["width"])
     runs = []
     for seed in range(16):
-        scene = cornell_box_blocks()
+        scene = cornell_box_area_light()     # the box with its blocks, kd 1 (the albedo is the colour)
         scene.tracer = PathTrace()
+        scene.sampler = None
         runs.append(render(scene, size, size, backend="numba", precision="float32", spp=256, seed=1000 + seed))
     runs = np.array(runs)
     mean, stderr = runs.mean(axis=0), runs.std(axis=0, ddof=1) / 4

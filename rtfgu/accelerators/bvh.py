@@ -139,7 +139,8 @@ class BVH:
         stack = [self.root]
         while stack:
             node = stack.pop()
-            if node.bbox.hit(ray) > ray.tmax:
+            t_enter = node.bbox.hit(ray)
+            if t_enter == math.inf or t_enter > ray.tmax:
                 continue
             if node.is_leaf:
                 for k in range(node.first, node.first + node.count):

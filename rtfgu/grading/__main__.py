@@ -6,6 +6,7 @@ message naming the parameter.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -119,8 +120,24 @@ def main(argv=None) -> int:
             from .generate import solution_files, student_files, write_files
 
             a = get_assignment(args.assignment)
-            files = solution_files(a) if args.command == "solution" else student_files(a)
-            for path in write_files(files, args.out):
+            if args.command == "solution":
+                # The solved files are the writer's alone (folders 0700, files 0600, made so
+                # from the start): a sandbox user running a student's code must not read them.
+                out = Path(args.out)
+                mask = os.umask(0o077)
+                try:
+                    written = write_files(solution_files(a), out)
+                finally:
+                    os.umask(mask)
+                for path in written:
+                    os.chmod(path, 0o600)
+                    for folder in path.parents:
+                        os.chmod(folder, 0o700)
+                        if folder == out:
+                            break
+            else:
+                written = write_files(student_files(a), args.out)
+            for path in written:
                 print(path)
         elif args.command == "references":
             from .grader import compute_references

@@ -166,24 +166,37 @@ A04 = Assignment(
     id="a04_diffuse",
     title="Diffuse shading with a point light: Kepler, Lambert and ambient",
     blocks=(
-        Block("lights.py", "sample_point_light",
-              "Return Light(L_i, w_i, dist): L_i = intensity / |p - x|^2 (Kepler),\n"
-              "w_i = (p - x) / |p - x| (unit, toward the light), dist = |p - x|."),
-        Block("shading.py", "lambertian",
-              "rho_d = 0.9 * color, L_a = 0.1 * color. Start from emission + L_a and, for each light,\n"
-              "sample it at hit.position and add rho_d / pi * L_i * (n . w_i) when n . w_i > 0.\n"
-              "Skip the light when scene.shadows and in_shadow(...) (in_shadow is assignment 5)."),
+        Block("lights/point_light.py", "PointLight.get_direction",
+              "Return the unit vector from the hit point sr.position toward the light: (p - x) / |p - x|."),
+        Block("lights/point_light.py", "PointLight.L",
+              "Kepler's inverse square law: return self.intensity / |p - x|^2 (x = sr.position)."),
+        Block("brdfs/lambertian.py", "Lambertian.rho",
+              "The albedo kd cd: self.surface_color(self.cd, sr) * self.kd (the surface colour is cd, or the\n"
+              "shape's or texture's colour at the hit where cd is None)."),
+        Block("brdfs/lambertian.py", "Lambertian.f", "f_r = kd cd / pi: self.rho(sr) divided by pi."),
+        Block("materials/matte.py", "Matte.ambient",
+              "Return L_e + ka cd L_a: self.get_Le(sr) + self.ambient_brdf.rho(sr, wo) * sr.scene.ambient_light.L(sr)."),
+        Block("materials/matte.py", "Matte.direct_light",
+              "For each light of sr.scene.lights: wi = light.get_direction(sr), L_i = light.incident(sr) (skip an\n"
+              "all-zero L_i); ndotwi = n . wi with n = sr.normal; skip the light unless ndotwi > 0. If\n"
+              "light.casts_shadows(), skip it when light.in_shadow(Ray(sr.position, wi), sr) (in_shadow is\n"
+              "assignment 5). Otherwise L += self.f(sr, wo, wi) * L_i * ndotwi. Return L."),
     ),
-    task=("Write the point light's sample (Kepler's inverse square law) and the Lambertian\n"
-          "shader: the diffusely reflected light by Lambert's cosine law plus a constant ambient\n"
-          "term. The light sample's direction points from the surface toward the light and has\n"
-          "unit length. A light below the surface (n . w_i <= 0) adds nothing."),
+    task=("Write the point light (Kepler's inverse square law), the Lambertian BRDF and the light\n"
+          "loop of the Matte material: the diffusely reflected light by Lambert's cosine law plus\n"
+          "the ambient term. The light's direction points from the surface toward the light and has\n"
+          "unit length. A light below the surface (n . w_i <= 0) adds nothing. `Matte.shade` (given)\n"
+          "is `direct_light(sr, wo, ambient(sr, wo))`; `Phong` and `PathTrace` reuse your light loop\n"
+          "with their own BRDF (`self.f`)."),
     formulas=("- Kepler's inverse square law (02562, \"Kepler's inverse square law\"): L_i = I / |p - x|^2\n"
-              "- Lambert's cosine law (02562, \"Lambert's cosine law\"): L_r,d = rho_d / pi * L_i * (n . w_i)\n"
-              "- The diffuse shader (02562, \"Sampling light in the shader\"):\n"
-              "  L_o = L_e + rho_d / pi * L_i * (n . w_i) + L_a, with rho_d = 0.9 and L_a = 0.1 of the colour"),
+              "- Lambertian BRDF (Suffern ch. 13): f_r = kd cd / pi, albedo rho = kd cd\n"
+              "- Lambert's cosine law (02562, \"Lambert's cosine law\"): L_r,d = f_r L_i (n . w_i)\n"
+              "- Matte::shade (Suffern ch. 14; 02562, \"Sampling light in the shader\"):\n"
+              "  L_o = L_e + ka cd L_a + sum over lights of f_r L_i (n . w_i); the 02562 scene's\n"
+              "  rho_d = 0.9 and L_a = 0.1 of the colour are kd = 0.9 and ka = 0.1 under a white Ambient light"),
     slides=("02562: Kepler's inverse square law", "02562: Lambert's cosine law",
-            "02562: Sampling light in the shader", "02562: The signature of an intersection function and that of a shader"),
+            "02562: Sampling light in the shader",
+            "Suffern ch. 13-14: Lambertian (f, rho), Matte::shade, PointLight (get_direction, L)"),
     images=("default_lambertian",),
 )
 
@@ -191,34 +204,39 @@ A05 = Assignment(
     id="a05_shadows_phong_mirror_refraction",
     title="Shadows, Phong, mirror and refraction",
     blocks=(
-        Block("shading.py", "in_shadow",
-              "Cast Ray(position, w_i, SPAWN_EPSILON, dist - SPAWN_EPSILON) and return True if any\n"
-              "shape of scene.shapes hits it. The offset keeps the ray from hitting the surface it\n"
+        Block("lights/light.py", "Light.in_shadow",
+              "Set ray.tmin = SPAWN_EPSILON and ray.tmax = self.distance(sr) - SPAWN_EPSILON, then return True if\n"
+              "any shape of sr.scene.shapes hits the ray. The offsets keep the ray from hitting the surface it\n"
               "leaves (shadow acne) and from hitting the light's own position."),
-        Block("shading.py", "phong",
-              "As lambertian, plus the lobe rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s with\n"
-              "w_o = -r.direction and w_r = 2 (n . w_i) n - w_i; both terms times L_i (n . w_i)."),
-        Block("shading.py", "mirror",
-              "Continue the path along d - 2 (d . n) n with _continue_path(r, hit, direction)\n"
-              "and return hit.emission."),
-        Block("shading.py", "transparent",
-              "cos_i = -(d . n). Entering (cos_i >= 0): eta = 1 / ior. Leaving: eta = ior, flip n and\n"
-              "cos_i. sin2_t = eta^2 (1 - cos_i^2); if sin2_t > 1 mirror (total internal reflection),\n"
-              "else continue along d * eta + n * (eta cos_i - sqrt(1 - sin2_t)). Return hit.emission."),
+        Block("brdfs/glossy_specular.py", "GlossySpecular.f",
+              "cos_theta = n . wi, w_r = n * (2 cos_theta) - wi, cos_r = max(wo . w_r, 0); return\n"
+              "self.specular * ((e + 2) / (2 pi) * cos_r^e) with e = self.exp (the normalised lobe), or\n"
+              "self.specular * cos_r^e where self.normalized is False."),
+        Block("brdfs/perfect_specular.py", "reflect", "Return the mirror direction -wo + 2 (n . wo) n."),
+        Block("materials/reflective.py", "Reflective.shade",
+              "wo = -sr.ray.direction; L = self.ambient(sr, wo), then self.direct_light(sr, wo, L) if\n"
+              "self.reflects_light(). fr, wi, pdf = self.reflective_brdf.sample_f(sr, wo); trace\n"
+              "Ray(sr.position, wi, SPAWN_EPSILON) with sr.scene.tracer.trace_ray(ray, sr.depth + 1) and return\n"
+              "L + fr * L_r * specular_scale(|n . wi|, pdf)."),
+        Block("btdfs/perfect_transmitter.py", "PerfectTransmitter.transmitted_direction",
+              "cos_i = -(d . n). Entering (cos_i >= 0): eta = 1 / ior. Leaving: eta = ior, flip n and cos_i.\n"
+              "sin2_t = eta^2 (1 - cos_i^2); if sin2_t > 1 return the mirror direction d + n (2 cos_i) (total\n"
+              "internal reflection), else d * eta + n * (eta cos_i - sqrt(1 - sin2_t))."),
     ),
-    task=("Write the shadow ray, the Phong shader and the two shaders that continue the path:\n"
-          "the mirror and refraction by Snell's law. A shader that continues the path turns `r`\n"
-          "into the next ray with `_continue_path` (it resets tmin and tmax and clears\n"
-          "`hit.has_hit`, so the path loop goes on)."),
+    task=("Write the shadow ray of a light, the glossy lobe of the Phong material, and the two\n"
+          "directions a ray goes on in: the mirror's and the refracted one (Snell's law), and the\n"
+          "Reflective material's shade, which traces its reflected ray one level deeper through the\n"
+          "scene's tracer (Whitted). `Transparent.shade` (given) uses your refraction and reflection."),
     formulas=("- Shadow ray (02562 week 2): from x toward the light, t in [eps, dist - eps]\n"
-              "- Phong (02562 worksheet 3): L_r = (rho_d / pi + rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s) L_i (n . w_i),\n"
-              "  w_r = 2 (n . w_i) n - w_i\n"
-              "- Mirror: w = d - 2 (d . n) n\n"
+              "- Phong (02562 worksheet 3): f_r = kd cd / pi + ks cs (e + 2) / (2 pi) max(w_o . w_r, 0)^e,\n"
+              "  w_r = 2 (n . w_i) n - w_i (Suffern ch. 15's lobe has no (e + 2) / (2 pi))\n"
+              "- Mirror (Suffern ch. 24): w_r = -w_o + 2 (n . w_o) n; L_o = Phong's + kr cr L(w_r)\n"
               "- Refraction (Snell's law, eta = n1 / n2): cos_t = sqrt(1 - eta^2 (1 - cos_i^2)),\n"
               "  t = eta d + (eta cos_i - cos_t) n; no real cos_t means total internal reflection"),
     slides=("02562: The signature of an intersection function and that of a shader (shade switch)",
             "02562: Intersecting with the scene and tracing a path",
-            "02562 week 2: shadows; worksheet 3: Phong, mirror, refraction"),
+            "02562 week 2: shadows; worksheet 3: Phong, mirror, refraction",
+            "Suffern ch. 15, 24, 27: GlossySpecular, Reflective, PerfectTransmitter"),
     images=("default_lambertian_shadows", "default_phong_sphere", "default_mirror_sphere",
             "default_refractive_sphere", "default_glossy_sphere"),
 )
@@ -326,7 +344,8 @@ A08 = Assignment(
               "Return t0, where the ray enters the box. The ray is not changed."),
         Block("accelerators/bvh.py", "BVH.intersect",
               "best = -1; an empty BVH (self.root is None) returns it. Keep a stack, starting with [self.root].\n"
-              "Pop a node; skip it when node.bbox.hit(ray) > ray.tmax (entered beyond the nearest hit so far).\n"
+              "Pop a node; skip it when the ray misses its box (node.bbox.hit(ray) is math.inf) or enters it\n"
+              "beyond the nearest hit so far (> ray.tmax).\n"
               "Leaf: for k in node.first .. node.first + node.count - 1, shape i = self.order[k]: if best < 0\n"
               "or i > best, a hit of self.shapes[i].intersect_p(ray) makes best = i; if i < best (an earlier\n"
               "shape, which wins an equal t) raise ray.tmax to math.nextafter(ray.tmax, math.inf) first and\n"
@@ -373,14 +392,14 @@ A09 = Assignment(
               "Suffern's map of (x, y) in [0, 1)^2 to a direction about +z with density\n"
               "(e + 1) / (2 pi) cos^e(theta): phi = 2 pi x, cos(theta) = (1 - y)^(1 / (e + 1)),\n"
               "sin(theta) = sqrt(1 - cos^2(theta)); return Float3(sin(theta) cos(phi), sin(theta) sin(phi), cos(theta))."),
-        Block("lambertian.py", "Lambertian.sample_f",
-              "Draw w_i cosine-weighted about n: about(n, hemisphere_map(u, v, 1.0)) turns a direction about\n"
-              "+z into one about n. Its density is pdf = (n . w_i) / pi. Return (self.f(), w_i, pdf)."),
+        Block("brdfs/lambertian.py", "Lambertian.sample_f",
+              "Draw w_i cosine-weighted about n = sr.normal: about(n, hemisphere_map(u, v, 1.0)) turns a direction\n"
+              "about +z into one about n. Its density is pdf = (n . w_i) / pi. Return (self.f(sr, wo, w_i), w_i, pdf)."),
     ),
     task=("Write the two functions that make PathTrace's diffuse bounce: Suffern's map of a point of\n"
           "the unit square to the hemisphere, with density proportional to cos^e(theta)\n"
           "(`hemisphere_map(x, y, e)`; e = 1 is the cosine-weighted hemisphere, e = 0 the uniform one,\n"
-          "larger e a Phong lobe), and `Lambertian.sample_f(n, u, v)`, which draws the direction a path\n"
+          "larger e a Phong lobe), and `Lambertian.sample_f(sr, wo, u, v)`, which draws the direction a path\n"
           "takes after a diffuse surface and says with which density it drew it. PathTrace (given)\n"
           "multiplies the path's throughput by f (n . w_i) / pdf: any density gives the right image on\n"
           "average as long as pdf is the density you drew with, and the cosine-weighted one gives the\n"

@@ -9,6 +9,7 @@ in a test folder laid out the same way.
 """
 from __future__ import annotations
 
+import os
 import zipfile
 from pathlib import Path
 
@@ -73,7 +74,11 @@ def build_zip(assignment, out) -> Path:
         info.external_attr = 0o755 << 16
         z.writestr(info, text)
 
-    with zipfile.ZipFile(out, "w", zipfile.ZIP_DEFLATED) as z:
+    # The bundle holds the solutions and the references: its writer's alone (0600 from the
+    # start), so that no sandbox user running a student's code can read it.
+    fd = os.open(out, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
+    os.fchmod(fd, 0o600)
+    with os.fdopen(fd, "wb") as f, zipfile.ZipFile(f, "w", zipfile.ZIP_DEFLATED) as z:
         add_script(z, "setup.sh", SETUP_SH % {"extra": extra, "packages": packages})
         add_script(z, "run_autograder", RUN_AUTOGRADER % {"assignment": assignment.id,
                                                           "time_limit": assignment.time_limit})

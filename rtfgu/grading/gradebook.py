@@ -40,21 +40,27 @@ def grade_all(assignment, submissions, out_dir, *, processes=None, time_limit=No
               require_sandbox: bool = False) -> Path:
     """Grade every submission in ``submissions``; write ``out_dir/<student>/results.json`` and
     ``out_dir/gradebook.csv`` (one row per submission); return the CSV's path."""
+    from .sandbox import choose_isolation, hidden_from_sandbox_user
+
     a = get_assignment(assignment) if isinstance(assignment, str) else assignment
     out_dir = Path(out_dir)
+    isolation = choose_isolation(require_sandbox)  # refuse before any submission is touched
     out_dir.mkdir(parents=True, exist_ok=True)
-    if require_sandbox:
-        from .sandbox import choose_isolation
-
-        choose_isolation(require_sandbox=True)  # refuse before any submission is touched
+    if isolation == "unprivileged user":
+        # Every student's results and the gradebook: the grader's alone.
+        os.chmod(out_dir, 0o700)
     jobs = [(a.id, student, str(path), str(out_dir), time_limit, memory_mb, require_sandbox)
             for student, path in list_submissions(submissions)]
     processes = processes or os.cpu_count() or 1
     checks = checks_for(a.id)
     max_score = sum(c.weight for c in checks)
     rows = []
-    # fork: the workers start with the grader imported; each test still runs in its own child
-    with multiprocessing.get_context("fork").Pool(min(processes, max(1, len(jobs)))) as pool:
+    # The class folder is named in this process's command line, which every user can read:
+    # under the fallback it is closed to the sandbox users (each worker's student code) for
+    # the whole run. fork: the workers start with the grader imported; each test still runs
+    # in its own child, and each worker has a sandbox user of its own.
+    with hidden_from_sandbox_user(isolation, [submissions]), \
+            multiprocessing.get_context("fork").Pool(min(processes, max(1, len(jobs)))) as pool:
         for student, score, _, per_test, error in pool.imap(_grade_one, jobs):
             rows.append((student, score, per_test, error))
             if log:

@@ -140,7 +140,11 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
         # another submission's sandbox user may be running at the same time (grade-all).
         out_dir.mkdir(parents=True, exist_ok=True)
         os.chmod(out_dir, 0o700)
-    with hidden_from_sandbox_user(isolation), work_folder() as tmp:
+    # The submission itself is closed too while its tests run: its path is in this process's
+    # command line, which every user can read, and a grading beside this one runs another
+    # student's code.
+    hidden = [submission] if submission is not None else []
+    with hidden_from_sandbox_user(isolation, hidden), work_folder() as tmp:
         ws = prepare(a, submission, tmp / "work")
         result.notes.extend(ws.notes)
         for check in checks_for(a.id):
@@ -188,7 +192,7 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
             try:
                 if check.kind == "image":
                     fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
-                elif check.kind == "statistic":
+                elif check.kind == "statistic" or check.judge is not None:   # a judge of its own
                     fraction, lines = check.judge(check, child.data, refs[check.slug])
                 else:
                     fraction, lines = judge_cases(check, child.data, refs[check.slug])
@@ -202,7 +206,7 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
     message = "\n".join(lines) if lines else "all cases right"
     if len(message) > MESSAGE_LIMIT:  # the child's error texts are the student's to choose
         message = message[:MESSAGE_LIMIT] + "\n[... message cut at %d characters]" % MESSAGE_LIMIT
-    if fraction >= 1.0 and check.kind == "cases":
+    if fraction >= 1.0 and check.kind == "cases" and check.judge is None:
         message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
     test = TestResult(check.number, check.name, float(check.weight), round(check.weight * fraction, 4),
                       check.visibility, message, str(image_path) if image_path else None)

@@ -54,7 +54,7 @@ def solves(text: str) -> set:
 
 
 def _owners(relpath: str) -> list:
-    """The assignments whose student file ``relpath`` is (shading.py: a04 and a05)."""
+    """The assignments whose student file ``relpath`` is (brdfs/lambertian.py: a04 and a09)."""
     return [a for a in ASSIGNMENTS.values() if relpath in a.files]
 
 

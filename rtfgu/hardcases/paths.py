@@ -10,7 +10,7 @@ import numpy as np
 from ..float3 import Float3
 from ..robust import offset_ray_origin
 from ..ray import Ray
-from ..shading import SPAWN_EPSILON
+from ..ray import SPAWN_EPSILON
 from .kinds import KINDS
 
 FORMULAS = ("slide", "robust")

@@ -18,8 +18,8 @@ import numpy as np
 from . import dispatch  # noqa: F401  (first: it points numba's cache at this kernel version)
 from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_sampler, compile_scene
 from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
-from ..renderer import DEFAULT_FORMULAS, pixel_sampler
-from ..shading import MAX_DEPTH
+from ..options import DEFAULT_FORMULAS, pixel_sampler
+from ..tracers.whitted import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
@@ -83,9 +83,9 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), table, terms)
             eye = (terms, cone_table(camera64, table))
     continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
-    cast, path = (MAX_DEPTH if continues else None,), None
+    cast, path = (MAX_DEPTH if continues else None, flat.area_lighting), None
     if flat.max_depth:
-        cast, path = None, (flat.max_depth,)
+        cast, path = None, (flat.max_depth, flat.lights_at_every_vertex)
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),

@@ -25,7 +25,7 @@ from numba import njit
 from ..kernels import sphere_formula_id
 from ..layout import CAMERA_WIDTH
 from ..registry import LIGHTS
-from ..shading import MAX_DEPTH
+from ..tracers.whitted import MAX_DEPTH
 from .camera import gen_ray
 from .float3 import add, lit, scale
 from .render import RECORD_FIELDS, record_bounce, scene_tuple, shape_arrays, trace
@@ -53,7 +53,8 @@ def trace_records(camera, pixel, rays, shapes, lights, scene, settings, records)
             color = add(scale(ray[1], half), (half, half, half))
             record_bounce(records[k], 0, ray, (ray[3], -1, -1), -1, ray[1], color)
         else:
-            trace(ray, shapes, lights, scene, None, no_candidates, -1, settings, MAX_DEPTH, records[k])
+            trace(ray, shapes, lights, scene, None, no_candidates, -1, settings, MAX_DEPTH, (0, 0, 0, False),
+                  records[k])
 
 
 def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:

@@ -227,14 +227,26 @@ def _by_kind(name, row_function, what, default, mesh_slots) -> str:
 
 
 def _direct(light) -> str:
-    """The light loop (02562 "Sampling light in the shader"), written once per light kind."""
+    """The light loop (02562 "Sampling light in the shader"), written once per light kind.
+    ``stream`` is (the bounce's first dimension, pixel, sample, seed, sampled): under
+    AreaLighting (sampled) an area light is asked for a point drawn from the stream, as
+    AreaLight.get_direction then incident do (L G / pdf), else as worksheet 5's point at
+    its centre."""
+    if light.area:
+        draw = ["        if stream[4]:",
+                "            u = random_float(stream[1], stream[2], stream[0] + LIGHT_U + 2 * j, stream[3], zero)",
+                "            v = random_float(stream[1], stream[2], stream[0] + LIGHT_V + 2 * j, stream[3], zero)",
+                "            L_i, w_i, dist = sample_%s_area(table, j, position, normal, u, v)" % light.name,
+                "        else:",
+                "            L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
+    else:
+        draw = ["        L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
     body = "\n".join([
         "    position, normal = surface_point",
         "    zero = lit(0, mat[0])",
         "    eps = lit(SPAWN_EPSILON, zero)",
         "    n_shadow = 0",
-        "    for j in range(table.shape[0]):",
-        "        L_i, w_i, dist = sample_%s(table, j, position)" % light.name,
+        "    for j in range(table.shape[0]):"] + draw + [
         "        cos_theta = dot(normal, w_i)",
         "        if zero > cos_theta:  # Python's max(cos_theta, 0.0)",
         "            cos_theta = zero",
@@ -248,14 +260,14 @@ def _direct(light) -> str:
         "                result = add(result, scale(mul(f, L_i), cos_theta))",
         "    return result, n_shadow"])
     return _overloaded("direct_" + light.name,
-                       "table, shader, mat, color, surface_point, w_o, shapes, shadows, formula, result",
+                       "table, shader, mat, color, surface_point, w_o, shapes, shadows, formula, stream, result",
                        "result, 0", body,
                        "The light of every %s reflected by the surface, added to ``result``" % light.name,
                        inline="always")
 
 
 def _direct_path(light) -> str:
-    """PathTrace's light loop (rtfgu.path_trace.direct_light) for one light kind: f_r = rho / pi,
+    """PathTrace's light loop (Matte.direct_light, rtfgu/materials/matte.py) for one light kind: f_r = rho / pi,
     an area light through a point of it drawn from the stream (path_dimension)."""
     if light.area:
         draw = ["        u = random_float(pixel, sample, first + LIGHT_U + 2 * j, seed, zero)",
@@ -329,7 +341,7 @@ def source() -> str:
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
                  ["texcoord_" + k.name for k in SHAPES if not k.bvh] + ["texture_" + t.name for t in TEXTURES]),
-             "from rtfgu.shading import SPAWN_EPSILON"]
+             "from rtfgu.ray import SPAWN_EPSILON"]
     for module, names in sorted(imports.items()):
         header.append("from %s import %s" % (module, ", ".join(sorted(names))))
     parts = [header[0] + "\n" + "\n".join(header[1:])]
@@ -364,7 +376,7 @@ def source() -> str:
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
-        '    """A shadow ray: is any shape hit in [tmin, tmax)? (rtfgu.shading.in_shadow)"""']
+        '    """A shadow ray: is any shape hit in [tmin, tmax)? (Light.in_shadow, rtfgu/lights/light.py)"""']
         + shadow_calls + ["    return False"]))
     parts.append(_by_kind("shape_normal", "normal_row_", "normal_at(position)", "position", (0, 1, 2)))
     parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
@@ -420,14 +432,14 @@ def source() -> str:
 
     # The light loop is written once, for every shader with a BRDF (each supplies its term
     # through ``brdf``); such a shader that continues the path does so after it.
-    light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, result)\n"
+    light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, stream, result)\n"
                    "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS) if light.ray_cast]
     lit_shaders = [shader for shader in SHADERS if shader.brdf and not shader.emits]
     shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-                   "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula):",
+                   "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula, stream):",
                    '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',
                    '    shadow rays); ``color`` is the surface\'s (surface_color). A shader that continues',
-                   '    the path exists only when ``bounces`` does."""',
+                   '    the path exists only when ``bounces`` does; ``stream`` as for the light loop."""',
                    "    n_shadow = 0"]
     if lit_shaders:
         shade_lines.append("    if %s:  # %s" % (" or ".join("(%s)" % case(s) if s.continues else case(s)
@@ -481,7 +493,7 @@ def kernel_version() -> str:
     digest = hashlib.sha256(source().encode())
     package = Path(__file__).resolve().parent.parent
     files = sorted(Path(__file__).resolve().parent.glob("*.py"))
-    files += [package / name for name in ("layout.py", "registry.py", "shading.py", "material.py", "ray.py",
+    files += [package / name for name in ("layout.py", "registry.py", "materials/material.py", "ray.py",
                                           "sampling/random.py", "accelerators/flat_bvh.py")]
     for path in files:
         digest.update(path.name.encode())

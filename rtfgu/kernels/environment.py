@@ -1,5 +1,5 @@
 """What a ray that leaves the scene sees, on the numba path: rtfgu.Scene.background_radiance,
-the EnvironmentLight's lat-long lookup (rtfgu/environment_light.py) or the background."""
+the EnvironmentLight's lat-long lookup (rtfgu/lights/environment_light.py) or the background."""
 from __future__ import annotations
 
 import math

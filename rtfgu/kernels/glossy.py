@@ -1,6 +1,6 @@
 # release: solves a05
 """The glossy lobe of PathTrace's GlossyReflector on the numba path, operation for operation
-as rtfgu.path_trace.glossy_lobe and lobe_direction."""
+as rtfgu.tracers.path_trace.glossy_lobe and lobe_direction."""
 from __future__ import annotations
 
 import math
@@ -25,7 +25,7 @@ def glossy_lobe(specular, shininess, normal, w_o, w_i, cos_theta):
 
 @njit(cache=True, error_model="numpy")
 def orthonormal_basis(n):
-    """rtfgu.path_trace.orthonormal_basis (Duff et al. 2017)."""
+    """rtfgu.tracers.path_trace.orthonormal_basis (Duff et al. 2017)."""
     one = lit(1.0, n[0])
     sign = one if n[2] >= lit(0.0, one) else -one
     a = -one / (sign + n[2])

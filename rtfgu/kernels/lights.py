@@ -1,9 +1,10 @@
 # release: solves a04
-"""sample_point_light (02562 "Sampling light in the shader", Kepler's inverse square law),
-operation for operation as rtfgu.lights.sample_point_light, sample_directional as
-rtfgu.directional_light.Directional.sample, and an area light's two samples as
-rtfgu.area_light.AreaLight's ``sample`` (sample_area_light, the ray-cast loop's) and
-``sample_area`` (sample_area_light_area, PathTrace's)."""
+"""The lights as the materials' light loop asks them (rtfgu/lights): sample_point_light (02562
+"Sampling light in the shader", Kepler's inverse square law) operation for operation as
+PointLight.get_direction and L, sample_directional as Directional's, and an area light's two
+ways as AreaLight's: worksheet 5's point at the centre under the ray-cast tracers
+(sample_area_light) and a point drawn by area under PathTrace (sample_area_light_area,
+L G / pdf as AreaLight.incident)."""
 from __future__ import annotations
 
 import math
@@ -44,8 +45,9 @@ def sample_point_light(lights, j, pos):
 
 @njit(cache=True, error_model="numpy")
 def sample_directional(lights, j, pos):
-    """(L_i, w_i, dist) of directional light j: its intensity, -normalize(direction), inf."""
-    w_i = neg(normalize(row3(lights, j, DIRECTIONAL_DIRECTION)))
+    """(L_i, w_i, dist) of directional light j: its intensity, normalize(direction) (toward the
+    light, the book's), inf."""
+    w_i = normalize(row3(lights, j, DIRECTIONAL_DIRECTION))
     return row3(lights, j, DIRECTIONAL_INTENSITY), w_i, lit(math.inf, pos[0])
 
 

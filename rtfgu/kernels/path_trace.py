@@ -1,5 +1,5 @@
 # release: solves a04 a05 a09
-"""PathTrace on the numba path: rtfgu.path_trace.trace_path, operation for operation, over the
+"""PathTrace on the numba path: rtfgu.tracers.PathTrace.trace_ray, operation for operation, over the
 flat layout (the same random numbers, so the same paths as the lecture layer).
 
 rtfgu.kernels.render's ``render_tile`` calls it when its ``path`` is the tuple (max_depth,),
@@ -11,10 +11,10 @@ import math
 
 from numba import njit
 
-from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR, MAT_SHININESS, MAT_SPECULAR
-from ..material import BASE_COLOR, DIELECTRIC, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, TRANSPARENT
+from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR, MAT_KD, MAT_SHININESS, MAT_SPECULAR
+from ..materials.material import BASE_COLOR, DIELECTRIC, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, TRANSPARENT
 from ..sampling.random import BOUNCE_U, BOUNCE_V, CHOICE, ROULETTE, VERTEX_DIMENSIONS
-from ..shading import SPAWN_EPSILON
+from ..ray import SPAWN_EPSILON
 from .environment import ENVIRONMENT, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, div, dot, lit, load3, mul, neg, scale
@@ -25,14 +25,14 @@ from .shaders import continue_mirror, continue_transparent
 
 @njit(cache=True, error_model="numpy")
 def cosine_direction(n, u, v):
-    """The direction of rtfgu.lambertian.Lambertian.sample_f: density cos(theta) / pi about
+    """The direction of rtfgu.brdfs.Lambertian.sample_f: density cos(theta) / pi about
     the unit n."""
     return about(n, hemisphere_map(u, v, lit(1.0, u)))
 
 
 @njit(cache=True, error_model="numpy")
 def fresnel_reflectance(cos_i, eta):
-    """rtfgu.fresnel.fresnel_reflectance: R for unpolarised light, 1 under total internal
+    """rtfgu.brdfs.fresnel_reflector.fresnel_reflectance: R for unpolarised light, 1 under total internal
     reflection."""
     one = lit(1.0, cos_i)
     sin2_t = eta * eta * (one - cos_i * cos_i)
@@ -46,7 +46,7 @@ def fresnel_reflectance(cos_i, eta):
 
 @njit(cache=True, error_model="numpy")
 def scatter(direction, normal, ior, xi):
-    """rtfgu.fresnel.scatter: reflected if xi < R, refracted otherwise."""
+    """rtfgu.materials.dielectric.scatter: reflected if xi < R, refracted otherwise."""
     zero = lit(0.0, ior)
     one = lit(1.0, ior)
     cos_i = -dot(direction, normal)
@@ -64,10 +64,11 @@ def scatter(direction, normal, ior, xi):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, max_depth,
-               pixel, sample):
-    """One path's radiance (rtfgu.path_trace.trace_path): (radiance, shadow rays, secondary
-    rays)."""
+def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, path, pixel, sample):
+    """One path's radiance (rtfgu.tracers.PathTrace.trace_ray): (radiance, shadow rays, secondary
+    rays). ``path``: (max_depth, whether every vertex samples the lights: GlobalTrace samples
+    them at the first vertex only and counts the emission that later bounces hit)."""
+    max_depth, every_vertex = path
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula, seed = settings[0], settings[2], settings[3]
@@ -97,16 +98,18 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
         if shader == LAMBERTIAN or shader == GLOSSY_REFLECTOR:
             if facing > zero:
                 normal = neg(normal)
-            rho = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
+            rho = scale(surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position),
+                        mat[MAT_KD])
             specular = (zero, zero, zero)
             if shader == GLOSSY_REFLECTOR:
                 specular = load3(mat, MAT_SPECULAR)
             shininess = mat[MAT_SHININESS]
-            light, shadow_rays = direct_path(lights, shapes, (position, normal, neg(direction)),
-                                             (rho, specular, shininess), (first, pixel, sample, seed), shadows,
-                                             formula)
-            n_shadow += shadow_rays
-            result = add(result, mul(throughput, light))
+            if every_vertex or depth == 0:
+                light, shadow_rays = direct_path(lights, shapes, (position, normal, neg(direction)),
+                                                 (rho, specular, shininess), (first, pixel, sample, seed), shadows,
+                                                 formula)
+                n_shadow += shadow_rays
+                result = add(result, mul(throughput, light))
             if depth + 1 == max_depth:
                 break
             three = lit(3.0, zero)
@@ -118,7 +121,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             u = random_float(pixel, sample, first + BOUNCE_U, seed, zero)
             v = random_float(pixel, sample, first + BOUNCE_V, seed, zero)
             if xi < q_d:
-                # rtfgu.lambertian.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
+                # rtfgu.brdfs.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
                 f = div(rho, lit(math.pi, zero))
                 w_i = cosine_direction(normal, u, v)
                 cos_theta = dot(normal, w_i)
@@ -137,7 +140,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
                 direction = w_i
             else:
                 break
-            sees_emission = False
+            sees_emission = not (every_vertex or depth == 0)
         elif shader == MIRROR:
             direction = continue_mirror(mat, direction, normal)
             sees_emission = True

@@ -15,7 +15,7 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
     tracer    (cast, path), exactly one of them None: ``cast`` the ray-cast loop's
               (bounces,), bounces None when no shader continues a path (that code then
-              compiles to nothing), else MAX_DEPTH; ``path`` PathTrace's (max_depth,)
+              compiles to nothing), else MAX_DEPTH; ``path`` PathTrace's (max_depth, lights at every vertex: False for GlobalTrace)
               (rtfgu.kernels.path_trace)
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
@@ -36,10 +36,10 @@ from numba import njit, prange, types
 from numba.extending import overload
 
 from ..layout import THIN_LENS
-from ..material import BASE_COLOR
+from ..materials.material import BASE_COLOR
 from ..registry import SHAPES, TEXTURES
-from ..sampling.random import LENS_SET, PIXEL_SET
-from ..shading import SPAWN_EPSILON
+from ..sampling.random import LENS_SET, PIXEL_SET, VERTEX_DIMENSIONS
+from ..ray import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
 from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, surface_color
@@ -146,13 +146,14 @@ def _typed_record_bounce(record, i, ray, hit, shader, normal, color):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, record=None):
+def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, stream, record=None):
     """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
     path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
     Primary rays from a pinhole eye test the from-eye kind's ``candidates[:n_candidates]``
     with its per-frame ``terms`` (n_candidates -1: no such eye). ``record``: None, or an
-    array that receives every bounce (record_bounce). Returns (radiance, shadow rays,
-    secondary rays)."""
+    array that receives every bounce (record_bounce). ``stream``: (pixel, sample, seed,
+    whether area lights are sampled: AreaLighting), the numbers bounce i draws being the
+    stream's path_dimension(i, k). Returns (radiance, shadow rays, secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
@@ -182,7 +183,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
         surface = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
         color, has_hit, new_direction, shadow_rays = shade(
             shader, mat, surface, direction, (position, normal), lights, shapes, shadows,
-            bounces, formula)
+            bounces, formula, (2 + i * VERTEX_DIMENSIONS, stream[0], stream[1], stream[2], stream[3]))
         result = add(result, color)
         record_bounce(record, i, (origin, direction), (t, idx, kind), shader, normal, color)
         n_shadow += shadow_rays
@@ -241,11 +242,11 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
                     if cast is not None:
                         color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
                                                                    candidates, n_candidates, settings,
-                                                                   cast[0])
+                                                                   cast[0], (pixel, s, settings[3], cast[1]))
                     if path is not None:
                         color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
                                                                         terms, candidates, n_candidates,
-                                                                        settings, path[0], pixel, s)
+                                                                        settings, path, pixel, s)
                     n_shadow += shadow_rays
                     n_secondary += secondary_rays
                 total = add(total, color)

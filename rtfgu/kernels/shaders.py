@@ -1,15 +1,15 @@
 # release: solves a04 a05
-"""The 02562 shaders, operation for operation as rtfgu.shading, as the terms the generated
-``shade`` (rtfgu.kernels.dispatch) combines.
+"""The 02562 shaders, operation for operation as the materials' shade (rtfgu/materials), as
+the terms the generated ``shade`` (rtfgu.kernels.dispatch) combines.
 
 A shader kind of rtfgu.registry with ``brdf`` adds light through the one light loop
 (``direct_<light>`` in the dispatch module) with its BRDF term
 ``brdf_<name>(mat, color, normal, w_o, w_i, cos_theta)``, the f_r that multiplies
 L_i (n . w_i); the loop starts from ``surface(mat, color)``, L_e + L_a. ``color`` is the
 surface's colour at the hit: the material's, or its texture's there. A kind that ``continues`` the path gives
-the next direction with ``continue_<name>(mat, r_d, normal)`` (the lecture's
-_continue_path: tmin SPAWN_EPSILON, a fresh tmax). Suffern's Phong is Lambertian plus a
-glossy lobe, and so is ``brdf_phong`` here.
+the next direction with ``continue_<name>(mat, r_d, normal)`` (the material's next ray:
+tmin SPAWN_EPSILON, a fresh tmax). Suffern's Phong is Lambertian plus a glossy lobe, and so
+is ``brdf_phong`` here. kd and ka L_a come from the material's row (MAT_KD, MAT_AMBIENT).
 """
 from __future__ import annotations
 
@@ -17,21 +17,20 @@ import math
 
 from numba import njit
 
-from ..layout import MAT_EMISSION, MAT_IOR, MAT_SHININESS, MAT_SPECULAR
-from ..shading import AMBIENT_FRACTION, DIFFUSE_FRACTION
-from .float3 import add, div, dot, lit, load3, neg, scale, sub
+from ..layout import MAT_AMBIENT, MAT_EMISSION, MAT_IOR, MAT_KD, MAT_SHININESS, MAT_SPECULAR
+from .float3 import add, div, dot, lit, load3, mul, neg, scale, sub
 
 
 @njit(cache=True, error_model="numpy")
 def surface(mat, color):
-    """L_e + L_a, with L_a = AMBIENT_FRACTION of the colour: where every light loop starts."""
-    return add(load3(mat, MAT_EMISSION), scale(color, lit(AMBIENT_FRACTION, mat[0])))
+    """L_e + ka cd L_a (Matte.ambient): where every light loop starts."""
+    return add(load3(mat, MAT_EMISSION), mul(color, load3(mat, MAT_AMBIENT)))
 
 
 @njit(cache=True, error_model="numpy")
 def brdf_lambertian(mat, color, normal, w_o, w_i, cos_theta):
-    """rho_d / pi with rho_d = DIFFUSE_FRACTION of the colour (Lambert's cosine law)."""
-    rho_d = scale(color, lit(DIFFUSE_FRACTION, cos_theta))
+    """kd cd / pi (Lambertian.f; Lambert's cosine law)."""
+    rho_d = scale(color, mat[MAT_KD])
     return div(rho_d, lit(math.pi, cos_theta))
 
 
@@ -48,7 +47,7 @@ def brdf_phong(mat, color, normal, w_o, w_i, cos_theta):
     if zero > cos_r:
         cos_r = zero
     lobe = scale(load3(mat, MAT_SPECULAR), (shininess + two) / (two * pi) * cos_r ** shininess)
-    rho_d = scale(color, lit(DIFFUSE_FRACTION, cos_theta))
+    rho_d = scale(color, mat[MAT_KD])
     return add(div(rho_d, pi), lobe)
 
 
@@ -91,7 +90,7 @@ def continue_transparent(mat, r_d, normal):
 
 @njit(cache=True, error_model="numpy")
 def continue_dielectric(mat, r_d, normal):
-    """The ray-cast loop's dielectric: it refracts as transparent does (rtfgu.material.Dielectric)."""
+    """A Dielectric is traced by PathTrace only (its Fresnel choice); never reached here."""
     return transparent(r_d, normal, mat[MAT_IOR])
 
 

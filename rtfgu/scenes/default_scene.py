@@ -6,6 +6,12 @@ Triangle (-0.2, 0.1, 0.9), (0.2, 0.1, 0.9), (-0.2, 0.1, -0.1), colour (0.4, 0.3,
 Sphere at (0, 0.5, 0), radius 0.3, index of refraction 1.5, shininess 42, specular 0.1;
 its colour is black, as in the course, so that only its specular and refraction show.
 Point light at (0, 1, 0) with intensity (pi, pi, pi). Background (0.1, 0.3, 0.6).
+
+The course names its shaders by the cases of the slide's ``shade`` switch; each is a book
+material (rtfgu/materials) with the course's numbers: lambertian a Matte (ka 0.1, kd 0.9
+under the scene's white Ambient), phong a Phong with ks cs = 0.1 and exp 42, mirror a
+Reflective (kr cr = 1 and nothing else), transparent a Transparent (kt = 1, ior 1.5), glossy
+a Transparent with the Phong part, and base_color the plain Material, the shape's colour.
 """
 from __future__ import annotations
 
@@ -14,8 +20,8 @@ import math
 from ..cameras import PinholeCamera
 from ..float3 import Float3
 from ..lights import PointLight
-from ..material import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT,
-                        Material)
+from ..materials import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT, Material, Matte, Phong,
+                         Reflective, Transparent)
 from ..scene import Scene
 from ..shapes import Plane, Sphere, Triangle
 from .registry import homework
@@ -25,24 +31,41 @@ SPHERE_SHININESS = 42.0
 SPHERE_IOR = 1.5
 
 
+def course_material(shader: int) -> Material:
+    """The book material of a 02562 shader, with the default sphere's numbers."""
+    if shader == LAMBERTIAN:
+        return Matte()
+    if shader == PHONG:
+        return Phong(cs=SPHERE_SPECULAR, exp=SPHERE_SHININESS)
+    if shader == MIRROR:
+        return Reflective()
+    if shader == TRANSPARENT:
+        return Transparent(ior=SPHERE_IOR)
+    if shader == GLOSSY:
+        return Transparent(ior=SPHERE_IOR, ka=0.1, kd=0.9, ks=1.0, cs=SPHERE_SPECULAR, exp=SPHERE_SHININESS)
+    if shader == BASE_COLOR:
+        return Material()
+    raise ValueError("default_scene: no 02562 shader %r" % (shader,))
+
+
 def default_scene(sphere_shader: int = LAMBERTIAN, other_shader: int = LAMBERTIAN,
                   shadows: bool = True, aspect: float = 1.0) -> Scene:
-    """The 02562 default scene with the given shaders; the sphere keeps its full material."""
+    """The 02562 default scene with the given shaders (the switch's ids); the sphere keeps
+    its full material. ``shadows``: whether the light casts them (02562 week 2)."""
     camera = PinholeCamera(Float3(2.0, 1.5, 2.0), Float3(0.0, 0.5, 0.0), Float3(0.0, 1.0, 0.0),
                            d=1.0, aspect=aspect)
     scene = Scene(camera)
     scene.background = Float3(0.1, 0.3, 0.6)
-    scene.shadows = shadows
-    other = Material(other_shader)
+    other = course_material(other_shader)
     scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0),
                               Float3(0.1, 0.7, 0.0), other))
     scene.shapes.append(Triangle(Float3(-0.2, 0.1, 0.9), Float3(0.2, 0.1, 0.9),
                                  Float3(-0.2, 0.1, -0.1), Float3(0.4, 0.3, 0.2), other))
-    sphere_material = Material(sphere_shader, specular=SPHERE_SPECULAR,
-                               shininess=SPHERE_SHININESS, ior=SPHERE_IOR)
-    scene.shapes.append(Sphere(Float3(0.0, 0.5, 0.0), 0.3, Float3(0.0, 0.0, 0.0), sphere_material))
+    scene.shapes.append(Sphere(Float3(0.0, 0.5, 0.0), 0.3, Float3(0.0, 0.0, 0.0), course_material(sphere_shader)))
     if other_shader != BASE_COLOR or sphere_shader != BASE_COLOR:
-        scene.lights.append(PointLight(Float3(0.0, 1.0, 0.0), Float3(math.pi, math.pi, math.pi)))
+        light = PointLight(Float3(0.0, 1.0, 0.0), Float3(math.pi, math.pi, math.pi))
+        light.set_shadows(shadows)
+        scene.lights.append(light)
     return scene
 
 

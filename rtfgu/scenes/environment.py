@@ -7,14 +7,15 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..cameras import PinholeCamera
-from ..environment_light import EnvironmentLight
 from ..float3 import Float3
-from ..material import LAMBERTIAN, MIRROR, Dielectric, GlossyReflector, Material
+from ..lights import EnvironmentLight
+from ..materials import GlossyReflector, Reflective, dielectric
 from ..sampling import Jittered
 from ..sampling.sampler import sampler_of
 from ..scene import Scene
 from ..shapes import Disk, Sphere
-from .meshes import TEST_SPP, path_trace
+from ..tracers import PathTrace
+from .meshes import TEST_SPP, path_matte
 from .registry import homework
 
 SKY = Path(__file__).resolve().parent / "data" / "sky.exr"
@@ -28,10 +29,11 @@ def environment_spheres() -> Scene:
     scene = Scene(camera)
     scene.environment = EnvironmentLight(SKY)
     scene.shapes.append(Disk(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), 3.0, Float3(0.6),
-                             Material(LAMBERTIAN)))
-    scene.shapes.append(Sphere(Float3(-1.1, 0.5, 0.0), 0.5, Float3(0.5, 0.15, 0.1), GlossyReflector((0.4, 0.4, 0.4), 60.0)))
-    scene.shapes.append(Sphere(Float3(0.0, 0.5, -0.6), 0.5, Float3(0.0), Material(MIRROR)))
-    scene.shapes.append(Sphere(Float3(1.1, 0.5, 0.0), 0.5, Float3(0.0), Dielectric(1.5, (0.3, 0.1, 0.2))))
-    scene.tracer = path_trace()
+                             path_matte()))
+    scene.shapes.append(Sphere(Float3(-1.1, 0.5, 0.0), 0.5, Float3(0.5, 0.15, 0.1),
+                               GlossyReflector(ka=0.0, kd=1.0, cs=(0.4, 0.4, 0.4), exp=60.0)))
+    scene.shapes.append(Sphere(Float3(0.0, 0.5, -0.6), 0.5, Float3(0.0), Reflective()))
+    scene.shapes.append(Sphere(Float3(1.1, 0.5, 0.0), 0.5, Float3(0.0), dielectric(1.5, (0.3, 0.1, 0.2))))
+    scene.tracer = PathTrace()
     scene.sampler = sampler_of(Jittered, ENVIRONMENT_SPP)
     return scene

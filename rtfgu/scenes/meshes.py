@@ -9,7 +9,11 @@ units high), the Cornell box in its measured millimetres.
 
 The Cornell box's light is its emissive ceiling quad (Ke in cornell_box.mtl): an AreaLight
 per triangle. The ray-cast scenes see each as a point at its centre (worksheet 5's first
-approximation, AreaLight.sample); the path-traced ones sample points of it.
+approximation, rtfgu/lights/area_light.py); the path-traced ones sample points of it.
+
+The ray-cast scenes' surfaces are the course's Matte (ka 0.1, kd 0.9); a path-traced
+scene's are ``PATH_MATTE`` (kd 1: the albedo is the colour; no ambient term: the light
+reflected between the surfaces is what the path tracer computes).
 """
 from __future__ import annotations
 
@@ -17,18 +21,17 @@ import math
 
 import numpy as np
 
-from ..ambient_occluder import AmbientOccluder
-from ..area_light import AreaLight
 from ..cameras import PinholeCamera
-from ..directional_light import Directional
 from ..float3 import Float3, normalize
-from ..material import LAMBERTIAN, MIRROR, TRANSPARENT, Dielectric, Material
+from ..lights import AmbientOccluder, AreaLight, Directional
+from ..materials import Material, Matte, Reflective, Transparent, dielectric
 from ..obj import load_obj, mesh_path
 from ..sampling import Jittered
 from ..sampling.sampler import sampler_of
 from ..scene import Scene
 from ..shapes import Plane, Sphere
 from ..shapes.mesh import Mesh
+from ..tracers import AreaLighting, GlobalTrace, PathTrace
 from .registry import homework
 
 BACKGROUND = Float3(0.1, 0.3, 0.6)
@@ -60,11 +63,16 @@ def bunny_mesh(material: Material | None = None) -> Mesh:
 MM = 0.001   # the Cornell box's millimetres, in metres
 
 
-def cornell_box_mesh(blocks: bool = True) -> Mesh:
-    """The Cornell box (cornell_box.obj, Lambertian) in metres; without ``blocks``, the two
-    blocks' 20 faces are left out (every vertex of a block face is inside the room, away from
-    walls, floor and ceiling)."""
-    mesh = load_obj(mesh_path("cornell_box.obj"), material=Material(LAMBERTIAN))
+def path_matte() -> Matte:
+    """A path-traced scene's diffuse surface: kd 1 (the albedo is the colour), no ambient term."""
+    return Matte(ka=0.0, kd=1.0)
+
+
+def cornell_box_mesh(blocks: bool = True, material: Material | None = None) -> Mesh:
+    """The Cornell box (cornell_box.obj) in metres, every face ``material`` (the course's
+    Matte if None); without ``blocks``, the two blocks' 20 faces are left out (every vertex of
+    a block face is inside the room, away from walls, floor and ceiling)."""
+    mesh = load_obj(mesh_path("cornell_box.obj"), material=Matte() if material is None else material)
     if blocks:
         return _placed(mesh, MM, (0.0, 0.0, 0.0))
     v = mesh.vertices[mesh.faces]                       # (faces, 3 vertices, xyz), in mm
@@ -93,9 +101,8 @@ def _cornell_scene(mesh: Mesh) -> Scene:
 
 
 def _cornell_spheres(scene: Scene) -> Scene:
-    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Material(MIRROR)))
-    scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0),
-                               Material(TRANSPARENT, ior=1.5)))
+    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Reflective()))
+    scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0), Transparent(ior=1.5)))
     return scene
 
 
@@ -106,10 +113,10 @@ def teapot() -> Scene:
                            d=2.5, aspect=800 / 450)
     scene = Scene(camera)
     scene.background = BACKGROUND
-    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.1, 0.7, 0.0),
-                              Material(LAMBERTIAN)))
-    scene.shapes += teapot_mesh(Material(LAMBERTIAN)).triangles()
-    scene.lights.append(Directional(normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
+    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.1, 0.7, 0.0), Matte()))
+    scene.shapes += teapot_mesh(Matte()).triangles()
+    # Worksheet 5's light travels along normalize(-1, -1, -1): toward it is the opposite.
+    scene.lights.append(Directional(-normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
     return scene
 
 
@@ -119,8 +126,8 @@ def bunny() -> Scene:
     camera = PinholeCamera(Float3(-0.02, 0.11, 0.6), Float3(-0.02, 0.11, 0.0), Float3(0.0, 1.0, 0.0), d=3.5)
     scene = Scene(camera)
     scene.background = BACKGROUND
-    scene.shapes += bunny_mesh(Material(LAMBERTIAN)).triangles()
-    scene.lights.append(Directional(normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
+    scene.shapes += bunny_mesh(Matte()).triangles()
+    scene.lights.append(Directional(-normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
     return scene
 
 
@@ -136,17 +143,6 @@ def cornell_box_spheres() -> Scene:
     return _cornell_spheres(_cornell_scene(cornell_box_mesh(blocks=False)))
 
 
-def path_trace(**options):
-    """A PathTrace tracer; a clear error in a release of rtfgu without one (the path tracer
-    computes the light loop of the diffuse shader again, so it comes with that answer)."""
-    try:
-        from ..path_trace import PathTrace
-    except ImportError:
-        raise ValueError("this scene is path traced, and rtfgu.path_trace is not part of this release "
-                         "of rtfgu yet") from None
-    return PathTrace(**options)
-
-
 # Path-traced scenes: the samples per pixel of ``make render`` (under a minute each on two
 # cores with the numba path, docs/path_tracing.md) and of the tests.
 AREA_LIGHT_SPP = 256
@@ -158,8 +154,8 @@ TEST_SPP = 4
 def cornell_box_area_light() -> Scene:
     """Worksheet 5: the Cornell box with its blocks lit by its ceiling as an area light: the
     direct light only (PathTrace with one vertex), soft shadows."""
-    scene = _cornell_scene(cornell_box_mesh(blocks=True))
-    scene.tracer = path_trace(max_depth=1)
+    scene = _cornell_scene(cornell_box_mesh(blocks=True, material=path_matte()))
+    scene.tracer = PathTrace(max_depth=1)
     scene.sampler = sampler_of(Jittered, AREA_LIGHT_SPP)
     return scene
 
@@ -168,9 +164,31 @@ def cornell_box_area_light() -> Scene:
 def cornell_box_progressive() -> Scene:
     """Worksheet 7: the Cornell box with a mirror and a glass sphere, path traced: the
     light of the ceiling reflected any number of times (progressive rendering)."""
-    scene = _cornell_spheres(_cornell_scene(cornell_box_mesh(blocks=False)))
-    scene.tracer = path_trace()
+    scene = _cornell_spheres(_cornell_scene(cornell_box_mesh(blocks=False, material=path_matte())))
+    scene.tracer = PathTrace()
     scene.sampler = sampler_of(Jittered, PROGRESSIVE_SPP)
+    return scene
+
+
+@homework(512, 512, test_side=16, test_spp=TEST_SPP)
+def suffern_18_area_lighting() -> Scene:
+    """Suffern ch. 18: the Cornell box with its blocks under its ceiling lamp, ray cast by
+    AreaLighting: every sample of a pixel draws its own point of the lamp, so the blocks cast
+    soft shadows without path tracing (cornell_box_blocks sees the lamp as a point at its
+    centre: hard shadows)."""
+    scene = _cornell_scene(cornell_box_mesh(blocks=True))
+    scene.tracer = AreaLighting()
+    scene.sampler = sampler_of(Jittered, AREA_LIGHT_SPP)
+    return scene
+
+
+@homework(512, 512, test_side=16, test_spp=TEST_SPP)
+def suffern_26_global_trace() -> Scene:
+    """Suffern ch. 26: the box of cornell_box_progressive traced by GlobalTrace, which samples
+    the lights at the first vertex only and counts the ceiling's light where later bounces hit
+    it: the same mean as PathTrace's image beside it, more noise at the same samples."""
+    scene = cornell_box_progressive()
+    scene.tracer = GlobalTrace()
     return scene
 
 
@@ -183,11 +201,11 @@ GLASS_ABSORPTION = (2.0, 0.5, 1.5)
 def cornell_box_fresnel() -> Scene:
     """Worksheet 8: the Cornell box with a mirror sphere and an absorbing glass sphere that
     reflects by Fresnel's law, path traced: the caustic under the glass."""
-    scene = _cornell_scene(cornell_box_mesh(blocks=False))
-    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Material(MIRROR)))
+    scene = _cornell_scene(cornell_box_mesh(blocks=False, material=path_matte()))
+    scene.shapes.append(Sphere(Float3(420.0, 90.0, 370.0) * MM, 90.0 * MM, Float3(0.0), Reflective()))
     scene.shapes.append(Sphere(Float3(130.0, 90.0, 250.0) * MM, 90.0 * MM, Float3(0.0),
-                               Dielectric(1.5, GLASS_ABSORPTION)))
-    scene.tracer = path_trace()
+                               dielectric(1.5, GLASS_ABSORPTION)))
+    scene.tracer = PathTrace()
     scene.sampler = sampler_of(Jittered, PROGRESSIVE_SPP)
     return scene
 
@@ -200,8 +218,8 @@ def cornell_box_ambient_occlusion() -> Scene:
     """Suffern ch. 17: the Cornell box with its blocks, all a white 0.8, lit only by an
     AmbientOccluder (PathTrace with one vertex): how open each point's hemisphere is."""
     mesh = cornell_box_mesh(blocks=True)
-    scene = _cornell_scene(Mesh(mesh.vertices, mesh.faces, (0.8, 0.8, 0.8), material=Material(LAMBERTIAN)))
+    scene = _cornell_scene(Mesh(mesh.vertices, mesh.faces, (0.8, 0.8, 0.8), material=path_matte()))
     scene.lights = [AmbientOccluder(1.0)]
-    scene.tracer = path_trace(max_depth=1)
+    scene.tracer = PathTrace(max_depth=1)
     scene.sampler = sampler_of(Jittered, AMBIENT_OCCLUSION_SPP)
     return scene

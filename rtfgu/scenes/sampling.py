@@ -18,7 +18,7 @@ import math
 from ..cameras import OrthographicCamera, ThinLens
 from ..float3 import Float3
 from ..lights import PointLight
-from ..material import LAMBERTIAN, PHONG, Material
+from ..materials import LAMBERTIAN, Matte, Phong
 from ..sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular
 from ..scene import Scene
 from ..shapes import Plane, Sphere, Triangle
@@ -81,13 +81,13 @@ def suffern_depth_of_field() -> Scene:
     scene.background = Float3(0.1, 0.3, 0.6)
     scene.sampler = MultiJittered(64)
     scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.8, 0.8, 0.75),
-                              Material(LAMBERTIAN)))
+                              Matte()))
     colours = (Float3(0.9, 0.2, 0.1), Float3(0.9, 0.7, 0.1), Float3(0.2, 0.7, 0.2),
                Float3(0.1, 0.4, 0.9), Float3(0.6, 0.2, 0.8))
     for k, colour in enumerate(colours):
         z = 3.0 - 1.8 * k
         x = -1.2 + 0.6 * k
         scene.shapes.append(Sphere(Float3(x, 0.5, z), 0.5, colour,
-                                   Material(PHONG, specular=Float3(0.3), shininess=40.0)))
+                                   Phong(cs=Float3(0.3), exp=40.0)))
     scene.lights.append(PointLight(Float3(3.0, 5.0, 5.0), Float3(12 * math.pi)))
     return scene

@@ -18,7 +18,7 @@ from importlib import resources
 from ..cameras import PinholeCamera
 from ..float3 import Float3
 from ..lights import PointLight
-from ..material import LAMBERTIAN, Material
+from ..materials import LAMBERTIAN, Matte
 from ..scene import Scene
 from ..shapes import Disk, Sphere, Triangle
 from ..textures import Checker, ImageTexture
@@ -37,7 +37,7 @@ def textured_plane(filter: str, address: str) -> Scene:
     scene = default_scene(LAMBERTIAN, LAMBERTIAN, shadows=True)
     texture = ImageTexture(texture_path("tiles16.png"), filter=filter, address=address,
                            scale=WORKSHEET3_TEXTURE_SCALE)
-    scene.shapes[0].material = Material(LAMBERTIAN, texture=texture)
+    scene.shapes[0].material = Matte(cd=texture)       # the book's SV_Matte
     return scene
 
 
@@ -58,16 +58,15 @@ def suffern_checker() -> Scene:
                            d=1.5, aspect=512 / 384)
     scene = Scene(camera)
     scene.background = Float3(0.1, 0.3, 0.6)
-    scene.shadows = True
     white, grey = Float3(0.85, 0.85, 0.85), Float3(0.15, 0.15, 0.15)
     # A round floor (Suffern's disk, ch. 19), not a plane: squares shrinking toward a
     # horizon would alias, and float32 would place their edges in other pixels.
     scene.shapes.append(Disk(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), 4.0, Float3(1.0),
-                             Material(LAMBERTIAN, texture=Checker(white, grey, size=0.5))))
-    scene.shapes.append(Sphere(Float3(-0.8, 0.7, 0.0), 0.7, Float3(1.0), Material(
-        LAMBERTIAN, texture=Checker(Float3(0.9, 0.2, 0.1), Float3(0.95, 0.9, 0.8), size=1 / 12))))
+                             Matte(cd=Checker(white, grey, size=0.5))))
+    scene.shapes.append(Sphere(Float3(-0.8, 0.7, 0.0), 0.7, Float3(1.0), Matte(
+        cd=Checker(Float3(0.9, 0.2, 0.1), Float3(0.95, 0.9, 0.8), size=1 / 12))))
     scene.shapes.append(Triangle(Float3(0.4, 0.01, 0.8), Float3(1.8, 0.01, 0.6), Float3(1.0, 1.4, -0.2),
-                                 Float3(1.0), Material(LAMBERTIAN, texture=Checker(
+                                 Float3(1.0), Matte(cd=Checker(
                                      Float3(0.1, 0.4, 0.9), Float3(0.9, 0.8, 0.2), size=0.25))))
     scene.lights.append(PointLight(Float3(2.0, 4.0, 4.0), Float3(10 * math.pi)))
     return scene

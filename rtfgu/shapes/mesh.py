@@ -36,7 +36,7 @@ except ImportError:
     intersect_triangle_watertight = None
 
 from ..float3 import Float3, normalize
-from ..material import Material
+from ..materials.material import Material
 from ..ray import Ray
 from .shape import Shape
 from .triangle import Triangle

@@ -8,12 +8,12 @@ ray with a fresh ``tmax``.
 """
 from __future__ import annotations
 
-import math
 from abc import ABC, abstractmethod
 
 from ..float3 import Float3, as_float3, cross, dot, normalize
-from ..material import Material
+from ..materials.material import Material
 from ..ray import Ray
+from ..validation import nonzero_vector, positive  # noqa: F401  (the shapes' checks)
 
 
 class Shape(ABC):
@@ -36,6 +36,13 @@ class Shape(ABC):
         shape without one (a plane): what a BVH holds."""
         return None
 
+    def sample_with_normal(self, u: float, v: float) -> tuple:
+        """(point, unit normal) of an area light's shape: ``sample(u, v)`` and
+        ``get_normal`` there (Suffern ch. 18: a shape that offers ``sample``, ``pdf`` and
+        ``get_normal`` can be an AreaLight's)."""
+        point = self.sample(u, v)
+        return point, self.get_normal(point)
+
     def texcoord(self, position: Float3) -> tuple:
         """The texture coordinates (u, v) of a point on the surface (textures, Suffern ch. 29)."""
         raise NotImplementedError("%s has no texture coordinates" % type(self).__name__)
@@ -53,23 +60,3 @@ def plane_texcoord(position: Float3, point: Float3, normal: Float3) -> tuple:
     tangent = cross(binormal, n)
     d = position - point
     return dot(d, tangent), dot(d, binormal)
-
-
-def positive(value, name: str) -> float:
-    """``value`` as a float if it is a finite number > 0 (a radius); else a ValueError
-    naming ``name``."""
-    try:
-        ok = math.isfinite(value) and value > 0
-    except TypeError:
-        ok = False
-    if not ok:
-        raise ValueError("%s must be finite and > 0, got %r" % (name, value))
-    return float(value)
-
-
-def nonzero_vector(value, name: str) -> Float3:
-    """``value`` as a finite, non-zero Float3 (a normal); else a ValueError naming ``name``."""
-    value = as_float3(value, name)
-    if value.length_squared() == 0.0:
-        raise ValueError("%s must be non-zero" % name)
-    return value

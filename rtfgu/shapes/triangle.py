@@ -8,6 +8,8 @@
 """
 from __future__ import annotations
 
+import math
+
 from ..float3 import Float3, as_float3, cross, dot, normalize
 from ..ray import Ray
 from .shape import Shape
@@ -58,3 +60,21 @@ class Triangle(Shape):
         d = position - self.v0
         nn = dot(self.n, self.n)
         return dot(cross(d, self.e1), self.n) / nn, dot(cross(self.e0, d), self.n) / nn
+
+    # An area light's shape (Suffern ch. 18, "Area Lights"): sample, pdf and get_normal.
+    @property
+    def area(self) -> float:
+        return 0.5 * self.n.length()
+
+    def sample(self, u: float, v: float) -> Float3:
+        """A point uniform by area for (u, v) uniform in [0, 1)^2: barycentric coordinates
+        (1 - sqrt(u), v sqrt(u), (1 - v) sqrt(u)) (Shirley, "Graphics Gems III")."""
+        su = math.sqrt(u)
+        return self.v0 + (self.e0 * v + self.e1 * (1.0 - v)) * su
+
+    def pdf(self, sr=None) -> float:
+        return 1.0 / self.area
+
+    def get_normal(self, point: Float3 = None) -> Float3:
+        return self.normal_at(point)
+

@@ -32,7 +32,7 @@ import numpy as np
 
 from .. import layout
 from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
-from ..renderer import DEFAULT_FORMULAS
+from ..options import DEFAULT_FORMULAS
 from . import structs
 
 GENERATED = "<generated from rtfgu.layout>"
@@ -77,7 +77,8 @@ def pieces(features, formula: str = "slide") -> list:
     if trace:
         out.append(("hitinfo.wgsl", "hitinfo.wgsl"))
     path = trace and "path_trace" in f
-    if "sampler" in f or path:
+    sampled_lights = path or (trace and "area_lighting" in f)
+    if "sampler" in f or sampled_lights:
         out.append(("random.wgsl", "random.wgsl"))
     out.append(("pixel_sample.wgsl", "pixel_sample.wgsl"))
     for camera in layout.CAMERA_KINDS.values():
@@ -95,6 +96,8 @@ def pieces(features, formula: str = "slide") -> list:
         for kind in TEXTURES:
             if kind.name in f:
                 out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
+    if sampled_lights:
+        out.append(("light_sample.wgsl", "light_sample.wgsl"))
     if trace and _lit(f):
         out.append(("lights.wgsl", "lights.wgsl"))
         if "shadows" in f:
@@ -130,7 +133,7 @@ def piece_names() -> list:
     names += ["concentric_map.wgsl"]
     names += [kind.wgsl_file for kind in SHAPES]
     names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
-    names += ["lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
+    names += ["light_sample.wgsl", "lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
     return names + ["shade.wgsl", "intersect_scene.wgsl", "environment.wgsl", "hemisphere_map.wgsl",
                      "path_trace.wgsl", "main.wgsl"]
@@ -404,7 +407,7 @@ def _header(flat, features, bindings) -> str:
     counts += [("NUM_" + kind.table.upper(), flat.count(kind.name)) for kind in SHAPES]
     counts += [("NUM_" + kind.table.upper(), len(flat.lights[kind.name])) for kind in LIGHTS]
     if "path_trace" in features:
-        counts.append(("PATH_MAX_DEPTH", flat.max_depth))
+        counts += [("PATH_MAX_DEPTH", flat.max_depth), ("PATH_LIGHTS_AT_EVERY_VERTEX", int(flat.lights_at_every_vertex))]
     if "environment" in features:
         counts += [("ENVIRONMENT_HEIGHT", flat.environment.shape[0]), ("ENVIRONMENT_WIDTH", flat.environment.shape[1])]
     parts.append("\n".join("const %s = %du;" % c for c in counts))

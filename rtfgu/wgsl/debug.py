@@ -9,7 +9,7 @@ import numpy as np
 
 from .. import layout
 from ..layout import compile_scene
-from ..shading import MAX_DEPTH
+from ..tracers.whitted import MAX_DEPTH
 from . import structs
 from .assemble import assemble, check_formula
 from .runner import compile_program

@@ -1,5 +1,5 @@
 // release: solves a05
-// A dielectric in the ray-cast loop (rtfgu.material.Dielectric): it refracts as transparent does;
+// A dielectric in the ray-cast loop (rtfgu.materials.Dielectric): it refracts as transparent does;
 // the path tracer's Fresnel choice is in path_trace.wgsl.
 fn dielectric(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 {
@@ -8,7 +8,7 @@ fn dielectric(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 
 // #if path_trace
 // Fresnel's reflectance R for unpolarised light, 1 under total internal reflection
-// (rtfgu.fresnel.fresnel_reflectance).
+// (rtfgu.brdfs.fresnel_reflector.fresnel_reflectance).
 fn fresnel_reflectance(cos_i: f32, eta: f32) -> f32
 {
     let sin2_t = eta * eta * (1.0 - cos_i * cos_i);
@@ -21,7 +21,7 @@ fn fresnel_reflectance(cos_i: f32, eta: f32) -> f32
     return 0.5 * (r_perp * r_perp + r_par * r_par);
 }
 
-// The next direction: reflected if xi < R, refracted otherwise (rtfgu.fresnel.scatter).
+// The next direction: reflected if xi < R, refracted otherwise (rtfgu.materials.dielectric.scatter).
 fn scatter(direction: vec3f, normal: vec3f, ior: f32, xi: f32) -> vec3f
 {
     var cos_i = -dot(direction, normal);

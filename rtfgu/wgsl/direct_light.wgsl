@@ -2,7 +2,7 @@
 // The light loop (02562, "Sampling light in the shader"), written once for every shader
 // that reflects light (rtfgu.registry ShaderKind.brdf): L_e + L_a, plus for every light the
 // shader's BRDF term times L_i (n . w_i), unless the light is below the surface or, with
-// shadows, hidden (rtfgu.shading.lambertian and phong compute the same sum in this order).
+// shadows, hidden (Matte.shade and phong compute the same sum in this order).
 fn brdf(hit: ptr<function, HitInfo>, w_o: vec3f, w_i: vec3f, cos_theta: f32) -> vec3f
 {
     switch (*hit).shader {
@@ -15,7 +15,7 @@ fn brdf(hit: ptr<function, HitInfo>, w_o: vec3f, w_i: vec3f, cos_theta: f32) -> 
 
 fn direct_light(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 {
-    var result = (*hit).emission + (*hit).color * AMBIENT_FRACTION;
+    var result = (*hit).emission + (*hit).color * (*hit).ambient;
     let w_o = -(*r).direction;
     // #each light
     for (var i = 0u; i < NUM_$TABLE; i++) {

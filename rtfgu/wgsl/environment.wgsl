@@ -1,5 +1,5 @@
 // What a ray that leaves the scene sees (rtfgu.Scene.background_radiance): the
-// EnvironmentLight's lat-long image (rtfgu/environment_light.py, 02562 worksheet 9), the
+// EnvironmentLight's lat-long image (rtfgu/lights/environment_light.py, 02562 worksheet 9), the
 // nearest texel at u = 1/2 + atan2(x, -z) / (2 pi), v = acos(y) / pi; else the background.
 fn background_radiance(direction: vec3f) -> vec3f
 {

@@ -1,5 +1,6 @@
 // What a ray-surface intersection records (02562, "struct HitInfo"); after the slide's dots
-// come the material of the shape hit: shader id, rho_s, s, ior and L_e (rtfgu.shading.HitInfo).
+// come the material of the shape hit: shader id, rho_s, s, ior, L_e, its diffuse kd and its
+// ambient term ka L_a (rtfgu/hit_info.py, rtfgu/materials).
 struct HitInfo {
     has_hit: bool,
     dist: f32,
@@ -10,11 +11,13 @@ struct HitInfo {
     specular: vec3f,
     shininess: f32,
     ior: f32,
-    emission: vec3f
+    emission: vec3f,
+    kd: f32,
+    ambient: vec3f
 };
 
 fn empty_hit() -> HitInfo
 {
     return HitInfo(false, 0.0, vec3f(0.0), vec3f(0.0), vec3f(0.0), BASE_COLOR,
-                   vec3f(0.0), 0.0, 1.0, vec3f(0.0));
+                   vec3f(0.0), 0.0, 1.0, vec3f(0.0), 0.0, vec3f(0.0));
 }

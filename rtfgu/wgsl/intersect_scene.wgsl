@@ -30,6 +30,8 @@ fn set_material(hit: ptr<function, HitInfo>, k: u32, kind: i32, row: u32)
     (*hit).shininess = m.shininess;
     (*hit).ior = m.ior;
     (*hit).emission = m.emission;
+    (*hit).kd = m.kd;
+    (*hit).ambient = m.ambient;
 }
 // #endif
 

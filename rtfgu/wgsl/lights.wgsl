@@ -26,19 +26,25 @@ fn sample_point_light(pos: vec3f, i: u32) -> Light
 }
 // #endif
 // #if directional
-// A directional light (rtfgu/directional_light.py): the same L_i from -direction everywhere,
+// A directional light (rtfgu/lights/directional.py): the same L_i from its direction (toward the light) everywhere,
 // at no finite distance (FAR, as a fresh ray's tmax).
 fn sample_directional(pos: vec3f, i: u32) -> Light
 {
-    return Light(directionals[i].intensity, -normalize(directionals[i].direction), FAR);
+    return Light(directionals[i].intensity, normalize(directionals[i].direction), FAR);
 }
 // #endif
 // #if area_light
-// An area light in the ray-cast loop (rtfgu/area_light.py, AreaLight.sample): a point light at
+// An area light in the ray-cast loop (rtfgu/lights/area_light.py, AreaLight.sample): a point light at
 // its shape's centre; a triangle sends L_e A cos(theta_l), a sphere L_e pi r^2 and stops the
 // shadow ray at its surface.
 fn sample_area_light(pos: vec3f, i: u32) -> Light
 {
+    // #if area_lighting
+    // AreaLighting (rtfgu/tracers/area_lighting.py): a point of the light drawn from the stream.
+    let u = random_float(stream.x, stream.y, stream.z + LIGHT_U + 2u * i, uniforms.seed);
+    let v = random_float(stream.x, stream.y, stream.z + LIGHT_V + 2u * i, uniforms.seed);
+    return sample_area_light_area(pos, i, u, v);
+    // #else
     let light = area_lights[i];
     if (light.radius > 0.0) {
         let sample = point_light(light.v0, light.emission * (PI * light.radius * light.radius), pos);
@@ -49,5 +55,6 @@ fn sample_area_light(pos: vec3f, i: u32) -> Light
     let sample = point_light(center, light.emission * (0.5 * length(n)), pos);
     let cos_l = max(-dot(normalize(n), sample.w_i), 0.0);
     return Light(sample.L_i * cos_l, sample.w_i, sample.dist);
+    // #endif
 }
 // #endif

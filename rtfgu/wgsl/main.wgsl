@@ -34,6 +34,9 @@ fn main(@builtin(global_invocation_id) id: vec3u)
         // #else
         var hit = empty_hit();
         for (var i = 0; i < max_depth; i++) {
+            // #if area_lighting
+            stream = vec3u(pixel, s, 2u + u32(i) * VERTEX_DIMENSIONS);
+            // #endif
             if (intersect_scene(&r, &hit)) {
                 result += shade(&r, &hit);
             } else {

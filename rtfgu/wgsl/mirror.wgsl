@@ -1,5 +1,5 @@
 // release: solves a05
-// Perfect reflection: the path continues along w - 2 (w . n) n (rtfgu.shading.mirror).
+// Perfect reflection: the path continues along w - 2 (w . n) n (Reflective.shade, rtfgu/materials/reflective.py).
 fn mirror(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f
 {
     let d = (*r).direction;

@@ -1,17 +1,14 @@
 // release: solves a04 a05 a09
-// PathTrace (rtfgu/path_trace.py; Suffern ch. 26, 02562 worksheet 7): one path per sample,
+// PathTrace (rtfgu/tracers/path_trace.py; Suffern ch. 26, 02562 worksheet 7): one path per sample,
 // next-event estimation at every diffuse vertex (an area light through a point of it drawn
 // from the random stream), a cosine-weighted bounce with Russian roulette, emission counted
 // where the eye sees it and after a mirror or a refraction, from the front of a surface.
 // The numbers of vertex `depth` are the stream's dimensions 2 + depth * 65536 + k
 // (rtfgu.sampling.random.path_dimension), as on the other paths.
-const VERTEX_DIMENSIONS = 65536u;
 const BOUNCE_U = 0u;
 const BOUNCE_V = 1u;
 const ROULETTE = 2u;
 const CHOICE = 3u;
-const LIGHT_U = 8u;
-const LIGHT_V = 9u;
 
 // Duff et al. 2017's orthonormal basis: local (x, y, z) in the frame whose z is the unit axis.
 fn about(axis: vec3f, local: vec3f) -> vec3f
@@ -24,7 +21,7 @@ fn about(axis: vec3f, local: vec3f) -> vec3f
     return t * local.x + bt * local.y + axis * local.z;
 }
 
-// A direction about n with density cos(theta) / pi (rtfgu.lambertian.Lambertian.sample_f).
+// A direction about n with density cos(theta) / pi (rtfgu.brdfs.Lambertian.sample_f).
 fn cosine_direction(n: vec3f, u: f32, v: f32) -> vec3f
 {
     return about(n, hemisphere_map(vec2f(u, v), 1.0));
@@ -33,7 +30,7 @@ fn cosine_direction(n: vec3f, u: f32, v: f32) -> vec3f
 // #if glossy_reflector
 // The normalised Phong lobe rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s, w_r the mirrored w_i,
 // and a direction about the mirror direction with density (s + 1) / (2 pi) cos^s
-// (rtfgu.path_trace.glossy_lobe, lobe_direction).
+// (GlossySpecular.f and sample_f, rtfgu/brdfs/glossy_specular.py).
 fn glossy_lobe(specular: vec3f, shininess: f32, normal: vec3f, w_o: vec3f, w_i: vec3f, cos_theta: f32) -> vec3f
 {
     let w_r = normal * (2.0 * cos_theta) - w_i;
@@ -48,40 +45,6 @@ fn lobe_direction(w_r: vec3f, shininess: f32, u: f32, v: f32) -> vec3f
 // #endif
 
 // #if area_light
-// AreaLight.sample_area: L_e A cos(theta_l) / d^2 toward a point of area light i uniform by
-// area, zero from behind.
-fn sample_area_light_area(pos: vec3f, i: u32, u: f32, v: f32) -> Light
-{
-    let light = area_lights[i];
-    var point: vec3f;
-    var normal: vec3f;
-    var area: f32;
-    if (light.radius > 0.0) {
-        let z = 1.0 - 2.0 * u;
-        let s = sqrt(max(0.0, 1.0 - z * z));
-        let phi = 2.0 * PI * v;
-        normal = vec3f(s * cos(phi), s * sin(phi), z);
-        point = light.v0 + normal * light.radius;
-        area = 4.0 * PI * light.radius * light.radius;
-    } else {
-        let n = cross(light.e0, light.e1);
-        point = light.v0 + (light.e0 * v + light.e1 * (1.0 - v)) * sqrt(u);
-        normal = normalize(n);
-        area = 0.5 * length(n);
-    }
-    let to_light = point - pos;
-    let dist = length(to_light);
-    if (!(dist > 0.0)) {
-        return Light(vec3f(0.0), normal, 0.0);
-    }
-    let w_i = to_light / dist;
-    let cos_l = -dot(normal, w_i);
-    if (!(cos_l > 0.0)) {
-        return Light(vec3f(0.0), w_i, dist);
-    }
-    return Light(light.emission * (area * cos_l / (dist * dist)), w_i, dist);
-}
-
 fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
     let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
@@ -91,7 +54,7 @@ fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: 
 // #endif
 // #if ambient_occluder
 // AmbientOccluder.sample_area: 2 pi L toward a direction uniform on the hemisphere about the
-// normal, unbounded (rtfgu/ambient_occluder.py).
+// normal, unbounded (rtfgu/lights/ambient_occluder.py).
 fn sample_path_ambient_occluder(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
     let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
@@ -113,7 +76,7 @@ fn sample_path_directional(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel:
 // #endif
 
 // The light of every light reflected by f_r = rho / pi plus the glossy lobe
-// (rtfgu.path_trace.direct_light).
+// (Matte.direct_light, rtfgu/materials/matte.py).
 fn direct_path(position: vec3f, normal: vec3f, w_o: vec3f, rho: vec3f, specular: vec3f, shininess: f32,
                first: u32, pixel: u32, s: u32) -> vec3f
 {
@@ -165,11 +128,14 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
         // #if lambertian|glossy_reflector
         if (hit.shader == LAMBERTIAN || hit.shader == GLOSSY_REFLECTOR) {
             let n = select(hit.normal, -hit.normal, facing > 0.0);
-            let rho = hit.color;
+            let rho = hit.color * hit.kd;
             let specular = select(vec3f(0.0), hit.specular, hit.shader == GLOSSY_REFLECTOR);
             // #if lights
-            result += throughput * direct_path(hit.position, n, -r.direction, rho, specular, hit.shininess,
-                                               first, pixel, s);
+            // GlobalTrace (PATH_LIGHTS_AT_EVERY_VERTEX 0) samples the lights at the first vertex only.
+            if (PATH_LIGHTS_AT_EVERY_VERTEX == 1u || depth == 0u) {
+                result += throughput * direct_path(hit.position, n, -r.direction, rho, specular, hit.shininess,
+                                                   first, pixel, s);
+            }
             // #endif
             if (depth + 1u == PATH_MAX_DEPTH) {
                 break;
@@ -187,7 +153,7 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
             let v = random_float(pixel, s, first + BOUNCE_V, uniforms.seed);
             var w_i: vec3f;
             if (xi < q_d) {
-                // rtfgu.lambertian.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
+                // rtfgu.brdfs.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
                 let f = rho * (1.0 / PI);
                 w_i = cosine_direction(n, u, v);
                 let cos_theta = dot(n, w_i);
@@ -210,7 +176,7 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
                 break;
             }
             r = Ray(hit.position, w_i, SPAWN_EPSILON, FAR);
-            sees_emission = false;
+            sees_emission = !(PATH_LIGHTS_AT_EVERY_VERTEX == 1u || depth == 0u);
             continue;
         }
         // #endif

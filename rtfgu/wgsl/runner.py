@@ -19,7 +19,7 @@ import time
 import numpy as np
 
 from ..layout import compile_sampler, compile_scene
-from ..renderer import pixel_sampler
+from ..options import pixel_sampler
 from . import structs
 from .assemble import GENERATED, assemble, check_formula
 from .device import get_device

@@ -8,9 +8,10 @@ import math
 import numpy as np
 
 from .. import layout
-from ..material import SHADER_NAMES
+from ..materials.material import SHADER_NAMES
 from ..ray import RAY_EPSILON
-from ..shading import AMBIENT_FRACTION, DIFFUSE_FRACTION, MAX_DEPTH, SPAWN_EPSILON
+from ..ray import SPAWN_EPSILON
+from ..tracers.whitted import MAX_DEPTH
 
 # WGSL alignment and size of the field types the records use (WGSL spec, "Alignment and Size").
 _TYPES = {3: ("vec3f", 16, 12), 1: ("f32", 4, 4)}
@@ -82,9 +83,9 @@ def _f32(x: float) -> str:
 
 
 def constants_wgsl() -> str:
-    """Shader, shape-kind and camera-kind ids and the numbers the shaders share with
-    rtfgu.shading, as WGSL constants."""
-    lines = ["// Shader ids: the cases of shade's switch (rtfgu.material)."]
+    """Shader, shape-kind and camera-kind ids and the numbers the shaders share with the
+    tracers and rays of the lecture layer, as WGSL constants."""
+    lines = ["// Shader ids: the cases of shade's switch (rtfgu.materials)."]
     for shader_id, name in sorted(SHADER_NAMES.items()):
         lines.append("const %s: i32 = %d;" % (name.upper(), shader_id))
     lines.append("// Shape kinds and camera kinds (rtfgu.layout).")
@@ -93,10 +94,8 @@ def constants_wgsl() -> str:
     for kind, name in sorted(layout.CAMERA_KINDS.items()):
         lines.append("const %s: i32 = %d;" % (name.upper(), kind))
     lines += [
-        "// rtfgu.shading and rtfgu.ray.",
+        "// rtfgu.tracers.Whitted (02562: const max_depth = 10) and rtfgu.ray.",
         "const max_depth = %d;" % MAX_DEPTH,
-        "const DIFFUSE_FRACTION = %sf;" % _f32(DIFFUSE_FRACTION),
-        "const AMBIENT_FRACTION = %sf;" % _f32(AMBIENT_FRACTION),
         "const SPAWN_EPSILON = %sf;" % _f32(SPAWN_EPSILON),
         "const RAY_EPSILON = %sf;" % _f32(RAY_EPSILON),
         "// WGSL has no infinity literal: a fresh ray's tmax (rtfgu.layout.FAR).",

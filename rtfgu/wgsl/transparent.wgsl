@@ -1,5 +1,5 @@
 // release: solves a05
-// Refraction by Snell's law with relative index eta = n1 / n2 (rtfgu.shading.transparent).
+// Refraction by Snell's law with relative index eta = n1 / n2 (PerfectTransmitter, rtfgu/btdfs/perfect_transmitter.py).
 // w . n < 0: the ray enters (eta = 1 / ior); otherwise it leaves (eta = ior, normal
 // flipped). With no real refracted direction (total internal reflection) it is mirrored.
 fn transparent(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f

@@ -1,6 +1,6 @@
-"""lambertian drops the cosine term: rho_d / pi * L_i, without cos(theta)."""
+"""Matte's light loop drops the cosine term: f_r L_i, without n . w_i."""
 ASSIGNMENT = "a04"
 REPLACE = [
-    ("shading.py", "        result += rho_d / math.pi * sample.L_i * cos_theta\n",
-     "        result += rho_d / math.pi * sample.L_i\n"),
+    ("materials/matte.py", "            L += self.f(sr, wo, wi) * L_i * ndotwi\n",
+     "            L += self.f(sr, wo, wi) * L_i\n"),
 ]

@@ -1,6 +1,6 @@
-"""in_shadow starts the shadow ray at the surface (tmin 0, tmax dist): no SPAWN_EPSILON offset, so shadow acne."""
+"""in_shadow starts the shadow ray at the surface (tmin 0, tmax the distance): no SPAWN_EPSILON offset, so shadow acne."""
 ASSIGNMENT = "a05"
 REPLACE = [
-    ("shading.py", "    shadow_ray = Ray(position, w_i, SPAWN_EPSILON, dist - SPAWN_EPSILON)\n",
-     "    shadow_ray = Ray(position, w_i, 0.0, dist)\n"),
+    ("lights/light.py", "        ray.tmin = SPAWN_EPSILON\n        ray.tmax = self.distance(sr) - SPAWN_EPSILON\n",
+     "        ray.tmin = 0.0\n        ray.tmax = self.distance(sr)\n"),
 ]

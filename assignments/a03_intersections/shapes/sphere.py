@@ -40,3 +40,33 @@ class Sphere(Shape):
         if phi < 0.0:
             phi += 2.0 * math.pi
         return phi / (2.0 * math.pi), 1.0 - theta / math.pi
+
+    # An area light's shape (Suffern ch. 18, "Area Lights"): sample, pdf and get_normal.
+    @property
+    def area(self) -> float:
+        return 4.0 * math.pi * self.radius * self.radius
+
+    def sample(self, u: float, v: float) -> Float3:
+        """A point uniform by area for (u, v) uniform in [0, 1)^2: the direction with
+        z = 1 - 2u and phi = 2 pi v (Archimedes: uniform in z)."""
+        return self.sample_with_normal(u, v)[0]
+
+    def sample_with_normal(self, u: float, v: float) -> tuple:
+        """(sample(u, v), its unit normal), the normal without a division by the radius."""
+        normal = self.unit_direction(u, v)
+        return self.center + normal * self.radius, normal
+
+    @staticmethod
+    def unit_direction(u: float, v: float) -> Float3:
+        z = 1.0 - 2.0 * u
+        s = math.sqrt(max(0.0, 1.0 - z * z))
+        phi = 2.0 * math.pi * v
+        return Float3(s * math.cos(phi), s * math.sin(phi), z)
+
+    def pdf(self, sr=None) -> float:
+        """The density of ``sample`` per unit area: 1 / area."""
+        return 1.0 / self.area
+
+    def get_normal(self, point: Float3) -> Float3:
+        return (point - self.center) / self.radius
+

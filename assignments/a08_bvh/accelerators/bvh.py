@@ -134,7 +134,8 @@ class BVH:
         shape), ray.tmax shrunk to its t; -1 and ray.tmax unchanged on a miss."""
         # TODO a08: BVH.intersect
         #   best = -1; an empty BVH (self.root is None) returns it. Keep a stack, starting with [self.root].
-        #   Pop a node; skip it when node.bbox.hit(ray) > ray.tmax (entered beyond the nearest hit so far).
+        #   Pop a node; skip it when the ray misses its box (node.bbox.hit(ray) is math.inf) or enters it
+        #   beyond the nearest hit so far (> ray.tmax).
         #   Leaf: for k in node.first .. node.first + node.count - 1, shape i = self.order[k]: if best < 0
         #   or i > best, a hit of self.shapes[i].intersect_p(ray) makes best = i; if i < best (an earlier
         #   shape, which wins an equal t) raise ray.tmax to math.nextafter(ray.tmax, math.inf) first and

@@ -48,9 +48,10 @@ class Check:
     memory_mb: int | None = None    # overrides the grader's limit (0: none; llvmpipe reserves much address space)
     needs: tuple = ()               # the student files the test runs (relative to rtfgu/); () : all of them
     known: str = ""                 # a function of rtfgu.grading.mistakes: the known mistakes per case
-    # kind "statistic": judge(check, got, reference) -> (fraction, message lines), and
-    # reference() -> the reference observation, computed on the grader's side (an exact truth
-    # or the staff renderer's estimate) instead of by running the probe on the solution
+    # judge(check, got, reference) -> (fraction, message lines): the check's own judge, for any
+    # kind but images (judge_cases by default); with kind "statistic", reference() -> the
+    # reference observation, computed on the grader's side (an exact truth or the staff
+    # renderer's estimate) instead of by running the probe on the solution
     judge: object = None
     time_limit: float | None = None  # this test's own limit in seconds, over the grader's (a render in pure Python)
     reference: object = None

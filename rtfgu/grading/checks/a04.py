@@ -36,29 +36,29 @@ def hint_lambert(inputs, want, got):
     if len(lit) == 1 and lit[0] < 0.999 and all(abs(g * lit[0] - w) < 1e-6 * max(1e-3, abs(w)) for g, w in zip(d_got, d_want)) \
             and any(abs(w) > 1e-9 for w in d_want):
         return ("your diffuse term is the expected one divided by cos(theta) = n . w_i = %.4g: "
-                "the cosine term of Lambert's law is missing (rho_d / pi * L_i * (n . w_i))" % lit[0])
+                "the cosine term of Lambert's law is missing (f_r L_i (n . w_i), f_r = kd cd / pi)" % lit[0])
     if all(abs(g - w - 0.1 * c) < 1e-9 for g, w, c in zip(L, want["L_o"], color)):
         return "you added the ambient term twice"
     if all(abs(g + 0.1 * c - w) < 1e-9 for g, w, c in zip(L, want["L_o"], color)):
         return "the ambient term L_a = 0.1 * colour is missing"
     if any(abs(w) > 1e-9 for w in d_want) and all(abs(g - w * math.pi) < 1e-6 * max(1e-3, abs(g)) for g, w in zip(d_got, d_want)):
-        return "divide rho_d by pi (the Lambertian BRDF is rho_d / pi)"
+        return "divide kd cd by pi (the Lambertian BRDF is f_r = kd cd / pi)"
     if not lit and any(abs(g) > 1e-9 for g in d_got):
         return "a light below the surface (n . w_i <= 0) must add nothing"
     return None
 
 
 register("a04_diffuse", [
-    Check("sample_point_light: Kepler's inverse square law and the direction to the light", 2,
+    Check("PointLight.L and get_direction: Kepler's inverse square law and the direction to the light", 2,
           ("a04", "observe_kepler"), hint=hint_kepler, known="kepler"),
-    Check("lambertian: one point light, Lambert's cosine law and ambient", 3, ("a04", "observe_lambert"),
+    Check("Matte.shade: one point light, Lambert's cosine law and ambient", 3, ("a04", "observe_lambert"),
           hint=hint_lambert, known="lambert"),
-    Check("lambertian: a light below the surface adds nothing", 1, ("a04", "observe_lambert_below"),
+    Check("Matte.shade: a light below the surface adds nothing", 1, ("a04", "observe_lambert_below"),
           hint=hint_lambert, known="lambert"),
     image_check("image: 02562 default scene, Lambertian, no shadows", 2, "default_scene",
                 shaders=("LAMBERTIAN", "LAMBERTIAN"), shadows=False),
     # ### BEGIN HIDDEN
-    Check("lambertian: several lights and emission", 2, ("a04_hidden", "observe_lambert_more"), visibility="hidden",
+    Check("Matte.shade: several lights and emission", 2, ("a04_hidden", "observe_lambert_more"), visibility="hidden",
           hint=hint_lambert, known="lambert"),
     # ### END HIDDEN
 ])

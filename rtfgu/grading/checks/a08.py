@@ -2,7 +2,9 @@
 al. 2005's slab test, widened as in PBRT-v4 section 6.1.2; PBRT-v4 section 7.3's traversal).
 The probes are in rtfgu/grading/probes/a08.py (visible) and a08_hidden.py; the box hints
 compare with the known mistakes of rtfgu.grading.mistakes.slab, the BVH hints compare the
-student's hit with the reference hit."""
+student's hit with the reference hit, and the traversal test judges what the traversal costs
+(shape and box tests per ray, counted in the child) against the reference traversal of the
+same tree, and whether it skips every node its own box test rejects."""
 from __future__ import annotations
 
 import math
@@ -77,12 +79,86 @@ def hint_traversal(inputs, want, got):
     return None
 
 
+# The traversal test, per scene: every shape test lies in a leaf whose box the traversal tested
+# for that ray and below no node its latest box test rejected; the shape tests over the
+# scene's rays at most COST_FACTOR times the reference traversal's on the same tree plus
+# COST_SLACK per ray, and the box tests at most BOX_FACTOR times the reference's plus
+# BOX_SLACK per ray (a traversal may test a node's box once or twice, never without bound).
+COST_FACTOR, COST_SLACK = 2.0, 2
+BOX_FACTOR, BOX_SLACK = 2.0, 4
+SKIPPED = ("tested shapes below a node whose box test had rejected it (BBox.hit gave math.inf, a miss, or a t "
+           "beyond ray.tmax): a rejected node is skipped with everything under it. Test a node's box again when "
+           "it is taken off the stack and skip it when the ray misses the box or enters it beyond ray.tmax (the box "
+           "tests that order the children only decide which is pushed last)")
+UNGUARDED = ("tested shapes of a leaf whose box it never tested: a BVH earns its keep only when the traversal "
+             "tests a node's box first and visits the node only if the ray enters it before ray.tmax; testing "
+             "every shape, or every node, is the cost a BVH is there to avoid")
+TOO_MANY = ("skip every node whose box the ray enters beyond ray.tmax, and push the farther child first so that "
+            "the nearer one is taken next: a hit found early shrinks ray.tmax and the boxes behind it are skipped")
+
+
+def judge_traversal(check, got, want):
+    """(fraction, lines): per scene of the traversal test, whether the student's BVH.intersect
+    is led by its own box tests (no shape tested in a leaf whose box it did not test, or below
+    a node it rejected) and costs about what the reference traversal of the same tree costs.
+    The answers themselves are judged by the other BVH tests."""
+    if "error" in got:
+        return 0.0, [got["error"]]
+    cases_got, cases_want = got.get("cases"), want["cases"]
+    if not isinstance(cases_got, list) or len(cases_got) != len(cases_want):
+        return 0.0, ["the test stopped before it tried every ray (%s)" % got.get("stopped", "no reason given")]
+    scenes = []
+    for g, w in zip(cases_got, cases_want):
+        scene = w["in"]["scene"]
+        if not scenes or scenes[-1][0] != scene:
+            scenes.append((scene, []))
+        scenes[-1][1].append((g, w))
+    passed, lines = 0, []
+    for scene, pairs in scenes:
+        raised = [(w["label"], g["error"]) for g, w in pairs if "error" in g]
+        if raised:
+            lines.append("- the %s scene: your code raised %s on %d of its %d rays (the first: %s)"
+                         % (scene, raised[0][1], len(raised), len(pairs), raised[0][0]))
+            continue
+        outs = [(g["out"], w["out"], w["label"]) for g, w in pairs]
+        shapes = sum(int(o["shape tests"]) for o, _, _ in outs)
+        boxes = sum(int(o["box tests"]) for o, _, _ in outs)
+        ref_shapes = sum(r["shape tests"] for _, r, _ in outs)
+        ref_boxes = sum(r["box tests"] for _, r, _ in outs)
+        rays = len(outs)
+        problems = []
+        for key, text in (("tested in a leaf whose box was not tested", UNGUARDED),
+                          ("tested below a rejected box", SKIPPED)):
+            found = [(label, o[key]) for o, _, label in outs if o[key]]
+            if found:
+                problems.append("on %d of its %d rays your traversal %s. The first: %s, shapes %s" % (
+                    len(found), rays, text, found[0][0], ", ".join(str(s) for s in found[0][1])))
+        blind = [label for o, r, label in outs if r["shape"] >= 0 and o["shape tests"] == 0 and o["box tests"] == 0]
+        if blind:
+            problems.append("on %d rays that hit a shape your traversal tested no box and no shape (the first: %s)"
+                            % (len(blind), blind[0]))
+        if shapes > COST_FACTOR * ref_shapes + COST_SLACK * rays:
+            problems.append("your traversal made %d shape tests over its %d rays (%.1f per ray); the reference "
+                            "traversal of the same tree makes %d: %s" % (shapes, rays, shapes / rays, ref_shapes, TOO_MANY))
+        if boxes > BOX_FACTOR * ref_boxes + BOX_SLACK * rays:
+            problems.append("your traversal made %d box tests over its %d rays; the reference traversal makes %d: "
+                            "test each node's box at most twice (to order it, and when it is taken off the stack)"
+                            % (boxes, rays, ref_boxes))
+        if problems:
+            lines.append("- the %s scene: %s" % (scene, "\n  ".join(problems)))
+        else:
+            passed += 1
+            lines.append("- the %s scene: %d shape and %d box tests over %d rays (the reference: %d and %d)"
+                         % (scene, shapes, boxes, rays, ref_shapes, ref_boxes))
+    return passed / len(scenes), lines
+
+
 register("a08_bvh", [
-    Check("BBox.hit: rays that enter the box, and where", 2, ("a08", "observe_box_enter"),
+    Check("BBox.hit: rays that enter the box, and where", 1, ("a08", "observe_box_enter"),
           hint=hint_box, known="slab", needs=BOX),
     Check("BBox.hit: negative direction components (t_near and t_far swap)", 1, ("a08", "observe_box_negative"),
           hint=hint_box, known="slab", needs=BOX),
-    Check("BBox.hit: misses and the ray's interval [tmin, tmax]", 2, ("a08", "observe_box_interval"),
+    Check("BBox.hit: misses and the ray's interval [tmin, tmax]", 1, ("a08", "observe_box_interval"),
           hint=hint_box, known="slab", needs=BOX),
     Check("BBox.hit: direction components of 0 (a ray parallel to a slab)", 1, ("a08", "observe_box_zero"),
           hint=hint_box, known="slab", needs=BOX),
@@ -110,5 +186,9 @@ register("a08_bvh", [
     # ### BEGIN HIDDEN
     Check("BVH.intersect: a random scene of 120 shapes, 150 rays", 1, ("a08_hidden", "observe_bvh_random"),
           visibility="hidden", hint=hint_traversal),
+    # ### END HIDDEN
+    # ### BEGIN HIDDEN
+    Check("BVH.intersect: the traversal is led by its box tests, at about the reference tree's cost", 2,
+          ("a08_hidden", "observe_traversal"), visibility="hidden", judge=judge_traversal),
     # ### END HIDDEN
 ])

@@ -1,9 +1,10 @@
-"""Probes of a05's visible tests: shadow rays, Phong, mirror and refraction (02562 weeks 2-3)."""
+"""Probes of a05's visible tests: shadow rays, Phong, mirror and refraction (02562 weeks 2-3;
+Suffern ch. 15, 24 and 27: Light.in_shadow, GlossySpecular, Reflective, PerfectTransmitter)."""
 from __future__ import annotations
 
 import math
 
-from .a04 import _hit
+from .a04 import _hit, _shading_scene
 from .support import Cases, boolean, num, vec
 
 LIGHT = (0.0, 1.0, 0.0)
@@ -22,13 +23,21 @@ def _default_shapes(rt):
             rt.Sphere(F(0, 0.5, 0), 0.3, F(0, 0, 0))]
 
 
+def _in_shadow(rt, scene, point, light):
+    """A point light at ``light``'s in_shadow for a shadow ray from ``point`` toward it."""
+    F = rt.Float3
+    source = rt.PointLight(F(*light), F(1, 1, 1))
+    sr = rt.HitInfo(scene)
+    sr.position = F(*point)
+    w, _ = _toward([sr.position.x, sr.position.y, sr.position.z], light)
+    return boolean(source.in_shadow(rt.Ray(sr.position, F(*w)), sr), "in_shadow's result")
+
+
 def _shadow_case(rt, cases, label, shapes, point, light):
     def run():
-        F = rt.Float3
         scene = rt.Scene(None)
         scene.shapes.extend(shapes())
-        w, dist = _toward(point, light)
-        return {"in shadow": boolean(rt.shading.in_shadow(scene, F(*point), F(*w), dist), "in_shadow's result")}
+        return {"in shadow": _in_shadow(rt, scene, point, light)}
     cases.run(label, run, point=list(point), light=list(light))
 
 
@@ -61,8 +70,7 @@ def observe_self_shadow(rt):
             if not scene.intersect(rt.Ray(F(*eye), d), hit):
                 return {"in shadow": "no surface hit"}
             p = [hit.position.x, hit.position.y, hit.position.z]
-            w, dist = _toward(p, LIGHT)
-            return {"in shadow": boolean(rt.shading.in_shadow(scene, hit.position, F(*w), dist), "in_shadow's result")}
+            return {"in shadow": _in_shadow(rt, scene, p, LIGHT)}
         cases.run("in_shadow from the surface point the eye ray toward (%g, %g, %g) hits, toward the light at (0, 1, 0)"
                   % target, run)
     return cases.result()
@@ -74,14 +82,12 @@ def _phong_cases(rt, setups):
     for position, normal, eye, light, color, specular, shininess in setups:
         def run(position=position, normal=normal, eye=eye, light=light, color=color, specular=specular,
                 shininess=shininess):
-            scene = rt.Scene(None)
-            scene.shadows = False
-            scene.lights.append(rt.PointLight(F(*light), F(math.pi, math.pi, math.pi)))
-            material = rt.Material(rt.PHONG, specular=F(*specular), shininess=shininess)
-            hit = _hit(rt, position, normal, color, material=material)
+            scene = _shading_scene(rt, [(light, (math.pi, math.pi, math.pi))])
+            material = rt.Phong(cs=F(*specular), exp=shininess)
             r = rt.Ray(F(*eye), rt.float3.normalize(F(*position) - F(*eye)))
-            return {"L_o": vec(rt.shading.phong(scene, r, hit), "phong's result")}
-        cases.run("phong at (%g, %g, %g), normal (%g, %g, %g), seen from (%g, %g, %g), light at (%g, %g, %g), "
+            hit = _hit(rt, scene, r, position, normal, color, material=material)
+            return {"L_o": vec(hit.material.shade(hit), "Phong.shade's result")}
+        cases.run("Phong.shade at (%g, %g, %g), normal (%g, %g, %g), seen from (%g, %g, %g), light at (%g, %g, %g), "
                   "rho_s %g, s %g" % (tuple(position) + tuple(normal) + tuple(eye) + tuple(light)
                                       + (specular[0], shininess)), run)
     return cases.result()
@@ -97,18 +103,47 @@ def observe_phong(rt):
     ])
 
 
+# What the next ray sees, in the probes: a radiance no surface's own shading gives.
+BEYOND = (0.25, 0.5, 0.75)
+
+
+class _Traced:
+    """A tracer that records the rays a material sends on (their origin, direction, interval and
+    depth) and returns BEYOND for each."""
+
+    def __init__(self, rt):
+        self.rt, self.rays = rt, []
+        self.samples_area_lights = False
+
+    def trace_ray(self, ray, depth=0):
+        self.rays.append({"origin": vec(ray.origin, "the traced ray's origin"),
+                          "direction": vec(ray.direction, "the traced ray's direction"),
+                          "tmin": num(ray.tmin, "the traced ray's tmin"), "tmax": num(ray.tmax, "the traced ray's tmax"),
+                          "depth": depth})
+        return self.rt.Float3(*BEYOND)
+
+
+def _sends_on(rt, position, normal, origin, material):
+    """shade of ``material`` hit at ``position`` by a ray from ``origin`` (depth 2), in a scene
+    without lights whose tracer records the rays it is asked to trace."""
+    F = rt.Float3
+    scene = rt.Scene(None)
+    tracer = _Traced(rt)
+    scene.tracer = tracer
+    r = rt.Ray(F(*origin), rt.float3.normalize(F(*position) - F(*origin)), 1e-5, 7.0)
+    hit = _hit(rt, scene, r, position, normal, (0, 0, 0), material=material)
+    hit.depth = 2
+    result = vec(material.shade(hit), "shade's result")
+    return {"returned": result, "traced": tracer.rays}
+
+
 def observe_mirror(rt):
     cases = Cases()
-    F = rt.Float3
     for position, normal, origin in [((0, 0, 0), (0, 1, 0), (1, 1, 0)), ((0, 0.8, 0), (0, 1, 0), (2, 1.5, 2)),
                                      ((0.3, 0.5, 0), (1, 0, 0), (2, 1.5, 2))]:
         def run(position=position, normal=normal, origin=origin):
-            hit = _hit(rt, position, normal, (0, 0, 0), material=rt.Material(rt.MIRROR))
-            r = rt.Ray(F(*origin), rt.float3.normalize(F(*position) - F(*origin)), 1e-5, 7.0)
-            result = vec(rt.shading.mirror(rt.Scene(None), r, hit), "mirror's result")
-            return {"returned": result, "r.origin": vec(r.origin, "r.origin"), "r.direction": vec(r.direction, "r.direction"),
-                    "r.tmax": num(r.tmax, "r.tmax"), "hit.has_hit": boolean(hit.has_hit, "hit.has_hit")}
-        cases.run("mirror at (%g, %g, %g) with normal (%g, %g, %g), ray from (%g, %g, %g)"
+            return _sends_on(rt, position, normal, origin, rt.Reflective())
+        cases.run("Reflective.shade (a perfect mirror) at (%g, %g, %g) with normal (%g, %g, %g), ray from (%g, %g, %g)"
                   % (tuple(position) + tuple(normal) + tuple(origin)), run)
     return cases.result()
 
@@ -122,11 +157,7 @@ def observe_refraction(rt):
             ((0.25, 0.5, 0), (0.8333333, 0, 0.5527708), (0, 0.5, 0.2), 1.5, "leaving glass beyond the critical angle: total internal reflection"),
             ((0, 0, 0), (0, 1, 0), (1, 1, 0), 1.33, "entering water")]:
         def run(position=position, normal=normal, origin=origin, ior=ior):
-            hit = _hit(rt, position, normal, (0, 0, 0), material=rt.Material(rt.TRANSPARENT, ior=ior))
-            r = rt.Ray(F(*origin), rt.float3.normalize(F(*position) - F(*origin)), 1e-5, 7.0)
-            vec(rt.shading.transparent(rt.Scene(None), r, hit), "transparent's result")
-            return {"r.origin": vec(r.origin, "r.origin"), "r.direction": vec(r.direction, "r.direction"),
-                    "r.tmax": num(r.tmax, "r.tmax"), "hit.has_hit": boolean(hit.has_hit, "hit.has_hit")}
-        cases.run("transparent (%s, ior %g) at (%g, %g, %g) with normal (%g, %g, %g), ray from (%g, %g, %g)"
+            return _sends_on(rt, position, normal, origin, rt.Transparent(ior=ior))
+        cases.run("Transparent.shade (%s, ior %g) at (%g, %g, %g) with normal (%g, %g, %g), ray from (%g, %g, %g)"
                   % ((what, ior) + tuple(position) + tuple(normal) + tuple(origin)), run)
     return cases.result()

@@ -239,7 +239,8 @@ def bvh_cases(rt, scene: str, rays, variants=("as built",), scene_data=None):
     return cases.result()
 
 
-def observe_bvh_nearest(rt):
+def nearest_rays():
+    """The rays of observe_bvh_nearest, on the grid scene."""
     eye = (0.25, 0.5, 6.0)
     rays = []
     for target in ((-3.0, -3.0, -4.0), (-1.0, -1.0, -4.5), (1.0, 1.0, -5.0), (3.0, 3.0, -5.5), (-3.0, 3.0, -4.0),
@@ -253,7 +254,11 @@ def observe_bvh_nearest(rt):
         ((1.0, -1.0, -6.0), (-0.5, 0.25, 1.0), 0.0, INF, "from between the shapes"),
         ((0.5, 0.5, 6.0), (0.0, -0.5, -1.0), 0.0, INF, "down to the floor"),
     ]
-    return bvh_cases(rt, "grid", rays)
+    return rays
+
+
+def observe_bvh_nearest(rt):
+    return bvh_cases(rt, "grid", nearest_rays())
 
 
 def observe_bvh_misses_and_interval(rt):
@@ -275,7 +280,8 @@ def observe_bvh_misses_and_interval(rt):
     return out
 
 
-def observe_bvh_nearest_not_first(rt):
+def not_first_rays():
+    """The rays of observe_bvh_nearest_not_first, on the sheet scene."""
     eye = (0.0, 0.0, 6.0)
     rays = []
     for k in range(8):
@@ -289,7 +295,11 @@ def observe_bvh_nearest_not_first(rt):
         ((3.0, -3.0, -30.0), (0.0, 0.0, 1.0), 0.0, INF, "from behind: the small sphere first"),
         ((-1.5, 6.0, -6.0), (0.0, -1.0, 0.0), 0.0, INF, "from above, down the column of spheres"),
     ]
-    return bvh_cases(rt, "sheet", rays)
+    return rays
+
+
+def observe_bvh_nearest_not_first(rt):
+    return bvh_cases(rt, "sheet", not_first_rays())
 
 
 def observe_bvh_tie(rt):

@@ -1,12 +1,16 @@
 """Probes of a08's hidden tests: the slab test on a box's faces, edges and corners, on boxes
 of zero thickness, from the box's boundary and where rounding decides; the BVH's tie rule
-in any visiting order and a random scene."""
+in any visiting order and a random scene; and what the traversal costs: the shape and box
+tests it makes per ray, and whether it tests a shape below a node its own box test
+rejected."""
 from __future__ import annotations
 
 import math
 import random
 
-from .a08 import INF, VARIANTS, box_cases, bvh_cases
+from .a08 import (INF, SCENES as VISIBLE_SCENES, VARIANTS, accelerators, box_cases, build_shapes, bvh_cases,
+                  nearest_rays, not_first_rays, ray_label, shape_number)
+from .support import Cases, num
 
 def _join(*results):
     out = {"cases": []}
@@ -130,3 +134,151 @@ def observe_bvh_ties(rt):
 
 def observe_bvh_random(rt):
     return bvh_cases(rt, "random", random_rays(2, 150), scene_data=SCENES["random"]())
+
+
+# --- the traversal's cost -------------------------------------------------------------------
+
+class Counter:
+    """The tests one ray's traversal makes, seen through counting wrappers of BBox.hit and of
+    every shape class's intersect_p (a test made inside another counted test is not counted
+    again). A box test *rejects* its node when the t it returns is beyond ray.tmax at that
+    moment (math.inf among them once tmax is finite). A shape test is *unguarded* when the
+    box of the leaf that holds it was not tested for this ray, and *below a rejected box*
+    when a node above it (its leaf included) stands rejected by its latest box test: either
+    way the traversal tested a shape its box tests did not lead it to."""
+
+    EXAMPLES = 5
+
+    def __init__(self):
+        self.active = False
+        self.depth = 0
+        self.tree = None
+
+    def start(self, tree) -> None:
+        self.tree = tree
+        self.shapes = self.boxes = 0
+        self.tested, self.rejected = set(), set()
+        self.skipped, self.unguarded = [], []
+        self.active = True
+
+    def stop(self) -> dict:
+        self.active = False
+        return {"shape tests": self.shapes, "box tests": self.boxes, "tested below a rejected box": self.skipped,
+                "tested in a leaf whose box was not tested": self.unguarded}
+
+    def box(self, box, ray, t) -> None:
+        self.boxes += 1
+        if self.tree is None:
+            return
+        node = self.tree["box"].get(id(box))
+        if node is None:
+            return
+        self.tested.add(node)
+        try:
+            rejected = float(t) > float(ray.tmax)
+        except (TypeError, ValueError):
+            rejected = False
+        if rejected:
+            self.rejected.add(node)
+        else:
+            self.rejected.discard(node)
+
+    def shape(self, shape) -> None:
+        self.shapes += 1
+        if self.tree is None:
+            return
+        number = self.tree["number"].get(id(shape))
+        paths = self.tree["paths"].get(number, [])
+        if not paths:
+            return
+        if all(path[-1] not in self.tested for path in paths):
+            if len(self.unguarded) < self.EXAMPLES:
+                self.unguarded.append(number)
+        elif all(self.rejected.intersection(path) for path in paths):
+            if len(self.skipped) < self.EXAMPLES:
+                self.skipped.append(number)
+
+
+def _counting(counter, method, kind: str):
+    """``method`` (BBox.hit when ``kind`` is "box", else a shape's intersect_p), counted."""
+    def counted(self, ray, *args, **kwargs):
+        if not counter.active or counter.depth:
+            return method(self, ray, *args, **kwargs)
+        counter.depth += 1
+        try:
+            result = method(self, ray, *args, **kwargs)
+        finally:
+            counter.depth -= 1
+        if kind == "box":
+            counter.box(self, ray, result)
+        else:
+            counter.shape(self)
+        return result
+    counted.__name__ = method.__name__
+    return counted
+
+
+def _tree(bvh, shapes) -> dict | None:
+    """The BVH's nodes as the grader's traversal sees them: which node a box belongs to, and
+    for each shape number the nodes from the root down to each leaf that holds it."""
+    try:
+        number = {id(shape): i for i, shape in enumerate(shapes)}
+        box, paths = {}, {}
+        stack = [(bvh.root, ())] if bvh.root is not None else []
+        while stack:
+            node, above = stack.pop()
+            index = len(box)
+            box[id(node.bbox)] = index
+            path = above + (index,)
+            if node.left is None:
+                for i in bvh.order[node.first:node.first + node.count]:
+                    paths.setdefault(int(i), []).append(path)
+            else:
+                stack += [(node.left, path), (node.right, path)]
+        return {"box": box, "number": number, "paths": paths}
+    except Exception:  # a tree not built as the given build builds it: counts only
+        return None
+
+
+def traversal_cases(rt, scene: str, rays, scene_data):
+    """For each ray of ``rays`` on ``scene_data``: BVH.intersect's answer and what it cost
+    (Counter), the tree built once by the student's BVH."""
+    acc = accelerators(rt)
+    shapes = build_shapes(rt, scene_data)
+    counter = Counter()
+    patched = [(acc.BBox, "hit", acc.BBox.hit, "box")]
+    for cls in {type(shape) for shape in shapes}:
+        patched.append((cls, "intersect_p", cls.intersect_p, "shape"))
+    cases = Cases()
+    try:
+        for cls, name, method, kind in patched:
+            setattr(cls, name, _counting(counter, method, kind))
+        built = []
+        for o, d, tmin, tmax, what in rays:
+            def run(o=o, d=d, tmin=tmin, tmax=tmax):
+                if not built:
+                    bvh = acc.BVH(shapes)
+                    built.append((bvh, _tree(bvh, shapes)))
+                bvh, tree = built[0]
+                F = rt.Float3
+                ray = rt.Ray(F(*o), F(*d), tmin, tmax)
+                counter.start(tree)
+                try:
+                    shape = bvh.intersect(ray)
+                finally:
+                    cost = counter.stop()
+                out = {"shape": shape_number(shape, len(scene_data)), "ray.tmax": num(ray.tmax, "ray.tmax")}
+                out.update(cost)
+                return out
+            cases.run("the %s scene (%d shapes), %s (%s)" % (scene, len(scene_data), ray_label(o, d, tmin, tmax), what),
+                      run, scene=scene, o=list(o), d=list(d), tmin=tmin, tmax=tmax)
+    finally:
+        for cls, name, method, _ in patched:
+            setattr(cls, name, method)
+    return cases.result()
+
+
+def observe_traversal(rt):
+    return _join(traversal_cases(rt, "grid", nearest_rays(), VISIBLE_SCENES["grid"]()),
+                 traversal_cases(rt, "sheet", not_first_rays(), VISIBLE_SCENES["sheet"]()),
+                 traversal_cases(rt, "random", random_rays(2, 150), SCENES["random"]()))

@@ -125,11 +125,12 @@ def _g(name, c, d, lateral):
 
 
 def observe_sample_f(rt, normals, rhos, count: int, seed: int):
-    """Lambertian(rho).sample_f(n, u, v) for ``count`` uniform (u, v) per normal: the
+    """Lambertian(1, rho).sample_f(sr, wo, u, v), sr.normal = n, for ``count`` uniform (u, v)
+    per normal: the
     directions binned (e = 1, the cosine-weighted density, for the hint only), the bad
     ones, f and its difference from rho / pi, and per g of G_NAMES the sum and the sum of
     squares of f (n . w_i) g(w_i) / pdf divided by rho (channel by channel)."""
-    lambertian = importlib.import_module(rt.__name__ + ".lambertian")
+    lambertian = importlib.import_module(rt.__name__ + ".brdfs.lambertian")
     F = rt.Float3
     out = []
     for n, rho in zip(normals, rhos):
@@ -137,9 +138,12 @@ def observe_sample_f(rt, normals, rhos, count: int, seed: int):
         lateral = _frame(n)[0]
         sums = {g: [[0.0, 0.0] for _ in range(3)] for g in G_NAMES}
         f_seen, bad_pdf, n_bad_pdf, used = None, [], 0, 0
-        brdf = lambertian.Lambertian(F(*rho))
+        brdf = lambertian.Lambertian(1.0, F(*rho))
+        sr = rt.HitInfo()
+        sr.normal = F(*n)
+        wo = sr.normal
         for u, v in _uniforms(count, seed):
-            got = brdf.sample_f(F(*n), u, v)
+            got = brdf.sample_f(sr, wo, u, v)
             if not isinstance(got, tuple) or len(got) != 3:
                 raise StudentError("Lambertian.sample_f should return a tuple (f, w_i, pdf), but it returned %r"
                                    % (got,))
@@ -179,7 +183,7 @@ def one_bounce_scene(rt):
     scene.shapes = [s for s in scene.shapes if max(s.material.emission.x, s.material.emission.y,
                                                    s.material.emission.z) == 0.0]
     scene.lights = [rt.PointLight(rt.Float3(0.278, 0.45, 0.2795), rt.Float3(0.2, 0.2, 0.2))]
-    scene.tracer = importlib.import_module(rt.__name__ + ".path_trace").PathTrace(max_depth=2)
+    scene.tracer = rt.PathTrace(max_depth=2)
     return scene
 
 
@@ -191,8 +195,8 @@ def furnace_scene(rt, rho):
     F = rt.Float3
     scene = rt.Scene(rt.PinholeCamera(eye=(0.0, 0.0, 3.0), lookat=(0.0, 0.0, 0.0), up=(0.0, 1.0, 0.0), d=5.0))
     scene.background = F(1.0)
-    scene.shapes.append(rt.Sphere(F(0.0, 0.0, 0.0), 1.0, F(*rho), rt.Material(rt.LAMBERTIAN)))
-    scene.tracer = importlib.import_module(rt.__name__ + ".path_trace").PathTrace(max_depth=2)
+    scene.shapes.append(rt.Sphere(F(0.0, 0.0, 0.0), 1.0, F(*rho), rt.Matte(ka=0.0, kd=1.0)))
+    scene.tracer = rt.PathTrace(max_depth=2)
     return scene
 
 

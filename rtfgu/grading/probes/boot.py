@@ -16,7 +16,7 @@ import json
 import os
 import sys
 
-SUBMODULES = ("float3", "ray", "cameras", "shapes", "material", "lights", "shading", "scene",
+SUBMODULES = ("float3", "ray", "cameras", "shapes", "hit_info", "brdfs", "btdfs", "materials", "lights", "tracers", "scene",
               "renderer", "image", "scenes", "textures")
 HERE = os.path.dirname(os.path.abspath(__file__))
 PACKAGE_NAME = os.path.basename(HERE)

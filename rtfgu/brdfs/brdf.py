@@ -1,0 +1,56 @@
+"""BRDF: how a surface reflects light from one direction into another (Suffern ch. 13,
+"BRDFs").
+
+``f(sr, wo, wi)`` is the BRDF f_r for light arriving along wi and leaving along wo (both unit,
+pointing away from the surface); ``sample_f(sr, wo, u, v)`` draws a direction wi and returns
+(f, wi, pdf), the pdf per unit solid angle with which wi was drawn; ``rho(sr, wo)`` is the
+bihemispherical reflectance, the albedo. The book's ``sample_f`` draws its point from the
+BRDF's own sampler; here the caller passes the point (u, v) of the unit square, as PBRT-v4's
+``Sample_f(wo, uc, u)`` does, and ``sample_point`` draws it: from the BRDF's sampler where
+one is set (``set_sampler``, the book's, for its sampler comparisons), else from the random
+stream (rtfgu.sampling.random) in the dimensions the path tracer gives, the same numbers on
+every path. So a test can hand ``sample_f`` any point and check the map it makes.
+"""
+from __future__ import annotations
+
+from ..float3 import Float3
+
+
+class BRDF:
+    sampler = None
+
+    def set_sampler(self, sampler) -> None:
+        """The book's ``set_sampler``: the points ``sample_f`` turns into directions come from
+        this sampler (its own sets, rtfgu.sampling) instead of the random stream."""
+        from ..sampling.sampler import Sampler
+
+        if sampler is not None and not isinstance(sampler, Sampler):
+            raise ValueError("%s.sampler must be a Sampler or None, got %r" % (type(self).__name__, sampler))
+        self.sampler = sampler
+
+    def sample_point(self, sr, u_dimension: int) -> tuple:
+        """(u, v) in [0, 1)^2 for the direction drawn at ``sr``: the sampler's point for the
+        pixel's sample, or the stream's numbers in path dimensions u_dimension and the next."""
+        from ..sampling.random import path_dimension, random_float
+
+        if self.sampler is not None:
+            return self.sampler.sample_unit_square(sr.pixel, sr.sample, sr.seed,
+                                                   path_dimension(sr.depth, u_dimension))
+        return (random_float(sr.pixel, sr.sample, path_dimension(sr.depth, u_dimension), sr.seed),
+                random_float(sr.pixel, sr.sample, path_dimension(sr.depth, u_dimension + 1), sr.seed))
+
+    def f(self, sr, wo, wi) -> Float3:
+        return Float3(0.0)
+
+    def sample_f(self, sr, wo, u: float, v: float) -> tuple:
+        raise NotImplementedError("%s has no sample_f" % type(self).__name__)
+
+    def rho(self, sr, wo) -> Float3:
+        return Float3(0.0)
+
+    @staticmethod
+    def surface_color(cd, sr) -> Float3:
+        """cd, or the surface's colour at the hit where cd is None or a texture."""
+        if cd is None or not isinstance(cd, Float3):
+            return sr.color
+        return cd

@@ -1,0 +1,12 @@
+"""The lights (Suffern ch. 14, 17, 18): one class per file, all with the book's Light
+interface (rtfgu/lights/light.py)."""
+from .ambient import Ambient
+from .ambient_occluder import AmbientOccluder
+from .area_light import AreaLight
+from .directional import Directional
+from .environment_light import EnvironmentLight, read_exr
+from .light import Light, LightSample
+from .point_light import PointLight
+
+__all__ = ["Light", "LightSample", "Ambient", "PointLight", "Directional", "AreaLight", "AmbientOccluder",
+           "EnvironmentLight", "read_exr"]

@@ -1,0 +1,135 @@
+"""Matte: a perfectly diffuse surface (Suffern ch. 14, "Matte"; 02562, "Lambert's cosine law"
+and "Sampling light in the shader").
+
+Two Lambertian BRDFs of one colour cd: the ambient one (ka) reflects the scene's ambient
+light, the diffuse one (kd) the light of every light:
+
+    L_o = ka cd L_a + sum over lights of kd cd / pi L_i (n . w_i),   where n . w_i > 0
+                                                                      and the light is not hidden.
+
+The 02562 default scene's diffuse shader, "rho_d = 90 % and L_a = 10 % of the object's
+colour", is a Matte with ``ka = 0.1`` and ``kd = 0.9`` under ``Ambient()`` (ls 1, white):
+the defaults here. A path-traced scene uses kd = 1 (rho = cd) and no ambient term.
+"""
+from __future__ import annotations
+
+from ..brdfs.lambertian import Lambertian
+from ..float3 import Float3, dot
+from ..ray import SPAWN_EPSILON, Ray
+from ..sampling.random import BOUNCE_U, ROULETTE, path_dimension, random_float
+from ..validation import number
+from .material import LAMBERTIAN, Material, PathVertex
+
+# The 02562 split of an object's colour into ambient and diffuse reflectance.
+KA_02562 = 0.1
+KD_02562 = 0.9
+
+
+class Matte(Material):
+    shader = LAMBERTIAN
+
+    def __init__(self, ka: float = KA_02562, kd: float = KD_02562, cd=None, emission=None):
+        super().__init__(cd, emission)
+        self.ambient_brdf = Lambertian(0.0, self.cd)
+        self.diffuse_brdf = Lambertian(0.0, self.cd)
+        self.set_ka(ka)
+        self.set_kd(kd)
+
+    # -- the book's setters
+    def set_ka(self, ka: float) -> None:
+        self.ambient_brdf.set_kd(number(ka, type(self).__name__ + ".ka"))
+
+    def set_kd(self, kd: float) -> None:
+        self.diffuse_brdf.set_kd(number(kd, type(self).__name__ + ".kd"))
+
+    def set_cd(self, cd) -> None:
+        super().set_cd(cd)
+        self.ambient_brdf.set_cd(self.cd)
+        self.diffuse_brdf.set_cd(self.cd)
+
+    @property
+    def ka(self) -> float:
+        return self.ambient_brdf.kd
+
+    @property
+    def kd(self) -> float:
+        return self.diffuse_brdf.kd
+
+    # -- shading
+    def f(self, sr, wo, wi) -> Float3:
+        """The BRDF the light loop reflects light by: kd cd / pi."""
+        return self.diffuse_brdf.f(sr, wo, wi)
+
+    def ambient(self, sr, wo) -> Float3:
+        """L_e + ka cd L_a: where the light loop starts."""
+        ### BEGIN SOLUTION
+        return self.get_Le(sr) + self.ambient_brdf.rho(sr, wo) * sr.scene.ambient_light.L(sr)
+        ### END SOLUTION
+
+    def shade(self, sr) -> Float3:
+        """L_e + ka cd L_a + the light of every light (the 02562 diffuse shader); a
+        surface that reflects no light (kd = 0, and no lobe) casts no shadow rays."""
+        wo = sr.wo
+        L = self.ambient(sr, wo)
+        return self.direct_light(sr, wo, L) if self.reflects_light() else L
+
+    def reflects_light(self) -> bool:
+        """Whether the light loop can add anything: a BRDF that is not 0."""
+        return self.kd > 0.0
+
+    def direct_light(self, sr, wo, L: Float3) -> Float3:
+        """The light loop, written once for every material that reflects light: to L add
+        f L G / pdf (n . w_i) for every light above the surface and, where the light casts
+        shadows, not hidden (Light.incident is L G / pdf)."""
+        ### BEGIN SOLUTION
+        for light in sr.scene.lights:
+            wi = light.get_direction(sr)
+            L_i = light.incident(sr)
+            if L_i.x == 0.0 and L_i.y == 0.0 and L_i.z == 0.0:
+                continue
+            ndotwi = dot(sr.normal, wi)
+            if not ndotwi > 0.0:
+                continue
+            if light.casts_shadows() and light.in_shadow(Ray(sr.position, wi), sr):
+                continue
+            L += self.f(sr, wo, wi) * L_i * ndotwi
+        return L
+        ### END SOLUTION
+
+    def path_shade(self, sr) -> PathVertex:
+        """Next-event estimation (the light of every light, sampled) and, by Russian
+        roulette with survival q = mean(kd cd), a diffuse bounce drawn by
+        ``diffuse_brdf.sample_f``: the throughput is multiplied by f (n . w_i) / (pdf q)."""
+        self.face_ray(sr)
+        wo = sr.wo
+        tracer = sr.scene.tracer
+        L = self.direct_light(sr, wo, Float3(0.0)) if tracer.samples_lights_at(sr.depth) else None
+        if sr.depth + 1 == tracer.max_depth:
+            return PathVertex(L)
+        rho = self.diffuse_brdf.rho(sr, wo)
+        q = (rho.x + rho.y + rho.z) / 3.0
+        xi = random_float(sr.pixel, sr.sample, path_dimension(sr.depth, ROULETTE), sr.seed)
+        if not xi < q:
+            return PathVertex(L)
+        u, v = self.diffuse_brdf.sample_point(sr, BOUNCE_U)
+        f, wi, pdf = self.diffuse_brdf.sample_f(sr, wo, u, v)
+        n_dot_wi = dot(sr.normal, wi)
+        if not (pdf > 0.0 and n_dot_wi > 0.0):
+            return PathVertex(L)
+        return PathVertex(L, f, n_dot_wi / (pdf * q), Ray(sr.position, wi, SPAWN_EPSILON))
+
+    def check_path_trace(self, where: str, color) -> None:
+        rho = self.diffuse_brdf.rho(_Colour(color))
+        if max(rho.x, rho.y, rho.z) > 1.0:
+            raise ValueError("%s: a diffuse albedo kd cd = %r above 1 reflects more light than it receives; "
+                             "PathTrace refuses it (scale the colour or kd to <= 1)" % (where, rho))
+
+    def __repr__(self) -> str:
+        return "%s(ka=%r, kd=%r, cd=%r)" % (type(self).__name__, self.ka, self.kd, self.cd)
+
+
+class _Colour:
+    """A stand-in hit whose surface colour is ``color`` (a shape's, to check an albedo)."""
+
+    def __init__(self, color):
+        self.color = color

@@ -1,0 +1,91 @@
+"""PathTrace: progressive Monte Carlo path tracing (Suffern ch. 26, "Global Illumination";
+02562 worksheet 7, "Progressive path tracing").
+
+Every sample of a pixel is one path, and the image is the mean over the samples. At each
+vertex the material's ``path_shade`` (rtfgu/materials) says what the path gains there and
+how it goes on (a PathVertex): a Matte adds the light of every light source, reflected by
+f_r = kd cd / pi (next-event estimation, 02562 worksheet 5: a point or directional light as
+in the ray-cast tracers, an AreaLight through one point of it drawn by area, each unless
+shadowed), then continues with probability q = mean(kd cd) (Russian roulette, worksheet 7)
+along the direction ``Lambertian.sample_f`` draws, the throughput multiplied by
+f_r (n . w_i) / (pdf q); a GlossyReflector also samples its lobe; a mirror and a refraction
+continue along their ray, a Dielectric by Fresnel's choice; a flat colour ends the path
+showing its colour.
+
+Emitted light is counted where the eye sees it and after a mirror or a refraction, and not
+after a diffuse bounce, whose light sources the bounce's vertex sampled already; so every
+emitting shape must be an ``AreaLight``'s (``validate`` says which is not). A surface emits
+from its front only (the side its normal points to). A ray that leaves the scene sees the
+scene's environment (Scene.background_radiance).
+
+The book's PathTrace samples no lights (a path finds the emitters by hitting them) and
+recurses through ``path_shade``; this is the 02562 worksheet 7 path tracer, with the lights
+sampled at every vertex, and its loop multiplies a throughput as the numba and WGSL kernels
+do (rtfgu/kernels/path_trace.py, rtfgu/wgsl/path_trace.wgsl), so the three agree bit for
+bit. The book's tracer that samples the lights at the first vertex only is GlobalTrace.
+
+The random numbers of vertex ``depth`` are the stream's dimensions ``path_dimension(depth,
+k)`` (rtfgu.sampling.random), so the numba path draws the same numbers for the same path.
+A path has at most ``max_depth`` vertices.
+"""
+from __future__ import annotations
+
+from ..float3 import Float3, dot
+from ..sampling.random import LIGHT_U, VERTEX_DIMENSIONS
+from .tracer import Tracer, check_max_depth
+
+# The deepest path: vertex dimensions stay below 2^32 far beyond it.
+MAX_PATH_DEPTH = 1024
+# The most area lights a path samples (two dimensions each per vertex).
+MAX_AREA_LIGHTS = (VERTEX_DIMENSIONS - LIGHT_U) // 2
+
+
+class PathTrace(Tracer):
+    samples_area_lights = True
+
+    def __init__(self, max_depth: int = 64):
+        super().__init__()
+        self.max_depth = check_max_depth(max_depth, "%s.max_depth" % type(self).__name__, MAX_PATH_DEPTH)
+
+    def samples_lights_at(self, depth: int) -> bool:
+        """Whether the vertex at ``depth`` samples the lights (next-event estimation)."""
+        return True
+
+    def trace_ray(self, ray, depth: int = 0) -> Float3:
+        """The radiance of one path from ``ray`` (the renderer's eye ray at depth 0)."""
+        result = Float3(0.0)
+        throughput = Float3(1.0)
+        sees_emission = True        # the eye ray, or a ray after a mirror or a refraction
+        for depth in range(depth, self.max_depth):
+            sr = self.hit(ray, depth)
+            if sr is None:
+                result += throughput * self.world.background_radiance(ray.direction)
+                break
+            if sees_emission and dot(sr.normal, ray.direction) < 0.0:
+                result += throughput * sr.material.get_Le(sr)
+            vertex = sr.material.path_shade(sr)
+            if vertex.L is not None:
+                result += throughput * vertex.L
+            if vertex.ray is None:
+                break
+            if vertex.f is not None:
+                throughput = throughput * vertex.f * vertex.scale
+            ray = vertex.ray
+            sees_emission = vertex.sees_emission or not self.samples_lights_at(depth)
+        return result
+
+    def validate(self, scene) -> None:
+        """Raise a ValueError naming the field if ``scene`` cannot be path traced."""
+        from ..lights.area_light import AreaLight
+
+        lit = {id(light.shape) for light in scene.lights if isinstance(light, AreaLight)}
+        if len(lit) > MAX_AREA_LIGHTS:
+            raise ValueError("Scene.lights: %s samples at most %d area lights, got %d"
+                             % (type(self).__name__, MAX_AREA_LIGHTS, len(lit)))
+        for i, shape in enumerate(scene.shapes):
+            where = "Scene.shapes[%d].material (%s)" % (i, type(shape.material).__name__)
+            shape.material.check_path_trace(where, shape.color)
+            e = shape.material.emission
+            if max(e.x, e.y, e.z) > 0.0 and id(shape) not in lit:
+                raise ValueError("Scene.shapes[%d] emits (its material's emission is %r) but no AreaLight in "
+                                 "Scene.lights samples it: add AreaLight(scene.shapes[%d])" % (i, e, i))

@@ -1,0 +1,48 @@
+// The random stream's dimensions of a path's vertex (rtfgu.sampling.random.path_dimension: vertex
+// depth draws 2 + depth * VERTEX_DIMENSIONS + k), and a point drawn on an area light, for the
+// tracers that sample lights (PathTrace, GlobalTrace, AreaLighting).
+const VERTEX_DIMENSIONS = 65536u;
+const LIGHT_U = 8u;
+const LIGHT_V = 9u;
+
+// #if area_lighting
+// AreaLighting's ray-cast loop: (pixel, sample, first dimension of the bounce), set per bounce
+// by main, read by sample_area_light (lights.wgsl).
+var<private> stream: vec3u;
+// #endif
+
+// #if area_light
+// AreaLight.get_direction then incident (L G / pdf) under a tracer that samples area lights:
+// L_e A cos(theta_l) / d^2 toward a point of area light i uniform by area, zero from behind.
+fn sample_area_light_area(pos: vec3f, i: u32, u: f32, v: f32) -> Light
+{
+    let light = area_lights[i];
+    var point: vec3f;
+    var normal: vec3f;
+    var area: f32;
+    if (light.radius > 0.0) {
+        let z = 1.0 - 2.0 * u;
+        let s = sqrt(max(0.0, 1.0 - z * z));
+        let phi = 2.0 * PI * v;
+        normal = vec3f(s * cos(phi), s * sin(phi), z);
+        point = light.v0 + normal * light.radius;
+        area = 4.0 * PI * light.radius * light.radius;
+    } else {
+        let n = cross(light.e0, light.e1);
+        point = light.v0 + (light.e0 * v + light.e1 * (1.0 - v)) * sqrt(u);
+        normal = normalize(n);
+        area = 0.5 * length(n);
+    }
+    let to_light = point - pos;
+    let dist = length(to_light);
+    if (!(dist > 0.0)) {
+        return Light(vec3f(0.0), normal, 0.0);
+    }
+    let w_i = to_light / dist;
+    let cos_l = -dot(normal, w_i);
+    if (!(cos_l > 0.0)) {
+        return Light(vec3f(0.0), w_i, dist);
+    }
+    return Light(light.emission * (area * cos_l / (dist * dist)), w_i, dist);
+}
+// #endif
