@@ -79,7 +79,8 @@ def pack_fields(fields) -> tuple:
 # color: the surface's colour (its material's cd, or the shape's); kd: the diffuse BRDF's kd;
 # ambient: ka times the scene's ambient radiance (rtfgu/materials/matte.py).
 MATERIAL_FIELDS = (("color", 3), ("kd", 1), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1),
-                   ("texture", 1), ("texture_row", 1), ("absorption", 3), ("ambient", 3))
+                   ("texture", 1), ("texture_row", 1), ("absorption", 3), ("ambient", 3), ("reflection", 3),
+                   ("kt", 1))
 CAMERA_FIELDS = {
     "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
                            ("yon", 1), ("tmin", 1)),
@@ -137,6 +138,8 @@ MAT_TEXTURE_ROW = offset("Material", "texture_row")
 MAT_ABSORPTION = offset("Material", "absorption")
 MAT_KD = offset("Material", "kd")
 MAT_AMBIENT = offset("Material", "ambient")
+MAT_REFLECTION = offset("Material", "reflection")
+MAT_KT = offset("Material", "kt")
 # ImageTexture.filter and .address as numbers in the layout.
 TEXTURE_FILTERS = {"nearest": 0, "bilinear": 1}
 TEXTURE_ADDRESSES = {"repeat": 0, "clamp": 1}
@@ -357,9 +360,11 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         materials.append(pack_row("Material", SimpleNamespace(
             color=m.cd if isinstance(m.cd, Float3) else shape.color, kd=m.kd, specular=m.specular,
             shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
-            absorption=m.absorption, ambient=ambient * m.ka)))
+            absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt)))
         shaders.append(m.shader)
         features.add(SHADER_BY_ID[m.shader].name)
+        if SHADER_BY_ID[m.shader].splits and max(m.reflection.x, m.reflection.y, m.reflection.z) > 0.0:
+            features.add("two_rays")   # the ray-cast loops keep a stack of rays
 
     lights = {kind.name: [] for kind in LIGHTS}
     for j, light in enumerate(scene.lights):

@@ -28,7 +28,7 @@ from dataclasses import dataclass
 
 from .lights import AmbientOccluder, AreaLight, Directional, PointLight
 from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR,
-                                 PHONG, TRANSPARENT)
+                                 PHONG, REFLECTIVE, TRANSPARENT)
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
@@ -94,6 +94,7 @@ class ShaderKind:
     continues: bool = False
     brdf_of: str = ""                   # the shader whose BRDF term this one uses ("" : its own)
     emits: bool = False
+    splits: bool = False                # may send a second ray (a reflection beside a refraction)
 
 
 @dataclass(frozen=True)
@@ -132,17 +133,20 @@ SHADERS = (
     ShaderKind(BASE_COLOR, "base_color", "Material"),
     ShaderKind(LAMBERTIAN, "lambertian", "Matte", brdf=True),
     ShaderKind(PHONG, "phong", "Phong", brdf=True),
-    # A Reflective with nothing but kr cr = 1.
+    # A Reflective with nothing but its mirror (kr cr = 1 in the course: its reflected ray's weight).
     ShaderKind(MIRROR, "mirror", "Reflective", continues=True),
-    # A Transparent with nothing but kt = 1; "glossy" is one with a Phong part (02562 worksheet 3).
-    ShaderKind(TRANSPARENT, "transparent", "Transparent", continues=True),
-    ShaderKind(GLOSSY, "glossy", "Transparent", brdf=True, continues=True, brdf_of="phong"),
+    # A Transparent without a Phong part; "glossy" is one with it (02562 worksheet 3). Both
+    # send the refracted ray on weighted by kt and, where kr > 0, the reflected one by kr cr.
+    ShaderKind(TRANSPARENT, "transparent", "Transparent", continues=True, splits=True),
+    ShaderKind(GLOSSY, "glossy", "Transparent", brdf=True, continues=True, brdf_of="phong", splits=True),
     ShaderKind(EMISSIVE, "emissive", "Emissive", emits=True),
     # PathTrace picks reflection or refraction by Fresnel's reflectance (numba and WGSL trace it
     # under PathTrace only: under the ray-cast tracers it sends two rays).
     ShaderKind(DIELECTRIC, "dielectric", "Dielectric", continues=True),
     # Phong under the ray-cast tracers; PathTrace samples its lobe.
     ShaderKind(GLOSSY_REFLECTOR, "glossy_reflector", "GlossyReflector", brdf=True, brdf_of="phong"),
+    # A Reflective with a Phong part (Suffern ch. 24): Phong, then the mirror ray weighted by kr cr.
+    ShaderKind(REFLECTIVE, "reflective", "Reflective", brdf=True, continues=True, brdf_of="phong"),
 )
 
 LIGHTS = (

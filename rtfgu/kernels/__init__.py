@@ -23,7 +23,7 @@ from ..tracers.whitted import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import PRIMARY, SECONDARY, SHADOW, TILE, render_kernel, scene_tuple, shape_arrays
+from .render import PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, render_kernel, scene_tuple, shape_arrays
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -83,10 +83,11 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), table, terms)
             eye = (terms, cone_table(camera64, table))
     continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
-    cast, path = (MAX_DEPTH if continues else None, flat.area_lighting), None
+    tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
+    stacks = np.empty((tiles, MAX_DEPTH, STACK_FIELDS), dtype=flat.dtype) if "two_rays" in flat.features else None
+    cast, path = (MAX_DEPTH if continues else None, flat.area_lighting, stacks), None
     if flat.max_depth:
         cast, path = None, (flat.max_depth, flat.lights_at_every_vertex)
-    tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
                 int(samples[1]))

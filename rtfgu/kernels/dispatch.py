@@ -337,7 +337,7 @@ def source() -> str:
              "from rtfgu.kernels.sampling import random_float",
              "from rtfgu.kernels.glossy import glossy_lobe",
              "from rtfgu.sampling.random import LIGHT_U, LIGHT_V",
-             "from rtfgu.kernels.shaders import surface, %s" % ", ".join(sorted(shader_names)),
+             "from rtfgu.kernels.shaders import ends, surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
                  ["texcoord_" + k.name for k in SHAPES if not k.bvh] + ["texture_" + t.name for t in TEXTURES]),
@@ -437,9 +437,10 @@ def source() -> str:
     lit_shaders = [shader for shader in SHADERS if shader.brdf and not shader.emits]
     shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                    "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula, stream):",
-                   '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, next direction,',
-                   '    shadow rays); ``color`` is the surface\'s (surface_color). A shader that continues',
-                   '    the path exists only when ``bounces`` does; ``stream`` as for the light loop."""',
+                   '    """The slide\'s ``switch (*hit).shader``: (radiance, has_hit, further rays,',
+                   '    shadow rays), the further rays as continue_<name> gives them (rtfgu.kernels.shaders);',
+                   '    ``color`` is the surface\'s (surface_color). A shader that continues the path exists',
+                   '    only when ``bounces`` does; ``stream`` as for the light loop."""',
                    "    n_shadow = 0"]
     if lit_shaders:
         shade_lines.append("    if %s:  # %s" % (" or ".join("(%s)" % case(s) if s.continues else case(s)
@@ -452,17 +453,17 @@ def source() -> str:
                 shade_lines.append("        if %s:  # %s" % (case(shader), shader.name))
                 shade_lines.append("            return result, False, continue_%s(mat, r_d, surface_point[1]), n_shadow"
                                    % shader.name)
-        shade_lines.append("        return result, True, r_d, n_shadow")
+        shade_lines.append("        return result, True, ends(r_d), n_shadow")
     for shader in SHADERS:
         if shader.emits:
             shade_lines.append("    if shader == %d:  # %s" % (shader.id, shader.name))
-            shade_lines.append("        return load3(mat, MAT_EMISSION), True, r_d, n_shadow")
+            shade_lines.append("        return load3(mat, MAT_EMISSION), True, ends(r_d), n_shadow")
         elif shader.continues and not shader.brdf:
             shade_lines.append("    if %s:  # %s" % (case(shader), shader.name))
             shade_lines.append("        result = load3(mat, MAT_EMISSION)")
             shade_lines.append("        return result, False, continue_%s(mat, r_d, surface_point[1]), n_shadow"
                                % shader.name)
-    shade_lines.append("    return color, True, r_d, n_shadow")
+    shade_lines.append("    return color, True, ends(r_d), n_shadow")
     parts.append("\n".join(shade_lines))
     return "\n\n\n".join(parts) + "\n"
 

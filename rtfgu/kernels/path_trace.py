@@ -20,7 +20,7 @@ from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, div, dot, lit, load3, mul, neg, scale
 from .glossy import about, lobe_direction
 from .sampling import hemisphere_map, random_float
-from .shaders import continue_mirror, continue_transparent
+from .shaders import mirror, transparent
 
 
 @njit(cache=True, error_model="numpy")
@@ -131,7 +131,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
                 throughput = scale(mul(throughput, f), cos_theta / (pdf * q_d))
                 direction = w_i
             elif xi < q_d + q_s:
-                w_i = lobe_direction(continue_mirror(mat, direction, normal), shininess, u, v)
+                w_i = lobe_direction(mirror(direction, normal), shininess, u, v)
                 cos_theta = dot(normal, w_i)
                 if not cos_theta > zero:
                     break
@@ -142,10 +142,10 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
                 break
             sees_emission = not (every_vertex or depth == 0)
         elif shader == MIRROR:
-            direction = continue_mirror(mat, direction, normal)
+            direction = mirror(direction, normal)
             sees_emission = True
         elif shader == TRANSPARENT:
-            direction = continue_transparent(mat, direction, normal)
+            direction = transparent(direction, normal, mat[MAT_IOR])
             sees_emission = True
         elif shader == DIELECTRIC:
             if facing > zero:

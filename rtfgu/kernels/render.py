@@ -14,8 +14,10 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
     tracer    (cast, path), exactly one of them None: ``cast`` the ray-cast loop's
-              (bounces,), bounces None when no shader continues a path (that code then
-              compiles to nothing), else MAX_DEPTH; ``path`` PathTrace's (max_depth, lights at every vertex: False for GlobalTrace)
+              (bounces, sampled, stacks), bounces None when no shader continues a path (that
+              code then compiles to nothing), else MAX_DEPTH; sampled: AreaLighting's area
+              lights; stacks: (tiles, MAX_DEPTH, STACK_FIELDS) rays waiting, a stack per tile,
+              or None where no material sends a second ray (trace); ``path`` PathTrace's (max_depth, lights at every vertex: False for GlobalTrace)
               (rtfgu.kernels.path_trace)
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
@@ -44,7 +46,7 @@ from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
 from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, surface_color
 from .dispatch_support import as_python
-from .float3 import add, lit, load3, scale
+from .float3 import add, lit, load3, mul, scale
 from .environment import ENVIRONMENT, background_radiance
 from .path_trace import trace_path
 from .sampling import concentric_map, pixel_sample
@@ -145,53 +147,147 @@ def _typed_record_bounce(record, i, ray, hit, shader, normal, color):
     return write
 
 
+# A row of a tile's stack of rays (push_ray): origin (3), direction (3), weight (3), depth.
+STACK_FIELDS = 10
+
+
+def push_ray(stack, pending, origin, direction, weight, depth):
+    """Put a second ray (a Transparent's reflection) on ``stack`` above its ``pending`` rows
+    and return their new number; nothing where its weight is 0, and nothing at all without a
+    stack, in a scene no material of which sends two rays (typed by the overload below)."""
+    return as_python(_typed_push_ray, stack, pending, origin, direction, weight, depth)
+
+
+@overload(push_ray, inline="always")
+def _typed_push_ray(stack, pending, origin, direction, weight, depth):
+    if isinstance(stack, types.NoneType):
+        return lambda stack, pending, origin, direction, weight, depth: pending
+
+    def push(stack, pending, origin, direction, weight, depth):
+        zero = lit(0, weight[0])
+        if (weight[0] == zero and weight[1] == zero and weight[2] == zero) or pending >= stack.shape[0]:
+            return pending
+        row = stack[pending]
+        row[0], row[1], row[2] = origin
+        row[3], row[4], row[5] = direction
+        row[6], row[7], row[8] = weight
+        row[9] = depth
+        return pending + 1
+    return push
+
+
+def pop_ray(stack, pending, weight):
+    """The ray on top of ``stack``: (origin, direction, weight, depth); ``weight`` only gives
+    the type of a stack that is None, which is never popped (typed by the overload below)."""
+    return as_python(_typed_pop_ray, stack, pending, weight)
+
+
+@overload(pop_ray, inline="always")
+def _typed_pop_ray(stack, pending, weight):
+    if isinstance(stack, types.NoneType):
+        return lambda stack, pending, weight: (weight, weight, weight, 0)
+
+    def pop(stack, pending, weight):
+        row = stack[pending - 1]
+        return (row[0], row[1], row[2]), (row[3], row[4], row[5]), (row[6], row[7], row[8]), int(row[9])
+    return pop
+
+
+def tile_stack(cast, k):
+    """Tile ``k``'s stack of rays from the ray-cast tracer's ``cast`` (bounces, sampled,
+    stacks), or None where there are none (typed by the overload below)."""
+    return as_python(_typed_tile_stack, cast, k)
+
+
+@overload(tile_stack, inline="always")
+def _typed_tile_stack(cast, k):
+    if isinstance(cast, types.NoneType):
+        return lambda cast, k: None
+    return lambda cast, k: row_of(cast[2], k)
+
+
+def row_of(stacks, k):
+    """``stacks[k]``, or None where ``stacks`` is None (typed by the overload below)."""
+    return as_python(_typed_row_of, stacks, k)
+
+
+@overload(row_of, inline="always")
+def _typed_row_of(stacks, k):
+    if isinstance(stacks, types.NoneType):
+        return lambda stacks, k: None
+    return lambda stacks, k: stacks[k]
+
+
 @njit(cache=True, error_model="numpy", inline="always")
-def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, stream, record=None):
-    """The 02562 path loop (rtfgu.renderer.trace): shade each hit until a shader ends the
-    path or the ray leaves the scene (background), at most ``bounces`` (MAX_DEPTH) times.
+def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, stream, stack=None,
+          record=None):
+    """The 02562 path loop (rtfgu.renderer.trace) as Whitted's tracer (Suffern ch. 24):
+    shade each hit until a shader ends the path or the ray leaves the scene (background), at
+    most ``bounces`` (MAX_DEPTH) rays deep, each hit's radiance weighted by the product of
+    the factors of the rays that led to it (kr cr of a mirror, kt of a refraction: 1 in the
+    02562 shaders, so their sums are what they were bit for bit). A second ray (a
+    Transparent's reflection) waits on ``stack`` (its rows, STACK_FIELDS each; None in a
+    scene without one) and is followed when the first path ends: the lecture layer's
+    recursion in another order, so a scene with weights other than 1 equals it to rounding.
     Primary rays from a pinhole eye test the from-eye kind's ``candidates[:n_candidates]``
     with its per-frame ``terms`` (n_candidates -1: no such eye). ``record``: None, or an
-    array that receives every bounce (record_bounce). ``stream``: (pixel, sample, seed,
-    whether area lights are sampled: AreaLighting), the numbers bounce i draws being the
-    stream's path_dimension(i, k). Returns (radiance, shadow rays, secondary rays)."""
+    array that receives every bounce of the first path (record_bounce). ``stream``: (pixel,
+    sample, seed, whether area lights are sampled: AreaLighting), the numbers a ray at depth
+    i draws being the stream's path_dimension(i, k). Returns (radiance, shadow rays,
+    secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
     zero = lit(0, tmin)
+    one = lit(1, zero)
     result = (zero, zero, zero)
+    weight = (one, one, one)
     n_shadow = 0
     n_secondary = 0
     depth = 1 if bounces is None else bounces
-    for i in range(depth):
-        if i > 0:
-            n_secondary += 1
-        t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if i == 0 else -1,
-                                            origin, direction, tmin, tmax, formula)
-        if idx < 0:
-            seen = background_radiance(scene[ENVIRONMENT], background, direction)
-            result = add(result, seen)
-            record_bounce(record, i, (origin, direction), (t, idx, kind), -1, direction, seen)
+    first = 0
+    pending = 0
+    while True:
+        for i in range(first, depth):
+            if i > 0:
+                n_secondary += 1
+            t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if i == 0 else -1,
+                                                origin, direction, tmin, tmax, formula)
+            if idx < 0:
+                seen = background_radiance(scene[ENVIRONMENT], background, direction)
+                result = add(result, mul(weight, seen))
+                record_bounce(record, i, (origin, direction), (t, idx, kind), -1, direction, seen)
+                break
+            # HitInfo: position = ray(t) = o + d t, the normal of the shape hit, its material.
+            position = add(origin, scale(direction, t))
+            shader = shaders[idx]
+            if shader == BASE_COLOR:
+                normal = position  # base_color reads no normal: a flat-colour scene skips normal_at
+            else:
+                normal = shape_normal(shapes, kind, row, position)
+            mat = materials[idx]
+            surface = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
+            color, has_hit, further, shadow_rays = shade(
+                shader, mat, surface, direction, (position, normal), lights, shapes, shadows,
+                bounces, formula, (2 + i * VERTEX_DIMENSIONS, stream[0], stream[1], stream[2], stream[3]))
+            result = add(result, mul(weight, color))
+            record_bounce(record, i, (origin, direction), (t, idx, kind), shader, normal, color)
+            n_shadow += shadow_rays
+            if has_hit:
+                break
+            # The lecture's _continue_path: a new ray with a fresh tmax; a second ray waits.
+            new_direction, factor, second, second_factor = further
+            if i + 1 < depth:
+                pending = push_ray(stack, pending, position, second, mul(weight, second_factor), i + 1)
+            weight = mul(weight, factor)
+            origin = position
+            direction = new_direction
+            tmin = lit(SPAWN_EPSILON, zero)
+            tmax = lit(math.inf, zero)
+        if pending == 0:
             break
-        # HitInfo: position = ray(t) = o + d t, the normal of the shape hit, its material.
-        position = add(origin, scale(direction, t))
-        shader = shaders[idx]
-        if shader == BASE_COLOR:
-            normal = position  # base_color reads no normal: a flat-colour scene skips normal_at
-        else:
-            normal = shape_normal(shapes, kind, row, position)
-        mat = materials[idx]
-        surface = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
-        color, has_hit, new_direction, shadow_rays = shade(
-            shader, mat, surface, direction, (position, normal), lights, shapes, shadows,
-            bounces, formula, (2 + i * VERTEX_DIMENSIONS, stream[0], stream[1], stream[2], stream[3]))
-        result = add(result, color)
-        record_bounce(record, i, (origin, direction), (t, idx, kind), shader, normal, color)
-        n_shadow += shadow_rays
-        if has_hit:
-            break
-        # The lecture's _continue_path: a new ray with a fresh tmax.
-        origin = position
-        direction = new_direction
+        origin, direction, weight, first = pop_ray(stack, pending, weight)
+        pending -= 1
         tmin = lit(SPAWN_EPSILON, zero)
         tmax = lit(math.inf, zero)
     return result, n_shadow, n_secondary
@@ -199,14 +295,14 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
 
 @njit(cache=True, error_model="numpy", _nrt=False)
 def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, sampler,
-                image):
+                stack, image):
     """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
     y1, width, height)) to the image (the lecture's render loop,
     rtfgu.renderer.render_reference), each traced by the ray-cast ``trace`` (``cast``) or
     by PathTrace (``path``): (primary, shadow, secondary) rays cast. ``eye_rows`` is (terms,
     candidates, n_candidates): ``candidates[:n_candidates]`` are the from-eye kind's rows
     the tile's primary rays can hit, with their per-frame ``terms`` (None and -1 without a
-    pinhole eye).
+    pinhole eye). ``stack``: the tile's rays waiting (trace), None where none can.
 
     Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
@@ -242,7 +338,7 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
                     if cast is not None:
                         color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
                                                                    candidates, n_candidates, settings,
-                                                                   cast[0], (pixel, s, settings[3], cast[1]))
+                                                                   cast[0], (pixel, s, settings[3], cast[1]), stack)
                     if path is not None:
                         color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
                                                                         terms, candidates, n_candidates,
@@ -280,7 +376,7 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
         n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene,
                                                        (terms, candidates[tile], n_candidates),
-                                                       settings, cast, path, sampler, image)
+                                                       settings, cast, path, sampler, tile_stack(cast, tile), image)
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary

@@ -3,7 +3,7 @@ rtfgu/brdfs and rtfgu/btdfs; one class per file."""
 from .emissive import Emissive
 from .glossy_reflector import GlossyReflector
 from .material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, PHONG,
-                       SHADER_NAMES, TRANSPARENT, Material, PathVertex)
+                       REFLECTIVE, SHADER_NAMES, TRANSPARENT, Material, PathVertex)
 from .matte import Matte
 from .phong import Phong
 from .reflective import Reflective
@@ -11,7 +11,7 @@ from .transparent import Transparent
 
 __all__ = ["Material", "Matte", "Phong", "Reflective", "GlossyReflector", "Transparent",
            "Emissive", "PathVertex", "SHADER_NAMES", "BASE_COLOR", "LAMBERTIAN", "PHONG", "MIRROR",
-           "TRANSPARENT", "GLOSSY", "EMISSIVE", "DIELECTRIC", "GLOSSY_REFLECTOR"]
+           "TRANSPARENT", "GLOSSY", "EMISSIVE", "DIELECTRIC", "GLOSSY_REFLECTOR", "REFLECTIVE"]
 try:        # a student release before a05 leaves it out: it refracts as a05 does
     from .dielectric import Dielectric
     __all__.append("Dielectric")

@@ -38,6 +38,7 @@ GLOSSY = 5
 EMISSIVE = 6
 DIELECTRIC = 7
 GLOSSY_REFLECTOR = 8
+REFLECTIVE = 9
 
 SHADER_NAMES = {
     BASE_COLOR: "base_color",
@@ -49,7 +50,24 @@ SHADER_NAMES = {
     EMISSIVE: "emissive",
     DIELECTRIC: "dielectric",
     GLOSSY_REFLECTOR: "glossy_reflector",
+    REFLECTIVE: "reflective",
 }
+
+
+def set_on(part: str, method: str, check, field: str):
+    """The book's ``set_<field>`` of a material built from parts: the value, checked by
+    ``check`` (rtfgu/validation.py) under the name ``<Class>.<field>``, is handed to
+    ``self.<part>.<method>``; Matte's ``set_kd`` sets its diffuse BRDF's kd, as the book's does."""
+    def setter(self, value) -> None:
+        getattr(getattr(self, part), method)(check(value, "%s.%s" % (type(self).__name__, field)))
+    setter.__name__ = "set_" + field
+    setter.__doc__ = "Set %s: ``self.%s.%s`` after checking the value." % (field, part, method)
+    return setter
+
+
+def read_from(part: str, attribute: str, doc: str) -> property:
+    """A material's field that lives in one of its parts: ``self.<part>.<attribute>``."""
+    return property(lambda self: getattr(getattr(self, part), attribute), doc=doc)
 
 
 class PathVertex:
@@ -125,6 +143,10 @@ class Material:
     absorption = Float3(0.0)
     kd = 0.0
     ka = 0.0
+    # What the ray-cast tracers' further rays are weighted by: kr cr for the reflected ray,
+    # kt for the transmitted one (Reflective, Transparent).
+    reflection = Float3(0.0)
+    kt = 0.0
 
     def check_path_trace(self, where: str, color) -> None:
         """Raise a ValueError naming ``where`` if PathTrace cannot follow this material."""

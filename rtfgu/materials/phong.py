@@ -15,12 +15,17 @@ from __future__ import annotations
 from ..brdfs.glossy_specular import GlossySpecular
 from ..float3 import Float3
 from ..validation import colour, number
-from .material import PHONG
+from .material import PHONG, read_from, set_on
 from .matte import KA_02562, KD_02562, Matte
 
 
 class Phong(Matte):
     shader = PHONG
+    # The book's setters of the glossy lobe; the flat layout's rho_s = ks cs and s.
+    set_ks = set_on("specular_brdf", "set_ks", number, "ks")
+    set_cs = set_on("specular_brdf", "set_cs", colour, "cs")
+    specular = read_from("specular_brdf", "specular", "rho_s = ks cs, the flat layout's ``specular``")
+    shininess = read_from("specular_brdf", "exp", "the lobe's exponent, the flat layout's ``shininess``")
 
     def __init__(self, ka: float = KA_02562, kd: float = KD_02562, cd=None, ks: float = 1.0,
                  cs=(1.0, 1.0, 1.0), exp: float = 1.0, emission=None):
@@ -30,26 +35,11 @@ class Phong(Matte):
         self.set_cs(cs)
         self.set_exp(exp)
 
-    def set_ks(self, ks: float) -> None:
-        self.specular_brdf.set_ks(number(ks, type(self).__name__ + ".ks"))
-
-    def set_cs(self, cs) -> None:
-        self.specular_brdf.set_cs(colour(cs, type(self).__name__ + ".cs"))
-
     def set_exp(self, exp: float) -> None:
         try:
             self.specular_brdf.set_exp(exp)
         except ValueError:
             raise ValueError("%s.exp must be finite and >= 0, got %r" % (type(self).__name__, exp)) from None
-
-    @property
-    def specular(self) -> Float3:
-        """rho_s = ks cs, the flat layout's ``specular``."""
-        return self.specular_brdf.specular
-
-    @property
-    def shininess(self) -> float:
-        return self.specular_brdf.exp
 
     def f(self, sr, wo, wi) -> Float3:
         """kd cd / pi plus the glossy lobe."""

@@ -6,8 +6,9 @@
 L(w_r) traced by the scene's tracer one level deeper (``trace_ray(ray, depth + 1)``). The
 defaults are the 02562 mirror: no ambient, diffuse or glossy part (ka = kd = ks = 0) and
 kr cr = 1, so the mirror shows exactly what its reflected ray sees (the 02562 ``mirror``
-shader, which the numba and WGSL paths run). Suffern's chapter 24 figures set both: a
-coloured Phong surface with a reflection.
+shader). Suffern's chapter 24 figures set both: a coloured Phong surface with a reflection
+(the ``reflective`` case of the flat paths' switch: the light loop with Phong's BRDF, then
+the reflected ray weighted by kr cr).
 """
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from ..brdfs.perfect_specular import PerfectSpecular
 from ..float3 import Float3, dot
 from ..ray import SPAWN_EPSILON, Ray
 from ..validation import colour, number
-from .material import MIRROR, PHONG, PathVertex
+from .material import MIRROR, REFLECTIVE, PathVertex, set_on
 from .phong import Phong
 
 
@@ -32,11 +33,8 @@ class Reflective(Phong):
         self.set_kr(kr)
         self.set_cr(cr)
 
-    def set_kr(self, kr: float) -> None:
-        self.reflective_brdf.set_kr(number(kr, type(self).__name__ + ".kr"))
-
-    def set_cr(self, cr) -> None:
-        self.reflective_brdf.set_cr(colour(cr, type(self).__name__ + ".cr"))
+    set_kr = set_on("reflective_brdf", "set_kr", number, "kr")
+    set_cr = set_on("reflective_brdf", "set_cr", colour, "cr")
 
     @property
     def is_mirror(self) -> bool:
@@ -46,14 +44,15 @@ class Reflective(Phong):
                 and (b.cr.x, b.cr.y, b.cr.z) == (1.0, 1.0, 1.0))
 
     @property
-    def shader(self) -> int:
-        return MIRROR if self.is_mirror else PHONG
+    def reflection(self) -> Float3:
+        """kr cr, the weight of the reflected ray (the flat layout's ``reflection``)."""
+        return self.reflective_brdf.rho(None)
 
-    def flat_limit(self, tracer):
-        if not self.is_mirror:
-            return ("numba and WGSL draw a Reflective as the 02562 mirror only (ka = kd = ks = 0, kr = 1, "
-                    "cr white); render it with backend='reference'")
-        return super().flat_limit(tracer)
+    @property
+    def shader(self) -> int:
+        """The mirror case when nothing but the mirror reflects (any kr cr), else Phong
+        followed by the mirror."""
+        return MIRROR if not self.reflects_light() and self.ka == 0.0 else REFLECTIVE
 
     def shade(self, sr) -> Float3:
         ### BEGIN SOLUTION

@@ -7,8 +7,8 @@
 with w_t by Snell's law (PerfectTransmitter) and both rays traced one level deeper. The
 defaults are the 02562 ``transparent`` shader: nothing but the refracted ray (ka = kd = ks =
 kr = 0, kt = 1); with a Phong part it is the 02562 ``glossy`` shader (Phong at the surface,
-then refraction). The numba and WGSL paths run those two; a Transparent that also reflects
-(kr > 0) sends two rays, which the lecture layer's Whitted tracer follows.
+then refraction). A Transparent that also reflects (kr > 0) sends two rays; the numba and
+WGSL paths follow the second one from a stack of rays (rtfgu.kernels.render.trace, main.wgsl).
 """
 from __future__ import annotations
 
@@ -16,7 +16,7 @@ from ..btdfs.perfect_transmitter import PerfectTransmitter
 from ..float3 import Float3, dot
 from ..ray import SPAWN_EPSILON, Ray
 from ..validation import number, positive
-from .material import GLOSSY, TRANSPARENT, PathVertex
+from .material import GLOSSY, TRANSPARENT, PathVertex, read_from, set_on
 from .phong import Phong
 from .reflective import Reflective, specular_scale
 
@@ -29,15 +29,11 @@ class Transparent(Reflective):
         self.set_kt(kt)
         self.set_ior(ior)
 
-    def set_kt(self, kt: float) -> None:
-        self.specular_btdf.set_kt(number(kt, "Transparent.kt"))
+    set_kt = set_on("specular_btdf", "set_kt", number, "kt")
+    set_ior = set_on("specular_btdf", "set_ior", positive, "ior")
+    ior = read_from("specular_btdf", "ior", "the index of refraction inside the surface")
 
-    def set_ior(self, ior: float) -> None:
-        self.specular_btdf.set_ior(positive(ior, "Transparent.ior"))
-
-    @property
-    def ior(self) -> float:
-        return self.specular_btdf.ior
+    kt = read_from("specular_btdf", "kt", "kt, the weight of the transmitted ray (the flat layout's ``kt``)")
 
     @property
     def is_02562(self) -> bool:
@@ -47,12 +43,6 @@ class Transparent(Reflective):
     @property
     def shader(self) -> int:
         return GLOSSY if self.reflects_light() or self.ka > 0.0 else TRANSPARENT
-
-    def flat_limit(self, tracer):
-        if not self.is_02562:
-            return ("numba and WGSL follow one ray at a Transparent (kr = 0, kt = 1, the 02562 transparent "
-                    "and glossy shaders); one that also reflects needs backend='reference'")
-        return Phong.flat_limit(self, tracer)
 
     def shade(self, sr) -> Float3:
         wo = sr.wo

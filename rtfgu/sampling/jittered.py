@@ -13,9 +13,7 @@ class Jittered(Sampler):
 
     def generate_samples(self) -> None:
         n = math.isqrt(self.num_samples)
-        for p in range(self.num_sets):
-            for j in range(n):
-                for k in range(n):
-                    x = (k + self.rand_float()) / n
-                    y = (j + self.rand_float()) / n
-                    self.samples.append((x, y))
+        for j, k in self.grid_cells():
+            x = (k + self.rand_float()) / n
+            y = (j + self.rand_float()) / n
+            self.samples.append((x, y))

@@ -15,25 +15,18 @@ class MultiJittered(Sampler):
     def generate_samples(self) -> None:
         n = math.isqrt(self.num_samples)
         subcell = 1.0 / self.num_samples
-        for p in range(self.num_sets):
-            for i in range(n):
-                for j in range(n):
-                    self.samples.append(((i * n + j) * subcell + self.rand_float() * subcell,
-                                         (j * n + i) * subcell + self.rand_float() * subcell))
-        for p in range(self.num_sets):      # shuffle x within each column of cells
-            base = p * self.num_samples
-            for i in range(n):
-                for j in range(n):
-                    k = self.rand_int(j, n - 1)
-                    a, b = base + i * n + j, base + i * n + k
-                    self._swap(a, b, 0)
-        for p in range(self.num_sets):      # shuffle y within each row of cells
-            base = p * self.num_samples
-            for i in range(n):
-                for j in range(n):
-                    k = self.rand_int(j, n - 1)
-                    a, b = base + j * n + i, base + k * n + i
-                    self._swap(a, b, 1)
+        for i, j in self.grid_cells():
+            self.samples.append(((i * n + j) * subcell + self.rand_float() * subcell,
+                                 (j * n + i) * subcell + self.rand_float() * subcell))
+        # Shuffle x within each column of cells, then y within each row (Suffern's two loops,
+        # one per axis: ``cell(i, j)`` is the place of cell j of column or row i).
+        for axis, cell in ((0, lambda i, j: i * n + j), (1, lambda i, j: j * n + i)):
+            for p in range(self.num_sets):
+                base = p * self.num_samples
+                for i in range(n):
+                    for j in range(n):
+                        k = self.rand_int(j, n - 1)
+                        self._swap(base + cell(i, j), base + cell(i, k), axis)
 
     def _swap(self, a: int, b: int, axis: int) -> None:
         pa, pb = list(self.samples[a]), list(self.samples[b])

@@ -11,7 +11,5 @@ class Regular(Sampler):
 
     def generate_samples(self) -> None:
         n = math.isqrt(self.num_samples)
-        for p in range(self.num_sets):
-            for j in range(n):
-                for k in range(n):
-                    self.samples.append(((k + 0.5) / n, (j + 0.5) / n))
+        for j, k in self.grid_cells():
+            self.samples.append(((k + 0.5) / n, (j + 0.5) / n))

@@ -52,6 +52,15 @@ class Sampler(ABC):
     def generate_samples(self) -> None:
         """Append num_sets * num_samples points to self.samples, set after set."""
 
+    def grid_cells(self):
+        """(row, column) of every cell of the n x n grid (n^2 = num_samples), row by row, set
+        after set: the three loops of Suffern's Regular, Jittered and MultiJittered."""
+        n = math.isqrt(self.num_samples)
+        for _ in range(self.num_sets):
+            for j in range(n):
+                for k in range(n):
+                    yield j, k
+
     def rand_float(self) -> float:
         """The next number in [0, 1) of this sampler's generation stream."""
         self._count += 1

@@ -20,8 +20,8 @@ import math
 from ..cameras import PinholeCamera
 from ..float3 import Float3
 from ..lights import PointLight
-from ..materials import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, TRANSPARENT, Material, Matte, Phong,
-                         Reflective, Transparent)
+from ..materials import (BASE_COLOR, GLOSSY, LAMBERTIAN, MIRROR, PHONG, SHADER_NAMES, TRANSPARENT, Material, Matte,
+                         Phong, Reflective, Transparent)
 from ..scene import Scene
 from ..shapes import Plane, Sphere, Triangle
 from .registry import homework
@@ -96,24 +96,18 @@ def default_lambertian_shadows() -> Scene:
     return default_scene(LAMBERTIAN, LAMBERTIAN, shadows=True)
 
 
-@homework(512, 512)
-def default_mirror_sphere() -> Scene:
-    return default_scene(MIRROR, LAMBERTIAN)
+def sphere_scene(name: str, shader: int):
+    """Week 3's scene function ``default_<name>_sphere``: the sphere with the course's shader
+    ``shader`` on the Lambertian floor and triangle, with shadows."""
+    def scene() -> Scene:
+        return default_scene(shader, LAMBERTIAN)
+    scene.__name__ = scene.__qualname__ = "default_%s_sphere" % name
+    scene.__doc__ = "Week 3: the sphere as the course's %s shader." % SHADER_NAMES[shader]
+    return scene
 
 
-@homework(512, 512)
-def default_refractive_sphere() -> Scene:
-    return default_scene(TRANSPARENT, LAMBERTIAN)
-
-
-@homework(512, 512)
-def default_phong_sphere() -> Scene:
-    return default_scene(PHONG, LAMBERTIAN)
-
-
-@homework(512, 512)
-def default_glossy_sphere() -> Scene:
-    return default_scene(GLOSSY, LAMBERTIAN)
+for _name, _shader in (("mirror", MIRROR), ("refractive", TRANSPARENT), ("phong", PHONG), ("glossy", GLOSSY)):
+    homework(512, 512)(sphere_scene(_name, _shader))
 
 
 @homework(800, 450)

@@ -3,6 +3,10 @@
 ``suffern_disks``: Suffern ch. 19's disk (centre, normal, radius) as a floor and as two
 tilted coins, with a Phong sphere that casts its shadow across a disk's rim and a mirror
 disk that shows the others, lit by one point light.
+
+``suffern_24_reflective`` and ``suffern_27_transparent``: the book's Reflective (a Phong
+surface that also mirrors, ch. 24) and Transparent (a Phong highlight, a reflected and a
+refracted ray, ch. 27) traced by Whitted, with the coefficients of the book's listings.
 """
 from __future__ import annotations
 
@@ -11,7 +15,10 @@ import math
 from ..cameras import PinholeCamera
 from ..float3 import Float3
 from ..lights import PointLight
-from ..materials import Matte, Phong, Reflective
+from ..materials import Matte, Phong, Reflective, Transparent
+from ..shapes.plane import Plane
+from ..textures.checker import Checker
+from ..tracers import Whitted
 from ..scene import Scene
 from ..shapes.disk import Disk
 from ..shapes.sphere import Sphere
@@ -33,4 +40,44 @@ def suffern_disks() -> Scene:
     scene.shapes.append(Sphere(Float3(-0.2, 0.45, 0.6), 0.45, Float3(0.1, 0.3, 0.8),
                                Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
     scene.lights.append(PointLight(Float3(2.0, 4.0, 3.0), Float3(8 * math.pi, 8 * math.pi, 8 * math.pi)))
+    return scene
+
+
+def _book_stage(eye: Float3, look_at: Float3) -> Scene:
+    """A checkered floor (Suffern's 3D checker seen as worksheet 3's plane texture) under a
+    blue sky and one point light, Whitted as the tracer: what the book's chapter 24 and 27
+    figures stand their spheres on."""
+    scene = Scene(PinholeCamera(eye, look_at, Float3(0.0, 1.0, 0.0), d=1.3))
+    scene.background = Float3(0.1, 0.3, 0.6)
+    floor = Matte(ka=0.25, kd=0.75, cd=Checker(Float3(0.85, 0.85, 0.8), Float3(0.25, 0.25, 0.3), size=0.5))
+    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(1.0), floor))
+    scene.lights.append(PointLight(Float3(2.0, 7.0, 8.0), Float3(110.0, 110.0, 110.0)))
+    scene.tracer = Whitted()
+    return scene
+
+
+@homework(512, 512)
+def suffern_24_reflective() -> Scene:
+    """Suffern ch. 24: a yellow Reflective sphere (ka 0.25, kd 0.5, ks 0.15, exp 100, kr 0.75:
+    the book's listing) with its Phong highlight, mirroring a red Matte and a blue Phong sphere
+    and the checkered floor."""
+    scene = _book_stage(Float3(0.0, 2.4, 8.0), Float3(0.0, 0.7, 0.0))
+    mirror = Reflective(kr=0.75, ka=0.25, kd=0.5, cd=Float3(0.75, 0.75, 0.0), ks=0.15, exp=100.0)
+    scene.shapes.append(Sphere(Float3(0.0, 1.0, 0.0), 1.0, Float3(1.0), mirror))
+    scene.shapes.append(Sphere(Float3(-2.0, 0.6, 1.0), 0.6, Float3(0.8, 0.15, 0.1), Matte()))
+    scene.shapes.append(Sphere(Float3(1.9, 0.7, 1.2), 0.7, Float3(0.1, 0.3, 0.8),
+                               Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
+    return scene
+
+
+@homework(512, 512)
+def suffern_27_transparent() -> Scene:
+    """Suffern ch. 27: a glass sphere (ior 1.5, kr 0.1, kt 0.9, ks 0.2, exp 2000: the book's
+    listing) in front of three Matte spheres; Whitted traces its reflected and its refracted
+    ray at every hit, total internal reflection inside the glass included."""
+    scene = _book_stage(Float3(0.0, 1.8, 7.5), Float3(0.0, 0.8, 0.0))
+    glass = Transparent(ior=1.5, kt=0.9, kr=0.1, ka=0.0, kd=0.0, ks=0.2, exp=2000.0)
+    scene.shapes.append(Sphere(Float3(0.0, 1.0, 1.5), 1.0, Float3(1.0), glass))
+    for x, color in ((-1.6, Float3(0.8, 0.15, 0.1)), (0.0, Float3(0.1, 0.6, 0.15)), (1.6, Float3(0.1, 0.3, 0.8))):
+        scene.shapes.append(Sphere(Float3(x, 0.7, -1.5), 0.7, color, Matte()))
     return scene

@@ -113,6 +113,8 @@ def pieces(features, formula: str = "slide") -> list:
         names = {k.name for k in continuing}
         if "glossy" in names or "dielectric" in names:
             names.add("transparent")
+        if "reflective" in names:
+            names.add("mirror")
         for kind in SHADERS:
             if kind.name in names:
                 out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
@@ -281,8 +283,11 @@ class Program:
 def scene_features(flat) -> frozenset:
     """FlatScene.features plus what the assembly derives from it: "trace" when the path
     loop runs (not the ray-direction image), "shapes" when there is any shape, "sampler"
-    when the render has a sampler (FlatScene.sampler)."""
+    when the render has a sampler (FlatScene.sampler), "continues" when a shader of the scene
+    continues the path (continue_path.wgsl)."""
     f = set(flat.features)
+    if any(kind.continues and kind.name in f for kind in SHADERS):
+        f.add("continues")
     if flat.sampler is not None:
         f.add("sampler")
     if len(flat.shaders):

@@ -32,6 +32,8 @@ fn set_material(hit: ptr<function, HitInfo>, k: u32, kind: i32, row: u32)
     (*hit).emission = m.emission;
     (*hit).kd = m.kd;
     (*hit).ambient = m.ambient;
+    (*hit).reflection = m.reflection;
+    (*hit).kt = m.kt;
 }
 // #endif
 

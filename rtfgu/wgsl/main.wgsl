@@ -1,3 +1,13 @@
+// A second ray waiting to be traced: where it starts, its direction, its weight, its depth.
+// #if two_rays
+struct WaitingRay {
+    origin: vec3f,
+    direction: vec3f,
+    weight: vec3f,
+    depth: i32
+};
+// #endif
+
 // The main program (02562, "Intersecting with the scene and tracing a path"), as a compute
 // shader over one tile of the image: for each sample of the pixel, trace its path (with
 // PathTrace: trace_path, path_trace.wgsl) with at most max_depth shaded hits, adding the background where the path leaves the scene, and
@@ -33,20 +43,49 @@ fn main(@builtin(global_invocation_id) id: vec3u)
         result = trace_path(r, pixel, s);
         // #else
         var hit = empty_hit();
-        for (var i = 0; i < max_depth; i++) {
+        // The radiance a hit adds is weighted by the factors of the rays that led to it.
+        var weight = vec3f(1.0);
+        var first = 0;
+        // #if two_rays
+        // Whitted's second rays (a Transparent's reflections) wait here until the path ends.
+        var waiting: array<WaitingRay, max_depth>;
+        var pending = 0;
+        loop {
+        // #endif
+        for (var i = first; i < max_depth; i++) {
             // #if area_lighting
             stream = vec3u(pixel, s, 2u + u32(i) * VERTEX_DIMENSIONS);
             // #endif
             if (intersect_scene(&r, &hit)) {
-                result += shade(&r, &hit);
+                result += weight * shade(&r, &hit);
             } else {
-                result += background_radiance(r.direction);
+                result += weight * background_radiance(r.direction);
                 break;
             }
             if (hit.has_hit) {
                 break;
             }
+            // #if two_rays
+            if (i + 1 < max_depth && any(second_factor != vec3f(0.0))) {
+                waiting[pending] = WaitingRay(hit.position, second_direction, weight * second_factor, i + 1);
+                pending++;
+            }
+            // #endif
+            // #if continues
+            weight *= factor;
+            // #endif
         }
+        // #if two_rays
+        if (pending == 0) {
+            break;
+        }
+        pending--;
+        r = Ray(waiting[pending].origin, waiting[pending].direction, SPAWN_EPSILON, FAR);
+        weight = waiting[pending].weight;
+        first = waiting[pending].depth;
+        hit = empty_hit();
+        }
+        // #endif
         // #endif
         // #endif
         total += result;

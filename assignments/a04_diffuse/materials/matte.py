@@ -18,7 +18,7 @@ from ..float3 import Float3, dot
 from ..ray import SPAWN_EPSILON, Ray
 from ..sampling.random import BOUNCE_U, ROULETTE, path_dimension, random_float
 from ..validation import number
-from .material import LAMBERTIAN, Material, PathVertex
+from .material import LAMBERTIAN, Material, PathVertex, read_from, set_on
 
 # The 02562 split of an object's colour into ambient and diffuse reflectance.
 KA_02562 = 0.1
@@ -35,25 +35,16 @@ class Matte(Material):
         self.set_ka(ka)
         self.set_kd(kd)
 
-    # -- the book's setters
-    def set_ka(self, ka: float) -> None:
-        self.ambient_brdf.set_kd(number(ka, type(self).__name__ + ".ka"))
-
-    def set_kd(self, kd: float) -> None:
-        self.diffuse_brdf.set_kd(number(kd, type(self).__name__ + ".kd"))
+    # -- the book's setters: ka and kd are the kd of the ambient and the diffuse BRDF
+    set_ka = set_on("ambient_brdf", "set_kd", number, "ka")
+    set_kd = set_on("diffuse_brdf", "set_kd", number, "kd")
+    ka = read_from("ambient_brdf", "kd", "ka, the ambient reflection coefficient")
+    kd = read_from("diffuse_brdf", "kd", "kd, the diffuse reflection coefficient")
 
     def set_cd(self, cd) -> None:
         super().set_cd(cd)
         self.ambient_brdf.set_cd(self.cd)
         self.diffuse_brdf.set_cd(self.cd)
-
-    @property
-    def ka(self) -> float:
-        return self.ambient_brdf.kd
-
-    @property
-    def kd(self) -> float:
-        return self.diffuse_brdf.kd
 
     # -- shading
     def f(self, sr, wo, wi) -> Float3:

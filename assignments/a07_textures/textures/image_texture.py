@@ -25,9 +25,15 @@ ADDRESSES = ("repeat", "clamp")
 
 
 def srgb_to_linear(c: np.ndarray) -> np.ndarray:
-    """8-bit sRGB values / 255 to linear (the exact piecewise transfer function)."""
+    """8-bit sRGB values / 255 to linear (the exact piecewise transfer function). The power is
+    taken value by value with math.pow: numpy's vectorised power picks its code by the CPU's
+    vector instructions and rounds the last bit differently from one machine to the next, so
+    the same texture file would give other texels, and other images, on another machine."""
     c = np.asarray(c, dtype=np.float64)
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+    values, where = np.unique(c, return_inverse=True)
+    linear = np.array([v / 12.92 if v <= 0.04045 else math.pow((v + 0.055) / 1.055, 2.4) for v in values.tolist()],
+                      dtype=np.float64)
+    return linear[where].reshape(c.shape)
 
 
 def read_texture(path) -> np.ndarray:
