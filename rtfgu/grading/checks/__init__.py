@@ -193,6 +193,17 @@ def judge_cases(check: Check, got, want):
     return right / len(cases_want), lines
 
 
+def known_mistake_hint(hints, inputs, want, got, key: str, same):
+    """The text of the first (mistake, text) of ``hints`` whose value of ``want[key]``, as
+    ``inputs["known"]`` holds it, the student's ``got[key]`` equals (by ``same``) while the
+    right value does not; None if there is none."""
+    known = inputs.get("known") or {}
+    for mistake, text in hints:
+        if mistake in known and not same(known[mistake], want[key]) and same(got.get(key), known[mistake]):
+            return text
+    return None
+
+
 def image_check(name: str, weight: float, scene: str, size=(48, 48), visibility: str = "visible",
                 render: str | None = None, shaders=None, shadows=None, **options) -> Check:
     """An image test: probes.images.render_scene renders ``scene`` (a registered homework

@@ -3,7 +3,7 @@
 the hints compare with the known mistakes of rtfgu.grading.mistakes.texture."""
 from __future__ import annotations
 
-from . import Check, image_check, register
+from . import Check, image_check, known_mistake_hint, register
 
 FLIP = ("your colour is that of the texture upside down: (u, v) = (0, 0) is the bottom-left corner and "
         "v = 1 the top row, row 0 of self.texels, so the row coordinate is y = (1 - v) * height, not v * height")
@@ -28,11 +28,7 @@ def _same(got, want) -> bool:
 
 def hint_lookup(inputs, want, got):
     """Names the known mistake (rtfgu.grading.mistakes.texture) whose colour the student's is."""
-    known = inputs.get("known") or {}
-    for key, text in LOOKUP_HINTS:
-        if key in known and not _same(known[key], want["color"]) and _same(got.get("color"), known[key]):
-            return text
-    return None
+    return known_mistake_hint(LOOKUP_HINTS, inputs, want, got, "color", _same)
 
 
 def hint_texel(inputs, want, got):
@@ -48,30 +44,34 @@ def hint_texel(inputs, want, got):
     return None
 
 
+def _texture_check(name, weight, probe, hint, **options) -> Check:
+    """A test whose hint compares with the known mistakes of rtfgu.grading.mistakes.texture."""
+    return Check(name, weight, probe, hint=hint, known="texture", **options)
+
+
 register("a07_textures", [
-    Check("ImageTexture.texel: repeat wraps the column and row indices", 1, ("a07", "observe_texel_repeat"),
-          hint=hint_texel, known="texture"),
-    Check("ImageTexture.texel: clamp holds the edge texel", 1, ("a07", "observe_texel_clamp"),
-          hint=hint_texel, known="texture"),
-    Check("get_color, nearest: the texel that holds (u, v); v = 1 is the top row", 2, ("a07", "observe_nearest"),
-          hint=hint_lookup, known="texture"),
-    Check("get_color, bilinear: a texel at its centre, the mean halfway between centres", 2,
-          ("a07", "observe_bilinear"), hint=hint_lookup, known="texture"),
-    Check("get_color, repeat: u and v below 0 and above 1 wrap around", 1, ("a07", "observe_repeat"),
-          hint=hint_lookup, known="texture"),
-    Check("get_color, clamp: outside [0, 1] and near the edges, the edge texels", 1, ("a07", "observe_clamp"),
-          hint=hint_lookup, known="texture"),
+    _texture_check("ImageTexture.texel: repeat wraps the column and row indices", 1,
+                   ("a07", "observe_texel_repeat"), hint_texel),
+    _texture_check("ImageTexture.texel: clamp holds the edge texel", 1, ("a07", "observe_texel_clamp"), hint_texel),
+    _texture_check("get_color, nearest: the texel that holds (u, v); v = 1 is the top row", 2,
+                   ("a07", "observe_nearest"), hint_lookup),
+    _texture_check("get_color, bilinear: a texel at its centre, the mean halfway between centres", 2,
+                   ("a07", "observe_bilinear"), hint_lookup),
+    _texture_check("get_color, repeat: u and v below 0 and above 1 wrap around", 1, ("a07", "observe_repeat"),
+                   hint_lookup),
+    _texture_check("get_color, clamp: outside [0, 1] and near the edges, the edge texels", 1,
+                   ("a07", "observe_clamp"), hint_lookup),
     image_check("image: worksheet 3's plane, nearest and repeat", 1, "default_texture_nearest_repeat",
                 size=(64, 64)),
     image_check("image: worksheet 3's plane, bilinear and clamp", 1, "default_texture_bilinear_clamp",
                 size=(64, 64)),
     # ### BEGIN HIDDEN
-    Check("get_color, bilinear under repeat across the seams at u = 0 and v = 0", 1, ("a07_hidden", "observe_seam"),
-          visibility="hidden", hint=hint_lookup, known="texture"),
+    _texture_check("get_color, bilinear under repeat across the seams at u = 0 and v = 0", 1,
+                   ("a07_hidden", "observe_seam"), hint_lookup, visibility="hidden"),
     # ### END HIDDEN
     # ### BEGIN HIDDEN
-    Check("get_color of a 1 x 1 texture and of a texture taller than wide", 1,
-          ("a07_hidden", "observe_one_texel_and_tall"), visibility="hidden", hint=hint_lookup, known="texture"),
+    _texture_check("get_color of a 1 x 1 texture and of a texture taller than wide", 1,
+                   ("a07_hidden", "observe_one_texel_and_tall"), hint_lookup, visibility="hidden"),
     # ### END HIDDEN
     # ### BEGIN HIDDEN
     image_check("image: worksheet 3's plane, nearest and clamp", 1, "default_texture_nearest_clamp", size=(64, 64),

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from . import Check, register
+from . import Check, known_mistake_hint, register
 
 BOX = ("accelerators/bbox.py",)
 
@@ -44,11 +44,7 @@ def hint_box(inputs, want, got):
     """Names the known mistake (rtfgu.grading.mistakes.slab) whose t the student's is."""
     if not _same(got.get("ray.tmin"), inputs["tmin"]) or not _same(got.get("ray.tmax"), inputs["tmax"]):
         return "BBox.hit must not change the ray: it only says where the ray enters the box"
-    known = inputs.get("known") or {}
-    for key, text in BOX_HINTS:
-        if key in known and not _same(known[key], want["t"]) and _same(got.get("t"), known[key]):
-            return text
-    return None
+    return known_mistake_hint(BOX_HINTS, inputs, want, got, "t", _same)
 
 
 def hint_traversal(inputs, want, got):

@@ -48,27 +48,35 @@ def lookup_cases(rt, texels, lookups):
     return cases.result()
 
 
+def lookups_with(filter, address, *points):
+    """(filter, address, u, v, what) for each (u, v, what) of ``points``: lookup_cases' lookups
+    that share a filter and an addressing."""
+    return [(filter, address, u, v, what) for u, v, what in points]
+
+
 def centre(i, j, width=4, height=3):
     """(u, v) of the centre of texel (i, j) (column i, row j from the top)."""
     return (i + 0.5) / width, 1.0 - (j + 0.5) / height
 
 
-def observe_texel_repeat(rt):
-    return texel_cases(rt, WIDE, "repeat", [
+def _wide_texel_indices(row, column):
+    """(i, j, what) for texel(i, j) on WIDE: two corners and a texel inside, one past each edge
+    (in row ``row`` beside the left and right edges, in column ``column`` above and below),
+    and far outside."""
+    return [
         (0, 0, "the top-left texel"), (3, 2, "the bottom-right texel"), (2, 1, "inside"),
-        (4, 0, "one column past the right edge"), (-1, 0, "one column left of the left edge"),
-        (1, 3, "one row below the bottom"), (1, -1, "one row above the top"),
+        (4, row, "one column past the right edge"), (-1, row, "one column left of the left edge"),
+        (column, 3, "one row below the bottom"), (column, -1, "one row above the top"),
         (-5, -4, "far up and to the left"), (9, 7, "far down and to the right"),
-    ])
+    ]
+
+
+def observe_texel_repeat(rt):
+    return texel_cases(rt, WIDE, "repeat", _wide_texel_indices(row=0, column=1))
 
 
 def observe_texel_clamp(rt):
-    return texel_cases(rt, WIDE, "clamp", [
-        (0, 0, "the top-left texel"), (3, 2, "the bottom-right texel"), (2, 1, "inside"),
-        (4, 1, "one column past the right edge"), (-1, 1, "one column left of the left edge"),
-        (2, 3, "one row below the bottom"), (2, -1, "one row above the top"),
-        (-5, -4, "far up and to the left"), (9, 7, "far down and to the right"),
-    ])
+    return texel_cases(rt, WIDE, "clamp", _wide_texel_indices(row=1, column=2))
 
 
 def observe_nearest(rt):
@@ -103,28 +111,34 @@ def observe_bilinear(rt):
 
 
 def observe_repeat(rt):
-    return lookup_cases(rt, WIDE, [
-        ("nearest", "repeat", 1.3, 0.7, "u above 1"),
-        ("nearest", "repeat", -0.7, 0.7, "u below 0"),
-        ("nearest", "repeat", 0.45, 1.8, "v above 1"),
-        ("nearest", "repeat", 0.45, -1.2, "v below 0"),
-        ("nearest", "repeat", -2.6, 3.1, "several periods away"),
-        ("bilinear", "repeat", 1.3, 0.6, "u above 1"),
-        ("bilinear", "repeat", -0.7, -0.4, "u and v below 0"),
-        ("bilinear", "repeat", 2.5625, 1.3125, "several periods away"),
-    ])
+    return lookup_cases(rt, WIDE, lookups_with(
+        "nearest", "repeat",
+        (1.3, 0.7, "u above 1"),
+        (-0.7, 0.7, "u below 0"),
+        (0.45, 1.8, "v above 1"),
+        (0.45, -1.2, "v below 0"),
+        (-2.6, 3.1, "several periods away"),
+    ) + lookups_with(
+        "bilinear", "repeat",
+        (1.3, 0.6, "u above 1"),
+        (-0.7, -0.4, "u and v below 0"),
+        (2.5625, 1.3125, "several periods away"),
+    ))
 
 
 def observe_clamp(rt):
-    return lookup_cases(rt, WIDE, [
-        ("nearest", "clamp", 1.3, 0.7, "u above 1: the right column"),
-        ("nearest", "clamp", 1.0, 0.5, "u = 1 exactly: the right column"),
-        ("nearest", "clamp", -0.7, 0.5, "u below 0: the left column"),
-        ("nearest", "clamp", 0.3, 1.8, "v above 1: the top row"),
-        ("nearest", "clamp", 0.8, -1.2, "v below 0: the bottom row"),
-        ("nearest", "clamp", 2.0, -3.0, "beyond the bottom-right corner"),
-        ("bilinear", "clamp", 1.3, 0.5, "u above 1: the right column"),
-        ("bilinear", "clamp", -0.5, 1.5, "beyond the top-left corner: the corner texel"),
-        ("bilinear", "clamp", 0.05, 0.6, "inside, less than half a texel from the left edge"),
-        ("bilinear", "clamp", 0.7, 0.02, "inside, less than half a texel from the bottom edge"),
-    ])
+    return lookup_cases(rt, WIDE, lookups_with(
+        "nearest", "clamp",
+        (1.3, 0.7, "u above 1: the right column"),
+        (1.0, 0.5, "u = 1 exactly: the right column"),
+        (-0.7, 0.5, "u below 0: the left column"),
+        (0.3, 1.8, "v above 1: the top row"),
+        (0.8, -1.2, "v below 0: the bottom row"),
+        (2.0, -3.0, "beyond the bottom-right corner"),
+    ) + lookups_with(
+        "bilinear", "clamp",
+        (1.3, 0.5, "u above 1: the right column"),
+        (-0.5, 1.5, "beyond the top-left corner: the corner texel"),
+        (0.05, 0.6, "inside, less than half a texel from the left edge"),
+        (0.7, 0.02, "inside, less than half a texel from the bottom edge"),
+    ))

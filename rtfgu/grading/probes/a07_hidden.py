@@ -1,7 +1,7 @@
 """Probes of a07's hidden tests."""
 from __future__ import annotations
 
-from .a07 import WIDE, lookup_cases
+from .a07 import WIDE, lookup_cases, lookups_with
 
 # 2 texels wide, 5 high (row 0 at the top), and a single texel.
 TALL = [
@@ -15,16 +15,16 @@ ONE = [[[0.25, 0.5, 0.875]]]
 
 
 def observe_seam(rt):
-    return lookup_cases(rt, WIDE, [
-        ("bilinear", "repeat", 0.0, 0.5, "u = 0: halfway between the right column and the left one"),
-        ("bilinear", "repeat", 0.03125, 0.5, "just right of u = 0: mostly the left column, some of the right one"),
-        ("bilinear", "repeat", 0.96875, 0.5, "just left of u = 1: mostly the right column, some of the left one"),
-        ("bilinear", "repeat", 0.375, 1.0, "v = 1: halfway between the top row and the bottom one"),
-        ("bilinear", "repeat", 0.375, 0.0625, "near v = 0: the bottom row and some of the top one"),
-        ("bilinear", "repeat", 0.0, 0.0, "the corner: the mean of the four corner texels"),
-        ("bilinear", "repeat", -1.0, 2.0, "a corner of another period: the same mean"),
-        ("nearest", "repeat", 1.0, 0.5, "u = 1 under repeat is u = 0: the left column"),
-    ])
+    return lookup_cases(rt, WIDE, lookups_with(
+        "bilinear", "repeat",
+        (0.0, 0.5, "u = 0: halfway between the right column and the left one"),
+        (0.03125, 0.5, "just right of u = 0: mostly the left column, some of the right one"),
+        (0.96875, 0.5, "just left of u = 1: mostly the right column, some of the left one"),
+        (0.375, 1.0, "v = 1: halfway between the top row and the bottom one"),
+        (0.375, 0.0625, "near v = 0: the bottom row and some of the top one"),
+        (0.0, 0.0, "the corner: the mean of the four corner texels"),
+        (-1.0, 2.0, "a corner of another period: the same mean"),
+    ) + lookups_with("nearest", "repeat", (1.0, 0.5, "u = 1 under repeat is u = 0: the left column")))
 
 
 def observe_one_texel_and_tall(rt):
