@@ -95,9 +95,14 @@ PLANTED = [
                                     "8.11": "first hit found"}),
     ("a08_no_tie_rule", "a08", {"8.8": "math.nextafter", "8.11": "math.nextafter"}),
     ("a09_pdf_mismatch", "a09", {"9.3": "(n . w_i) / pi for cosine-weighted", "9.4": "biased", "9.5": "biased",
-                                 "9.7": "(n . w_i) / pi for cosine-weighted"}),
+                                 "9.7": "pdf must be their density (n . w_i) / pi",
+                                 "9.9": "(n . w_i) / pi for cosine-weighted"}),
     ("a09_exponent_off_by_one", "a09", {"9.1": "(1 - y)^(1 / (e + 1))", "9.2": "e = 10", "9.3": "g = cos",
-                                        "9.7": "g = cos"}),
+                                        "9.6": "not where Suffern's map puts them",
+                                        "9.7": "estimates the cell's solid angle", "9.9": "g = cos"}),
+    # Each passes every test but the contract's: the distributions and means are right.
+    ("a09_own_rng", "a09", {"9.6": "gave another direction the second time"}),
+    ("a09_tuned_pdf", "a09", {"9.7": "pdf must be their density (n . w_i) / pi"}),
 ]
 
 

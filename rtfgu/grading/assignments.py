@@ -407,7 +407,11 @@ A09 = Assignment(
           "their distribution (chi-square) and the mean of f (n . w_i) / pdf, and they render a sphere\n"
           "in the white furnace (exactly rho in expectation) and the Cornell box lit by a point light\n"
           "under its ceiling, with the direct light and one bounce of diffuse interreflection, and\n"
-          "compare them with the truth or the reference image within the Monte Carlo error."),
+          "compare them with the truth or the reference image within the Monte Carlo error. Two tests\n"
+          "hold the contract itself: hemisphere_map is Suffern's map, a function of (x, y, e) alone (the\n"
+          "same point twice gives the same direction, Suffern's), and the pdf sample_f returns is the\n"
+          "density of the directions it draws, tested cell by cell over the hemisphere and, for\n"
+          "cosine-weighted directions, at every direction."),
     formulas=("- Hemisphere map (Suffern ch. 7, \"Mapping Samples to a Hemisphere\"): phi = 2 pi x,\n"
               "  cos(theta) = (1 - y)^(1 / (e + 1)), density (e + 1) / (2 pi) cos^e(theta) per unit solid angle;\n"
               "  e = 1: cos(theta) = sqrt(1 - y), density cos(theta) / pi\n"

@@ -13,6 +13,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import random
 import time
 from pathlib import Path
 
@@ -20,7 +21,7 @@ import numpy as np
 
 from ..image import read_png
 from .assignments import get_assignment
-from .checks import checks_for, judge_cases
+from .checks import checks_for, drawn_inputs, judge_cases
 from .checks.images import judge_image, neighbourhood_difference  # noqa: F401  (tests import it here)
 from .results import Result, TestResult
 from .sandbox import choose_isolation, hidden_from_sandbox_user, prepare, run_child, work_folder
@@ -46,6 +47,9 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
     with hidden_from_sandbox_user(isolation), work_folder("rtfgu-ref-") as tmp:
         ws = prepare(a, None, tmp / "work")
         for check in checks_for(a.id):
+            if check.draw is not None:            # one draw, for the student checker
+                observations[check.slug] = drawn_inputs(check, random.Random(0))[1]
+                continue
             if check.reference is not None:       # an exact truth, or the staff renderer's estimate
                 observations[check.slug] = check.reference()
                 continue
@@ -123,10 +127,12 @@ def _needs(check, a) -> tuple:
 
 def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope", visible_only: bool = False,
           time_limit: float | None = None, memory_mb: int = 1024, output_limit: int = 1024 * 1024,
-          log=None, require_sandbox: bool = False, only=None) -> Result:
+          log=None, require_sandbox: bool = False, only=None, seed=None) -> Result:
     """Grade ``submission`` (a folder, a zip file, or None for the solution) and, if
     ``out_dir`` is given, write results.json, summary.txt and diffs/ there. ``only``: the
-    slugs of the tests to run (the rest are left out of the result)."""
+    slugs of the tests to run (the rest are left out of the result). ``seed``: the inputs
+    that tests with ``draw`` draw when they run (default: the operating system's randomness,
+    new for every grading)."""
     a = get_assignment(assignment) if isinstance(assignment, str) else assignment
     time_limit = a.time_limit if time_limit is None else time_limit
     isolation = choose_isolation(require_sandbox)
@@ -152,8 +158,9 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
                 continue
             if only is not None and check.slug not in only:
                 continue
+            rng = random.SystemRandom() if seed is None else random.Random("%s/%s" % (seed, check.slug))
             result.tests.append(_run_check(a, check, ws, tmp, refs, out_dir, isolation,
-                                           time_limit, memory_mb, output_limit, log))
+                                           time_limit, memory_mb, output_limit, log, rng))
     now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
     if now != digest:
         for path, data in ref_files.items():
@@ -169,8 +176,12 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     return result
 
 
-def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_mb, output_limit, log):
+def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_mb, output_limit, log, rng):
     time_limit = check.time_limit or time_limit
+    probe, reference = ["check", a.id, check.slug], refs[check.slug]
+    if check.draw is not None:
+        (module, function, kwargs), reference = drawn_inputs(check, rng)
+        probe = ["probe", module, function, json.dumps(kwargs)]
     broken = [ws.broken[f] for f in _needs(check, a) if f in ws.broken]
     diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
     image_path = None
@@ -180,7 +191,7 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
                                 for b in broken]
         output = ""
     else:
-        child = run_child(ws, tmp / "scratch" / check.slug, ["check", a.id, check.slug], isolation=isolation,
+        child = run_child(ws, tmp / "scratch" / check.slug, probe, isolation=isolation,
                           time_limit=time_limit, memory_mb=memory_mb if check.memory_mb is None else check.memory_mb,
                           output_limit=output_limit)
         seconds, output = child.seconds, child.output
@@ -191,11 +202,11 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
             # does not have the shape the probe gives costs this test only.
             try:
                 if check.kind == "image":
-                    fraction, lines, image_path = judge_image(check, child.data, refs[check.slug], diff_path)
+                    fraction, lines, image_path = judge_image(check, child.data, reference, diff_path)
                 elif check.kind == "statistic" or check.judge is not None:   # a judge of its own
-                    fraction, lines = check.judge(check, child.data, refs[check.slug])
+                    fraction, lines = check.judge(check, child.data, reference)
                 else:
-                    fraction, lines = judge_cases(check, child.data, refs[check.slug])
+                    fraction, lines = judge_cases(check, child.data, reference)
                 lines = [str(line) for line in lines]
             except Exception as error:
                 fraction, lines, image_path = 0.0, [

@@ -22,7 +22,7 @@ import time
 from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
-from .checks import REFERENCE_DIR, checks_for, judge_cases
+from .checks import REFERENCE_DIR, checks_for, judge_cases, stored_probe
 from .checks.images import judge_image, load_png, write_png
 from .results import Result, TestResult
 
@@ -101,8 +101,9 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
         if c.visibility != "visible" or (only is not None and c.slug not in only):
             continue
         t0 = time.monotonic()
-        data, output, failure = run_probe(root, c.probe, c.time_limit or (time_limit * 6 if c.kind == "image" else time_limit))
         reference = load_reference(c)
+        data, output, failure = run_probe(root, stored_probe(c, reference),
+                                          c.time_limit or (time_limit * 6 if c.kind == "image" else time_limit))
         image = None
         if failure is not None:
             fraction, lines = 0.0, [failure]

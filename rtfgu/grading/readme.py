@@ -40,6 +40,9 @@ def assignment_readme(a) -> str:
                   "an image also fails when more than %g%% of its pixel channels are beyond %g standard errors."
                   % (100 * PIXEL_FRACTION, Z_PIXEL),
                   "The probes draw from a fixed stream of random numbers, so a test gives the same answer every run."]
+        if any(c.draw is not None for c in checks):
+            lines += ["The tests that say \"drawn for each grading\" are the exception: the grader draws their inputs",
+                      "(points, normals) afresh every time, and `make check` runs them on one stored draw."]
     lines += ["", "## Hand in", "", "The file%s" % ("s" if len(a.files) > 1 else ""), ""]
     lines += ["- `%s`" % f for f in a.files]
     if a.images:

@@ -945,10 +945,11 @@ def _pipe_with(data: bytes) -> int:
 
 def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time_limit: float = 10.0,
               memory_mb: int = 1024, output_limit: int = 1024 * 1024) -> ChildResult:
-    """Run one probe (["check", assignment id, slug] or ["render", scene, width, height]) in a
-    new interpreter under ``isolation``; its answer is JSON through a pipe, its output goes to
-    an unnamed file the grader keeps open (at most ``output_limit`` bytes). ``scratch`` is
-    the child's working folder under the fallback (its own, mode 0700)."""
+    """Run one probe (["check", assignment id, slug], ["probe", module, function, kwargs as
+    JSON] or ["render", scene, width, height]) in a new interpreter under ``isolation``; its
+    answer is JSON through a pipe, its output goes to an unnamed file the grader keeps open
+    (at most ``output_limit`` bytes). ``scratch`` is the child's working folder under the
+    fallback (its own, mode 0700)."""
     scratch = Path(scratch)
     scratch.parent.mkdir(parents=True, exist_ok=True)
     scratch.mkdir(exist_ok=True)

@@ -55,6 +55,10 @@ class Check:
     judge: object = None
     time_limit: float | None = None  # this test's own limit in seconds, over the grader's (a render in pure Python)
     reference: object = None
+    # draw(rng) -> probe kwargs drawn when the test runs (inputs no submission can know in
+    # advance, from the grader's random.Random or SystemRandom); the check's reference is then
+    # reference(**drawn), computed by the grader for them (see drawn_inputs)
+    draw: object = None
     assignment: str = ""
 
     def __post_init__(self):
@@ -219,6 +223,24 @@ def image_check(name: str, weight: float, scene: str, size=(48, 48), visibility:
         kwargs["shadows"] = bool(shadows)
     return Check(name, weight, ("images", "render_scene", kwargs), visibility=visibility, kind="image",
                  size=size, **options)
+
+
+def drawn_inputs(check: Check, rng) -> tuple:
+    """(probe, reference) of a check with ``draw``: its probe with the inputs drawn from
+    ``rng`` added to its kwargs, and its reference computed for those inputs, which the judge
+    finds as ``reference["drawn"]``. The grader draws afresh for every grading; the stored
+    reference (and the student checker) holds one draw, from ``random.Random(0)``."""
+    drawn = check.draw(rng)
+    module, function, kwargs = check.probe
+    return (module, function, dict(kwargs, **drawn)), dict(check.reference(**drawn), drawn=drawn)
+
+
+def stored_probe(check: Check, reference) -> tuple:
+    """The probe that a stored ``reference`` was computed for: with a check's drawn inputs."""
+    if check.draw is None:
+        return check.probe
+    module, function, kwargs = check.probe
+    return module, function, dict(kwargs, **reference["drawn"])
 
 
 def probe_table() -> dict:

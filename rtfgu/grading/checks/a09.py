@@ -8,7 +8,11 @@ a chi-square test, the estimator f (n . w_i) g(w_i) / pdf against integrals know
 the white furnace against its exact expectation rho, and the Cornell box against a reference
 estimate of many samples, each within the Monte Carlo error. A correct sampler other than
 the reference's (the uniform hemisphere with pdf 1 / (2 pi)) passes; its extra noise is
-reported, and only noise far beyond any sensible sampler's fails.
+reported, and only noise far beyond any sensible sampler's fails. Two tests hold the contract
+on inputs drawn for each grading: hemisphere_map is Suffern's map, the same direction for the
+same (x, y, e), and sample_f's pdf is the density of its directions, cell by cell over the
+hemisphere (an importance-weighted histogram) and at each cosine-weighted direction
+(docs/grading_sandbox.md, "a09's statistical tests: calibration").
 """
 from __future__ import annotations
 
@@ -16,8 +20,9 @@ import math
 
 import numpy as np
 
-from . import Check, fmt, register
-from .statistics import (CHI_SQUARE_ALPHA, PIXEL_FRACTION, Z_LIMIT, Z_PIXEL, chi_square_p, image_z, mean_z,
+from ..probes.a09 import BELOW, UNIT
+from . import Check, close, fmt, register
+from .statistics import (CHI_SQUARE_ALPHA, EXACT, PIXEL_FRACTION, Z_LIMIT, Z_PIXEL, chi_square_p, image_z, mean_z,
                          worst_cell)
 
 SEED = 9                    # the probes' stream of uniform numbers
@@ -277,6 +282,218 @@ def judge_image(check, got, reference):
                           reference["whole_variance"])
 
 
+# --- the contract: Suffern's map itself, and pdf as the density of the directions ----------
+#
+# The tests above judge distributions and means, which a map that ignores its sample, or a
+# pdf whose errors cancel in the few averages taken, can pass. These two take inputs drawn
+# when the test runs (Check.draw), so that nothing is tuned to them in advance.
+
+MAP_EXPONENTS = (0.0, 1.0, 10.0, 100.0)
+MAP_POINTS = 4              # points (x, y) drawn per exponent
+MAP_ATOL = 1e-9             # per component, against the solution's hemisphere_map
+SHOWN = 3                   # examples shown per kind of mistake
+
+
+def draw_map_points(rng) -> dict:
+    return {"points": [[rng.random(), rng.random(), e] for e in MAP_EXPONENTS for _ in range(MAP_POINTS)]}
+
+
+def map_reference(points) -> dict:
+    """Suffern's map at ``points``, by the solution's hemisphere_map (the grader's package)."""
+    from rtfgu.sampling.maps import hemisphere_map
+
+    return {"out": [[d.x, d.y, d.z] for d in (hemisphere_map(x, y, e) for x, y, e in points)]}
+
+
+def judge_map_contract(check, got, reference):
+    """hemisphere_map at points drawn for this grading, twice each: the same direction both
+    times, and Suffern's (the solution's) within MAP_ATOL."""
+    if "error" in got:
+        return 0.0, [got["error"]]
+    points, truth = reference["drawn"]["points"], reference["out"]
+    first, second = got["first"], got["second"]
+    if len(first) != len(points) or len(second) != len(points):
+        return 0.0, ["the test stopped before it tried every point"]
+    right, raised, changed, wrong = 0, [], [], []
+    for (x, y, e), a, b, want in zip(points, first, second, truth):
+        label = "hemisphere_map(%.17g, %.17g, %s)" % (x, y, fmt(float(e)))
+        if "error" in a or "error" in b:
+            raised.append("- %s: your code raised %s" % (label, a.get("error") or b.get("error")))
+        elif a["out"] != b["out"]:
+            changed.append("- %s gave %s, and %s when called again" % (label, fmt(a["out"]), fmt(b["out"])))
+        elif not close(a["out"], want, 0.0, MAP_ATOL):
+            wrong.append("- %s is %s; Suffern's map gives %s" % (label, fmt(a["out"]), fmt(want)))
+        else:
+            right += 1
+    lines = raised[:SHOWN]
+    if changed:
+        lines.append("%d of %d points gave another direction the second time: hemisphere_map must be a function "
+                     "of (x, y, e) alone, drawing no random numbers of its own (the sampler's strata and each "
+                     "pixel's sample set decide where a direction goes)" % (len(changed), len(points)))
+        lines += changed[:SHOWN]
+    if wrong:
+        lines.append("%d of %d points are not where Suffern's map puts them, phi = 2 pi x and cos(theta) = "
+                     "(1 - y)^(1 / (e + 1)): a map with the same density but another correspondence (x and y "
+                     "swapped, y for 1 - y) draws other directions from the same samples than the numba and WGSL "
+                     "paths do" % (len(wrong), len(points)))
+        lines += wrong[:SHOWN]
+    if right == len(points):
+        lines.append("all %d points, each called twice, give Suffern's direction" % len(points))
+    return right / len(points), lines
+
+
+DENSITY_NORMALS = 2         # normals drawn per grading
+DENSITY_COUNT = 16384       # directions per normal
+COS_BINS = 4                # cells: cos(theta) in quarters ...
+PHI_BINS = 8                # ... and phi in eighths about the normal
+# In the band at the horizon (cos(theta) below 1 / COS_BINS) 1 / pdf has no finite variance for
+# cosine-weighted directions; the band's cells weigh cos(theta) / pdf and compare the mean with
+# their projected solid angle instead.
+PDF_RTOL = 1e-6             # pdf against (n . w_i) / pi where the directions are cosine-weighted
+
+
+def draw_normals(rng) -> dict:
+    """Unit normals uniform on the sphere and the seed of the probe's uniform numbers."""
+    normals = []
+    while len(normals) < DENSITY_NORMALS:
+        v = [rng.gauss(0.0, 1.0) for _ in range(3)]
+        length = math.hypot(*v)
+        if length > 1e-6:
+            normals.append([c / length for c in v])
+    return {"normals": normals, "seed": rng.randrange(1 << 31)}
+
+
+def cell_moments():
+    """Per cell (COS_BINS x PHI_BINS): the exact integral of the cell's weight w over the cell
+    (w = 1, its solid angle; w = cos(theta) in the horizon band, its projected solid angle)
+    and the integral of w^2 / p for cosine-weighted directions, p = cos(theta) / pi."""
+    lo = np.arange(COS_BINS)[:, None] / COS_BINS * np.ones((1, PHI_BINS))
+    hi = lo + 1.0 / COS_BINS
+    dphi = 2.0 * math.pi / PHI_BINS
+    band = lo == 0.0
+    truth = np.where(band, (hi * hi - lo * lo) / 2.0, hi - lo) * dphi
+    squares = np.where(band, math.pi * truth, math.pi * dphi * np.log(hi / np.where(band, 1.0, lo)))
+    return truth, squares
+
+
+def density_reference(normals, seed) -> dict:
+    return {"cells": cell_moments()[0].tolist()}
+
+
+def _frame(n):
+    a = np.eye(3)[int(np.argmin(np.abs(n)))]
+    t = np.cross(n, a)
+    t /= np.linalg.norm(t)
+    return t, np.cross(n, t)
+
+
+def density_stats(normal, samples) -> dict:
+    """The importance-weighted histogram of ``samples`` ([x, y, z, pdf] per direction) about
+    the unit ``normal``: per cell the mean over all N samples of w / pdf (w = 1, or
+    cos(theta) in the horizon band) for the directions in the cell, its exact value, its
+    standard error (the larger of the samples' own and that of cosine-weighted directions)
+    and z; the chi-square p of the directions against the cosine-weighted density; and the
+    directions whose pdf is not (n . w_i) / pi. Invalid samples are listed and nothing else
+    is computed."""
+    n = np.asarray(normal, dtype=np.float64)
+    x = np.asarray(samples, dtype=np.float64).reshape(-1, 4)
+    d, pdf = x[:, :3], x[:, 3]
+    count = len(x)
+    finite = np.isfinite(x).all(axis=1)
+    length = np.where(finite, np.linalg.norm(np.where(finite[:, None], d, 0.0), axis=1), np.nan)
+    c = np.where(finite, d @ np.where(np.isfinite(n), n, 0.0), np.nan)
+    bad = ~finite | ~(np.abs(length - 1.0) <= UNIT) | ~(c >= -BELOW) | ~(pdf > 0.0)
+    if bad.any() or count < 2:
+        return {"count": count, "bad": [[x[k].tolist(), float(c[k])] for k in np.flatnonzero(bad)[:SHOWN]],
+                "n_bad": int(bad.sum())}
+    c = np.clip(c, 0.0, 1.0)
+    t, b = _frame(n)
+    phi = np.arctan2(d @ b, d @ t) % (2.0 * math.pi)
+    i = np.minimum((c * COS_BINS).astype(int), COS_BINS - 1)
+    j = np.minimum((phi / (2.0 * math.pi) * PHI_BINS).astype(int), PHI_BINS - 1)
+    w = np.where(i == 0, c, 1.0) / pdf
+    cell = i * PHI_BINS + j
+    sums = np.bincount(cell, w, COS_BINS * PHI_BINS).reshape(COS_BINS, PHI_BINS) / count
+    squares = np.bincount(cell, w * w, COS_BINS * PHI_BINS).reshape(COS_BINS, PHI_BINS) / count
+    truth, contract_squares = cell_moments()
+    own = np.maximum(squares - sums * sums, 0.0) * count / (count - 1) / count
+    contract = np.maximum(contract_squares - truth * truth, 0.0) / count
+    sigma = np.sqrt(np.maximum(own, contract))
+    z = (sums - truth) / sigma
+    passed = np.abs(sums - truth) <= Z_LIMIT * sigma + EXACT * truth
+    t_bins = np.minimum((c * c * 8).astype(int), 7)
+    counts = np.bincount(t_bins * 8 + np.minimum((phi / (2.0 * math.pi) * 8).astype(int), 7), minlength=64)
+    want = c / math.pi
+    off = np.abs(pdf - want) > PDF_RTOL * want + 1e-12
+    worst = int(np.argmax(np.abs(pdf - want) / np.maximum(want, 1e-300)))
+    return {"count": count, "n_bad": 0, "estimate": sums, "truth": truth, "sigma": sigma, "z": z, "passed": passed,
+            "cosine_p": chi_square_p(counts), "n_off": int(off.sum()),
+            "worst_off": [d[worst].tolist(), float(c[worst]), float(pdf[worst]), float(want[worst])]}
+
+
+def _cell_label(i: int, j: int) -> str:
+    return "cos(theta) in [%g, %g), phi in [%g, %g) degrees" % (i / COS_BINS, (i + 1) / COS_BINS,
+                                                              360.0 * j / PHI_BINS, 360.0 * (j + 1) / PHI_BINS)
+
+
+def density_problems(stats) -> list:
+    """What is wrong with one normal's samples (density_stats), in words; [] if nothing."""
+    if stats["n_bad"]:
+        return ["%d of your %d samples are not a unit direction w_i about n with a pdf above 0, for example %s"
+                % (stats["n_bad"], stats["count"], "; ".join("w_i = %s (n . w_i = %.6g), pdf %s"
+                                                            % (fmt(s[:3]), c, fmt(s[3])) for s, c in stats["bad"]))]
+    problems = []
+    failed = np.argwhere(~stats["passed"])
+    if len(failed):
+        order = sorted(failed.tolist(), key=lambda ij: -abs(stats["z"][ij[0], ij[1]]))
+        shown = []
+        for i, j in order[:SHOWN]:
+            weight, exact = (("cos(theta) / (N pdf)", "projected solid angle") if i == 0
+                             else ("1 / (N pdf)", "solid angle"))
+            shown.append("%s: the sum of %s is %.5g, its %s %.5g (%.1f standard errors off)"
+                         % (_cell_label(i, j), weight, stats["estimate"][i, j], exact, stats["truth"][i, j],
+                            stats["z"][i, j]))
+        problems.append("over the directions that fall in a cell of the hemisphere, the sum of 1 / (N pdf) estimates "
+                        "the cell's solid angle whatever the density, if pdf is the density the directions were drawn "
+                        "with; in %d of the %d cells it does not: %s" % (len(failed), COS_BINS * PHI_BINS,
+                                                                        "; ".join(shown)))
+    if stats["cosine_p"] >= CHI_SQUARE_ALPHA and stats["n_off"]:
+        d, c, pdf, want = stats["worst_off"]
+        problems.append("your directions are cosine-weighted (chi-square p = %.2g), so pdf must be their density "
+                        "(n . w_i) / pi at each, but %d of %d are not; the furthest: w_i = %s, n . w_i = %.6g, "
+                        "pdf %.6g instead of %.6g (%.3g times)" % (stats["cosine_p"], stats["n_off"], stats["count"], fmt(d),
+                                                         c, pdf, want, pdf / want if want > 0 else math.inf))
+    return problems
+
+
+def judge_pdf_density(check, got, reference):
+    """Lambertian.sample_f about normals drawn for this grading: valid samples; per cell of the
+    hemisphere the importance-weighted sum against the cell's exact solid angle (within
+    Z_LIMIT standard errors); and, where the directions are cosine-weighted, pdf = (n . w_i)
+    / pi at each direction."""
+    if "error" in got:
+        return 0.0, [got["error"]]
+    normals = reference["drawn"]["normals"]
+    sets = got["sets"]
+    if len(sets) != len(normals):
+        return 0.0, ["the test stopped before it tried every normal"]
+    right, lines = 0, []
+    for s, n in zip(sets, normals):
+        stats = density_stats(n, s["samples"])
+        label = "Lambertian.sample_f about n = %s (drawn for this grading), %d directions" % (fmt(n), stats["count"])
+        problems = density_problems(stats)
+        if problems:
+            lines.append("- %s: %s" % (label, "; ".join(problems)))
+            continue
+        right += 1
+        text = ("the sum of 1 / (N pdf) over each cell estimates its solid angle within the noise (the furthest %.1f "
+                "standard errors)" % float(np.abs(stats["z"]).max()))
+        if stats["cosine_p"] >= CHI_SQUARE_ALPHA:
+            text += ", and pdf = (n . w_i) / pi at every direction"
+        lines.append("- %s: %s" % (label, text))
+    return right / len(normals), lines
+
+
 # --- references (grader side, from the staff renderer) --------------------------------------
 
 def reference_image(scene: str, width: int, height: int, spp: int, seed: int):
@@ -337,6 +554,12 @@ register("a09_path_tracing", [
     Check("The Cornell box, direct light and one bounce of diffuse interreflection, against the reference", 3,
           ("a09", "observe_image", dict(scene="one_bounce", **IMAGE)), kind="statistic", judge=judge_image,
           reference=_image_reference, time_limit=IMAGE_SECONDS),
+    Check("hemisphere_map is Suffern's map: a function of (x, y, e) alone, at points drawn for each grading", 1,
+          ("a09", "observe_hemisphere_twice"), kind="statistic", judge=judge_map_contract, needs=MAPS,
+          draw=draw_map_points, reference=map_reference),
+    Check("Lambertian.sample_f: pdf is the density of its directions, about normals drawn for each grading", 2,
+          ("a09", "observe_sample_directions", dict(count=DENSITY_COUNT)), kind="statistic",
+          judge=judge_pdf_density, draw=draw_normals, reference=density_reference),
     # ### BEGIN HIDDEN
     Check("hemisphere_map: e = 100, and the corners of the unit square", 1,
           ("a09_hidden", "observe_lobe_and_corners", dict(count=COUNT, seed=SEED + 3)), kind="statistic",

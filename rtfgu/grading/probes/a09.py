@@ -8,7 +8,8 @@ verdict. Directions are binned by t = cos(theta)^(e + 1), which is uniform in [0
 density (e + 1) / (2 pi) cos^e(theta), and by phi; the judge applies a chi-square test. The
 estimator of the reflected light is summed as mean and variance of f (n . w_i) g(w_i) / pdf
 for a few functions g whose integrals are known exactly. Images come back as per-pixel
-means and variances over the samples."""
+means and variances over the samples. The contract's probes return what the code gave, point
+by point: hemisphere_map twice at each point, and sample_f's every direction with its pdf."""
 from __future__ import annotations
 
 import importlib
@@ -109,6 +110,13 @@ def observe_hemisphere_points(rt, points):
     return {"points": out}
 
 
+def observe_hemisphere_twice(rt, points):
+    """hemisphere_map at every point (x, y, e), then at every point again: both rounds'
+    directions, for the judge (a function of its arguments gives the same twice)."""
+    return {"first": observe_hemisphere_points(rt, points)["points"],
+            "second": observe_hemisphere_points(rt, points)["points"]}
+
+
 # The functions g(w) of the estimator test, of c = n . w (cos(theta)) and of w itself, and
 # their integrals over the hemisphere of n (exact: the judge holds the same table).
 G_NAMES = ("1", "cos", "cos^2", "lateral")
@@ -124,32 +132,54 @@ def _g(name, c, d, lateral):
     return max(_dot(d, lateral), 0.0)   # light from one side: max(w . a, 0), a in the tangent plane
 
 
+def _sample_f(brdf, sr, wo, u, v):
+    """(f, w_i, pdf) of brdf.sample_f(sr, wo, u, v) as plain lists and a float."""
+    got = brdf.sample_f(sr, wo, u, v)
+    if not isinstance(got, tuple) or len(got) != 3:
+        raise StudentError("Lambertian.sample_f should return a tuple (f, w_i, pdf), but it returned %r" % (got,))
+    return (vec(got[0], "f (the first value of sample_f)"), vec(got[1], "w_i (the second value of sample_f)"),
+            num(got[2], "pdf (the third value of sample_f)"))
+
+
+def _lambertian(rt, normal, rho):
+    """(Lambertian(1, rho), a HitInfo whose normal is ``normal``)."""
+    brdf = importlib.import_module(rt.__name__ + ".brdfs.lambertian").Lambertian(1.0, rt.Float3(*rho))
+    sr = rt.HitInfo()
+    sr.normal = rt.Float3(*normal)
+    return brdf, sr
+
+
+def observe_sample_directions(rt, normals, count: int, seed: int):
+    """Lambertian(1, 1).sample_f(sr, wo, u, v), sr.normal = n, for ``count`` uniform (u, v)
+    per normal: every direction w_i and pdf as returned, [x, y, z, pdf] (the judge bins them
+    and tests pdf as the density of the directions)."""
+    out = []
+    for n in normals:
+        brdf, sr = _lambertian(rt, n, (1.0, 1.0, 1.0))
+        samples = []
+        for u, v in _uniforms(count, seed):
+            _, d, pdf = _sample_f(brdf, sr, sr.normal, u, v)
+            samples.append(d + [pdf])
+        out.append({"normal": list(n), "samples": samples})
+    return {"sets": out}
+
+
 def observe_sample_f(rt, normals, rhos, count: int, seed: int):
     """Lambertian(1, rho).sample_f(sr, wo, u, v), sr.normal = n, for ``count`` uniform (u, v)
     per normal: the
     directions binned (e = 1, the cosine-weighted density, for the hint only), the bad
     ones, f and its difference from rho / pi, and per g of G_NAMES the sum and the sum of
     squares of f (n . w_i) g(w_i) / pdf divided by rho (channel by channel)."""
-    lambertian = importlib.import_module(rt.__name__ + ".brdfs.lambertian")
-    F = rt.Float3
     out = []
     for n, rho in zip(normals, rhos):
         binned = Binned(list(n), 1.0)
         lateral = _frame(n)[0]
         sums = {g: [[0.0, 0.0] for _ in range(3)] for g in G_NAMES}
         f_seen, bad_pdf, n_bad_pdf, used = None, [], 0, 0
-        brdf = lambertian.Lambertian(1.0, F(*rho))
-        sr = rt.HitInfo()
-        sr.normal = F(*n)
+        brdf, sr = _lambertian(rt, n, rho)
         wo = sr.normal
         for u, v in _uniforms(count, seed):
-            got = brdf.sample_f(sr, wo, u, v)
-            if not isinstance(got, tuple) or len(got) != 3:
-                raise StudentError("Lambertian.sample_f should return a tuple (f, w_i, pdf), but it returned %r"
-                                   % (got,))
-            f = vec(got[0], "f (the first value of sample_f)")
-            d = vec(got[1], "w_i (the second value of sample_f)")
-            pdf = num(got[2], "pdf (the third value of sample_f)")
+            f, d, pdf = _sample_f(brdf, sr, wo, u, v)
             if f_seen is None:
                 f_seen = f
             if not binned.add(d, (u, v)):
