@@ -230,6 +230,10 @@ class FlatScene:
     # Whether the ray-cast loop draws points of area lights (AreaLighting) instead of
     # worksheet 5's point at their centre.
     area_lighting: bool = False
+    # The sets of the lights' own samplers (set_sampler), one after another: points (n, 2) and
+    # each set's order (n,) int32; None where no light has a sampler (rtfgu.registry.LightKind).
+    light_samples: np.ndarray = None
+    light_shuffled: np.ndarray = None
     # The EnvironmentLight's image (height, width, 3), or None: rays that leave the scene
     # see ``background`` then.
     environment: np.ndarray = None
@@ -367,6 +371,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             features.add("two_rays")   # the ray-cast loops keep a stack of rays
 
     lights = {kind.name: [] for kind in LIGHTS}
+    light_samples, light_shuffled, light_sets = [], [], {}   # id(sampler) -> its first sample
     for j, light in enumerate(scene.lights):
         _, kind = light_kind_of(light)
         if kind is None:
@@ -375,6 +380,20 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         limit = light.flat_limit()
         if limit is not None:
             raise ValueError("Scene.lights[%d] (%r): %s" % (j, light, limit))
+        if kind.area:
+            # The light's sampler's sets go into the scene's light sample arrays (once per
+            # sampler); its row says where they start, how many a set has, how many sets.
+            sampler, first = light.sampler, 0
+            if sampler is not None:
+                if id(sampler) not in light_sets:
+                    light_sets[id(sampler)] = len(light_samples)
+                    light_samples.extend(sampler.samples)
+                    light_shuffled.extend(sampler.shuffled_indices)
+                first = light_sets[id(sampler)]
+                features.add("light_sampler")
+            light = SimpleNamespace(**{name: getattr(light, name) for name, _ in kind.fields if name != "light_sampler"},
+                                    light_sampler=Float3(float(first), float(sampler.num_samples if sampler else 0),
+                                                         float(sampler.num_sets if sampler else 0)))
         lights[kind.name].append(pack_row(kind.record, light))
         features.add(kind.name)
     if scene.lights:
@@ -420,6 +439,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         materials=table(materials, "Material"),
         shaders=np.array(shaders, dtype=np.int32),
         lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
+        light_samples=np.array(light_samples, dtype=dtype).reshape(-1, 2) if light_samples else None,
+        light_shuffled=np.array(light_shuffled, dtype=np.int32) if light_samples else None,
         background=np.array(_vec(scene.background) + [0.0], dtype=dtype),
         shadows=shadows,
         show_ray_direction=bool(scene.show_ray_direction),

@@ -106,7 +106,10 @@ class LightKind(_Rows):
     draws a point or a direction of it with two random numbers (the class's get_direction
     then incident = L G / pdf, numba ``sample_<name>_area(lights, j, position, normal, u,
     v)``, WGSL ``sample_<name>_area(pos, normal, i, u, v)``); ``ray_cast``: the ray-cast
-    tracers have it too (a light without it needs PathTrace, Scene.validate says so)."""
+    tracers have it too (a light without it needs PathTrace, Scene.validate says so). An
+    ``area`` kind's row ends with ``light_sampler``: (first sample, num_samples, num_sets) of
+    its sampler's sets in the scene's light sample arrays (set_sampler; num_samples 0: the
+    random stream), filled in by rtfgu.layout.compile_scene."""
 
     name: str
     cls: type
@@ -153,10 +156,10 @@ LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
     LightKind("directional", Directional, (("direction", 3), ("intensity", 3))),
     # rtfgu/lights/area_light.py: one emitting triangle or sphere.
-    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3)),
-              area=True),
+    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3),
+                                        ("light_sampler", 3)), area=True),
     # rtfgu/lights/ambient_occluder.py: ambient light seen through the unoccluded directions.
-    LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3),), area=True),
+    LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3), ("light_sampler", 3)), area=True),
 )
 
 

@@ -373,6 +373,31 @@ def test_a_sampler_on_an_ambient_occluder_changes_the_draws_not_the_mean():
         assert abs(np.mean(values) - 0.5) <= 5 * np.std(values, ddof=1) / 16 + 1e-12
 
 
+@pytest.mark.parametrize("tracer", ["area_lighting", "path_trace"])
+def test_a_lights_own_sampler_draws_alike_on_every_path(wgpu_device, tracer):
+    """set_sampler on an AreaLight (under AreaLighting and PathTrace) and on an
+    AmbientOccluder: numba float64 draws the same points as the lecture layer, bit for bit,
+    WGSL within 1/255; and the points are the sampler's, not the stream's."""
+    def scene(with_sampler):
+        s, _ = lamp_scene(AreaLighting() if tracer == "area_lighting" else PathTrace(max_depth=2))
+        s.shapes.append(Sphere(Float3(0.1, 0.35, 0.0), 0.25, Float3(0.5), Matte(ka=0.0, kd=1.0)))
+        if tracer == "path_trace":
+            s.lights.append(AmbientOccluder(0.3))
+        if with_sampler:
+            for light in s.lights:
+                light.set_sampler(MultiJittered(4, num_sets=5, seed=7))
+        s.sampler = rtfgu.Jittered(4)
+        return s
+
+    reference = rtfgu.render(scene(True), 16, 16)
+    numba64 = rtfgu.render(scene(True), 16, 16, backend="numba")
+    assert np.array_equal(reference, numba64), float(np.max(np.abs(reference - numba64)))
+    assert not np.array_equal(numba64, rtfgu.render(scene(False), 16, 16, backend="numba"))
+    wgsl = rtfgu.render(scene(True), 16, 16, backend="wgpu")
+    close = np.abs(to_8bit(wgsl).astype(int) - to_8bit(reference).astype(int)) <= 1
+    assert close.mean() >= 0.999
+
+
 def test_directional_points_toward_the_light_as_the_books_does():
     scene = Scene(PinholeCamera(Float3(0.0, 2.0, 4.0), Float3(0.0), Float3(0.0, 1.0, 0.0)))
     scene.ambient_light = Ambient(0.0)

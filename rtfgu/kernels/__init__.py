@@ -61,6 +61,12 @@ def _coprime_stride(n: int) -> int:
     return stride
 
 
+def light_sets(flat):
+    """The last two entries of the kernels' ``lights``: the sets of the lights' own samplers,
+    samples and orders, both None where no light has one (rtfgu.kernels.sampling.light_point)."""
+    return flat.light_samples, flat.light_shuffled
+
+
 def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, seed: int = 0,
                      samples=(0, 1)):
     """The render_kernel arguments for a FlatScene (rtfgu.kernels.render says how they are
@@ -69,7 +75,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     range of sample indices to add."""
     formula_id = sphere_formula_id(formula)
     shapes = shape_arrays(flat)
-    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS)
+    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS) + light_sets(flat)
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     camera64 = camera.astype(np.float64)
     eye = None

@@ -9,7 +9,8 @@ that numba's cache (keyed on a source file) keeps them between runs.
 
 The scene reaches the kernels as flat tuples in registry order (numba's parallel loop
 takes a tuple of arrays, not a tuple of tuples): ``shapes`` holds table, index per shape
-kind, ``lights`` a table per light kind, each None for a kind the scene lacks. A kind's
+kind, ``lights`` a table per light kind, each None for a kind the scene lacks, and last the
+sets of the lights' own samplers, samples and orders, both None where no light has a sampler. A kind's
 entries go to a function of its own as arguments, and numba compiles that function with
 the ``is None`` branch taken or removed, so a scene pays only for the kinds it has. ``hit`` is (t, scene index, kind, row); of two hits at the same t the one earlier
 in Scene.shapes wins, whichever kind is visited first.
@@ -226,21 +227,27 @@ def _by_kind(name, row_function, what, default, mesh_slots) -> str:
         '    """%s of row ``row`` of shape kind ``kind``."""' % what] + lines + ["    return " + default])
 
 
+def _draw(light, pad: str, pixel: str, sample: str, first: str, seed: str) -> list:
+    """The lines that ask light ``j`` of ``table`` for (L_i, w_i, dist) at ``position``: an
+    area kind through a point (u, v) of its sampler or of the stream (light_point), as
+    AreaLight.get_direction then incident do (L G / pdf); another kind has one answer."""
+    if not light.area:
+        return [pad + "L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
+    column = layout.offset(light.record, "light_sampler")
+    return [pad + "u, v = light_point(sets, table, j, %d, %s, %s, %s + LIGHT_U + 2 * j, %s, zero)"
+            % (column, pixel, sample, first, seed),
+            pad + "L_i, w_i, dist = sample_%s_area(table, j, position, normal, u, v)" % light.name]
+
+
 def _direct(light) -> str:
     """The light loop (02562 "Sampling light in the shader"), written once per light kind.
     ``stream`` is (the bounce's first dimension, pixel, sample, seed, sampled): under
-    AreaLighting (sampled) an area light is asked for a point drawn from the stream, as
-    AreaLight.get_direction then incident do (L G / pdf), else as worksheet 5's point at
-    its centre."""
+    AreaLighting (sampled) an area light is asked for a point of it (_draw), else as
+    worksheet 5's point at its centre. ``sets``: the lights' sampler sets (light_point)."""
+    draw = _draw(light, "        ", "stream[1]", "stream[2]", "stream[0]", "stream[3]")
     if light.area:
-        draw = ["        if stream[4]:",
-                "            u = random_float(stream[1], stream[2], stream[0] + LIGHT_U + 2 * j, stream[3], zero)",
-                "            v = random_float(stream[1], stream[2], stream[0] + LIGHT_V + 2 * j, stream[3], zero)",
-                "            L_i, w_i, dist = sample_%s_area(table, j, position, normal, u, v)" % light.name,
-                "        else:",
-                "            L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
-    else:
-        draw = ["        L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
+        draw = (["        if stream[4]:"] + ["    " + line for line in draw]
+                + ["        else:", "            L_i, w_i, dist = sample_%s(table, j, position)" % light.name])
     body = "\n".join([
         "    position, normal = surface_point",
         "    zero = lit(0, mat[0])",
@@ -260,7 +267,7 @@ def _direct(light) -> str:
         "                result = add(result, scale(mul(f, L_i), cos_theta))",
         "    return result, n_shadow"])
     return _overloaded("direct_" + light.name,
-                       "table, shader, mat, color, surface_point, w_o, shapes, shadows, formula, stream, result",
+                       "table, sets, shader, mat, color, surface_point, w_o, shapes, shadows, formula, stream, result",
                        "result, 0", body,
                        "The light of every %s reflected by the surface, added to ``result``" % light.name,
                        inline="always")
@@ -268,13 +275,8 @@ def _direct(light) -> str:
 
 def _direct_path(light) -> str:
     """PathTrace's light loop (Matte.direct_light, rtfgu/materials/matte.py) for one light kind: f_r = rho / pi,
-    an area light through a point of it drawn from the stream (path_dimension)."""
-    if light.area:
-        draw = ["        u = random_float(pixel, sample, first + LIGHT_U + 2 * j, seed, zero)",
-                "        v = random_float(pixel, sample, first + LIGHT_V + 2 * j, seed, zero)",
-                "        L_i, w_i, dist = sample_%s_area(table, j, position, normal, u, v)" % light.name]
-    else:
-        draw = ["        L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
+    an area light through a point of it drawn from its sampler or the stream (path_dimension)."""
+    draw = _draw(light, "        ", "pixel", "sample", "first", "seed")
     body = "\n".join([
         "    position, normal, w_o = surface",
         "    rho, specular, shininess = brdf",
@@ -297,7 +299,7 @@ def _direct_path(light) -> str:
         "        result = add(result, scale(mul(f_r, L_i), cos_theta))",
         "    return result, n_shadow"])
     return _overloaded("direct_path_" + light.name,
-                       "table, shapes, surface, brdf, stream, shadows, formula, result",
+                       "table, sets, shapes, surface, brdf, stream, shadows, formula, result",
                        "result, 0", body,
                        "The light of every %s reflected by a diffuse surface on a path, added to ``result``"
                        % light.name, inline="always")
@@ -334,9 +336,9 @@ def source() -> str:
              "from rtfgu.kernels.float3 import div",
              "from rtfgu.kernels.lights import %s" % ", ".join(
                  ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
-             "from rtfgu.kernels.sampling import random_float",
+             "from rtfgu.kernels.sampling import light_point, sampler_sets",
              "from rtfgu.kernels.glossy import glossy_lobe",
-             "from rtfgu.sampling.random import LIGHT_U, LIGHT_V",
+             "from rtfgu.sampling.random import LIGHT_U",
              "from rtfgu.kernels.shaders import ends, surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
@@ -408,7 +410,8 @@ def source() -> str:
          "    zero = lit(0, brdf[0][0])",
          "    result = (zero, zero, zero)",
          "    n_shadow = 0"]
-        + ["    result, n = direct_path_%s(lights[%d], shapes, surface, brdf, stream, shadows, formula, result)\n"
+        + ["    sets = sampler_sets(lights[%d], lights[%d])" % (len(LIGHTS), len(LIGHTS) + 1)]
+        + ["    result, n = direct_path_%s(lights[%d], sets, shapes, surface, brdf, stream, shadows, formula, result)\n"
            "    n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
         + ["    return result, n_shadow"]))
 
@@ -432,8 +435,9 @@ def source() -> str:
 
     # The light loop is written once, for every shader with a BRDF (each supplies its term
     # through ``brdf``); such a shader that continues the path does so after it.
-    light_calls = ["        result, n = direct_%s(lights[%d], shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, stream, result)\n"
-                   "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS) if light.ray_cast]
+    light_calls = ["        sets = sampler_sets(lights[%d], lights[%d])" % (len(LIGHTS), len(LIGHTS) + 1)]
+    light_calls += ["        result, n = direct_%s(lights[%d], sets, shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, stream, result)\n"
+                    "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS) if light.ray_cast]
     lit_shaders = [shader for shader in SHADERS if shader.brdf and not shader.emits]
     shade_lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
                    "def shade(shader, mat, color, r_d, surface_point, lights, shapes, shadows, bounces, formula, stream):",

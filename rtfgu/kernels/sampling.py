@@ -45,11 +45,56 @@ def random_float(pixel, index, dimension, seed, like):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def sample_unit_square(samples, shuffled, n, num_sets, pixel, index, dimension, seed):
-    """Sampler.sample_unit_square: the sample of the set the stream picks for the pixel."""
-    jump = (random_u32(pixel, index // n, dimension, seed) % num_sets) * n
+def sample_unit_square(samples, shuffled, n, num_sets, pixel, index, dimension, seed, first=0):
+    """Sampler.sample_unit_square: the sample of the set the stream picks for the pixel, of a
+    sampler whose sets start at row ``first`` of ``samples`` and ``shuffled``."""
+    jump = first + (random_u32(pixel, index // n, dimension, seed) % num_sets) * n
     k = jump + shuffled[jump + index % n]
     return samples[k, 0], samples[k, 1]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def stream_point(pixel, index, dimension, seed, like):
+    """A point of the unit square from the random stream's ``dimension`` and the next."""
+    return random_float(pixel, index, dimension, seed, like), random_float(pixel, index, dimension + 1, seed, like)
+
+
+def sampler_sets(samples, shuffled):
+    """(samples, shuffled), or None where ``samples`` is None: the lights' sampler sets as
+    light_point takes them, from the two arrays the kernels receive them as (numba's
+    parallel loop takes no tuple inside a tuple; typed by the overload below)."""
+    return as_python(_typed_sampler_sets, samples, shuffled)
+
+
+@overload(sampler_sets, inline="always")
+def _typed_sampler_sets(samples, shuffled):
+    if isinstance(samples, types.NoneType):
+        return lambda samples, shuffled: None
+    return lambda samples, shuffled: (samples, shuffled)
+
+
+def light_point(sets, table, j, column, pixel, index, dimension, seed, like):
+    """The point (u, v) light ``j`` of ``table`` draws from (Scene.light_sample): its
+    sampler's, where its row's ``light_sampler`` (at ``column``: first sample, num_samples,
+    num_sets) has num_samples > 0, from ``sets`` = (the scene's light samples, their
+    orders); else the random stream's (stream_point). ``sets`` is None in a scene where no
+    light has a sampler, and that code compiles to nothing (typed by the overload below)."""
+    return as_python(_typed_light_point, sets, table, j, column, pixel, index, dimension, seed, like)
+
+
+@overload(light_point, inline="always")
+def _typed_light_point(sets, table, j, column, pixel, index, dimension, seed, like):
+    if isinstance(sets, types.NoneType):
+        return lambda sets, table, j, column, pixel, index, dimension, seed, like: stream_point(
+            pixel, index, dimension, seed, like)
+
+    def sampled(sets, table, j, column, pixel, index, dimension, seed, like):
+        n = int(table[j, column + 1])
+        if n == 0:
+            return stream_point(pixel, index, dimension, seed, like)
+        return sample_unit_square(sets[0], sets[1], n, int(table[j, column + 2]), pixel, index, dimension, seed,
+                                  int(table[j, column]))
+    return sampled
 
 
 def pixel_sample(sampler, pixel, index, dimension, seed, like):

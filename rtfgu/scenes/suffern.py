@@ -4,6 +4,11 @@
 tilted coins, with a Phong sphere that casts its shadow across a disk's rim and a mirror
 disk that shows the others, lit by one point light.
 
+``suffern_17_occlusion_regular`` and ``suffern_17_occlusion_multi_jittered``: Suffern ch.
+17's comparison of samplers for an AmbientOccluder's directions (set_sampler): the same 16
+directions at every point (Regular) band the shadow under the sphere; multi-jittered sets,
+one picked per pixel, leave noise instead.
+
 ``suffern_24_reflective`` and ``suffern_27_transparent``: the book's Reflective (a Phong
 surface that also mirrors, ch. 24) and Transparent (a Phong highlight, a reflected and a
 refracted ray, ch. 27) traced by Whitted, with the coefficients of the book's listings.
@@ -14,11 +19,15 @@ import math
 
 from ..cameras import PinholeCamera
 from ..float3 import Float3
-from ..lights import PointLight
+from ..lights import AmbientOccluder, PointLight
 from ..materials import Matte, Phong, Reflective, Transparent
 from ..shapes.plane import Plane
 from ..textures.checker import Checker
-from ..tracers import Whitted
+from ..sampling.jittered import Jittered
+from ..sampling.multi_jittered import MultiJittered
+from ..sampling.regular import Regular
+from ..sampling.sampler import sampler_of
+from ..tracers import PathTrace, Whitted
 from ..scene import Scene
 from ..shapes.disk import Disk
 from ..shapes.sphere import Sphere
@@ -81,3 +90,38 @@ def suffern_27_transparent() -> Scene:
     for x, color in ((-1.6, Float3(0.8, 0.15, 0.1)), (0.0, Float3(0.1, 0.6, 0.15)), (1.6, Float3(0.1, 0.3, 0.8))):
         scene.shapes.append(Sphere(Float3(x, 0.7, -1.5), 0.7, color, Matte()))
     return scene
+
+
+# The samples per pixel of the ambient-occlusion figures, and of their occluder's sampler.
+OCCLUSION_SPP = 16
+
+
+def _occlusion(sampler_class) -> Scene:
+    """A sphere on a floor lit by an AmbientOccluder only (PathTrace with one vertex: the
+    book's image), whose directions come from a ``sampler_class`` sampler of OCCLUSION_SPP
+    samples; the pixels jittered."""
+    scene = Scene(PinholeCamera(Float3(0.0, 2.5, 6.0), Float3(0.0, 0.6, 0.0), Float3(0.0, 1.0, 0.0), d=1.6))
+    scene.background = Float3(0.0)
+    white = Matte(ka=0.0, kd=1.0)
+    scene.shapes.append(Plane(Float3(0.0), Float3(0.0, 1.0, 0.0), Float3(0.8), white))
+    scene.shapes.append(Sphere(Float3(0.0, 1.0, 0.0), 1.0, Float3(0.8), white))
+    occluder = AmbientOccluder(1.0)
+    occluder.set_sampler(sampler_of(sampler_class, OCCLUSION_SPP))
+    scene.lights.append(occluder)
+    scene.tracer = PathTrace(max_depth=1)
+    scene.sampler = sampler_of(Jittered, OCCLUSION_SPP)
+    return scene
+
+
+@homework(512, 512, test_side=24)
+def suffern_17_occlusion_regular() -> Scene:
+    """Suffern ch. 17, the occluder's directions from a Regular sampler: 16 fixed directions
+    at every point, so the shadow under the sphere comes in bands."""
+    return _occlusion(Regular)
+
+
+@homework(512, 512, test_side=24)
+def suffern_17_occlusion_multi_jittered() -> Scene:
+    """Suffern ch. 17, the occluder's directions from a MultiJittered sampler: each pixel
+    draws one of its sets, so the bands of the Regular image become noise."""
+    return _occlusion(MultiJittered)

@@ -41,9 +41,8 @@ fn sample_area_light(pos: vec3f, i: u32) -> Light
 {
     // #if area_lighting
     // AreaLighting (rtfgu/tracers/area_lighting.py): a point of the light drawn from the stream.
-    let u = random_float(stream.x, stream.y, stream.z + LIGHT_U + 2u * i, uniforms.seed);
-    let v = random_float(stream.x, stream.y, stream.z + LIGHT_V + 2u * i, uniforms.seed);
-    return sample_area_light_area(pos, i, u, v);
+    let uv = light_point(stream.x, stream.y, stream.z, i, area_lights[i].light_sampler);
+    return sample_area_light_area(pos, i, uv.x, uv.y);
     // #else
     let light = area_lights[i];
     if (light.radius > 0.0) {

@@ -47,9 +47,8 @@ fn lobe_direction(w_r: vec3f, shininess: f32, u: f32, v: f32) -> vec3f
 // #if area_light
 fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
-    let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
-    let v = random_float(pixel, s, first + LIGHT_V + 2u * i, uniforms.seed);
-    return sample_area_light_area(pos, i, u, v);
+    let uv = light_point(pixel, s, first, i, area_lights[i].light_sampler);
+    return sample_area_light_area(pos, i, uv.x, uv.y);
 }
 // #endif
 // #if ambient_occluder
@@ -57,9 +56,8 @@ fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: 
 // normal, unbounded (rtfgu/lights/ambient_occluder.py).
 fn sample_path_ambient_occluder(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
-    let u = random_float(pixel, s, first + LIGHT_U + 2u * i, uniforms.seed);
-    let v = random_float(pixel, s, first + LIGHT_V + 2u * i, uniforms.seed);
-    return Light(ambient_occluders[i].radiance * (2.0 * PI), about(normal, hemisphere_map(vec2f(u, v), 0.0)), FAR);
+    let uv = light_point(pixel, s, first, i, ambient_occluders[i].light_sampler);
+    return Light(ambient_occluders[i].radiance * (2.0 * PI), about(normal, hemisphere_map(uv, 0.0)), FAR);
 }
 // #endif
 // #if point_light
