@@ -218,7 +218,7 @@ def test_a08_bvh_references_are_the_exact_closest_hit():
 def test_every_planted_submission_is_the_solution_with_its_one_described_bug():
     names = planted_names()
     assert {p[0] for p in PLANTED} | {"a03_infinite_loop", "a03_misbehaving", "a03_writes_references",
-                                      "a09_uniform_hemisphere"} == set(names)
+                                      "a06_endless_loop", "a06_slow_loop", "a09_uniform_hemisphere"} == set(names)
     for name in names:
         spec = describe(name)
         assert spec["__doc__"] and "\n" not in spec["__doc__"].strip(), name   # says what the bug is, in a line
@@ -381,14 +381,22 @@ def test_cli_solution_writes_the_solved_files(tmp_path):
     assert "NotImplementedError" not in (tmp_path / "shapes" / "sphere.py").read_text()
 
 
-def test_the_wgsl_assignment_gives_the_solution_full_marks_and_the_stubs_zero(tmp_path):
+def _skip_without_a_webgpu_adapter():
     # The adapter is probed in a child process: the grader forks, and a GPU driver must not
     # be initialised in the process that forks.
+    probe = subprocess.run([sys.executable, "-c", "import wgpu"], capture_output=True, text=True, cwd=ROOT)
+    if probe.returncode != 0:
+        pytest.skip("the WGSL assignment needs the Python package wgpu (pip install 'wgpu>=0.19'): "
+                    + probe.stderr.strip().splitlines()[-1])
     probe = subprocess.run([sys.executable, "-c", "from rtfgu.wgsl.device import adapter_description as a; print(a())"],
                            capture_output=True, text=True, cwd=ROOT)
     if probe.returncode != 0:
-        pytest.skip("no WebGPU adapter for the WGSL assignment (wgpu, Mesa llvmpipe: libgl1-mesa-dri): "
-                    + probe.stderr.strip().splitlines()[-1])
+        pytest.skip("no WebGPU adapter for the WGSL assignment (Mesa's llvmpipe: Debian packages libgl1-mesa-dri "
+                    "libegl1 mesa-vulkan-drivers): " + probe.stderr.strip().splitlines()[-1])
+
+
+def test_the_wgsl_assignment_gives_the_solution_full_marks_and_the_stubs_zero(tmp_path):
+    _skip_without_a_webgpu_adapter()
     write_files(solution_files("a06"), tmp_path / "solution")
     solved = grade("a06", tmp_path / "solution", tmp_path / "out", time_limit=60)
     assert [t.output for t in solved.tests if t.status != "passed"] == []
@@ -397,6 +405,37 @@ def test_the_wgsl_assignment_gives_the_solution_full_marks_and_the_stubs_zero(tm
     stubs = grade("a06", tmp_path / "stubs", None, time_limit=60)
     assert stubs.score == 0
     assert all("TODO_a06_" in t.output for t in stubs.tests)
+
+
+def test_a_wgsl_function_that_does_not_end_costs_only_the_tests_that_call_it(tmp_path):
+    """intersect_sphere.wgsl running far past the time limit (a06_slow_loop), and starting with
+    loop {} (a06_endless_loop): each grading ends, the plane and triangle tests keep their
+    marks, and the sphere test and the image (which calls intersect_sphere) lose theirs. The
+    slow one is stopped by the per-test limit (here 5 s instead of a06's 60). Mesa's software
+    adapter ends every loop of a shader invocation after 65,535 steps in all, so loop {}
+    returns there, with an undefined result (docs/grading_sandbox.md)."""
+    import signal
+
+    _skip_without_a_webgpu_adapter()
+
+    def hung(signum, frame):
+        raise TimeoutError("the grading of a06 did not end")
+    previous = signal.signal(signal.SIGALRM, hung)
+    signal.alarm(300)
+    try:
+        slow = _by_number(grade("a06", make_submission("a06_slow_loop", tmp_path / "slow"), None, time_limit=LIMIT))
+        endless = _by_number(grade("a06", make_submission("a06_endless_loop", tmp_path / "endless"), None,
+                                   time_limit=LIMIT))
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+    for number in ("6.2", "6.4"):
+        assert slow[number].score == 0
+        assert "time limit of 5 s" in slow[number].output or "CPU time" in slow[number].output, slow[number].output
+        assert endless[number].score < endless[number].max_score
+    for tests in (slow, endless):
+        for number in ("6.1", "6.3"):
+            assert tests[number].score == tests[number].max_score, tests[number].output
 
 
 def test_the_gradescope_setup_installs_bubblewrap_and_for_wgsl_mesas_software_adapter(tmp_path):
