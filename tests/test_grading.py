@@ -337,22 +337,108 @@ def test_grade_all_writes_one_gradebook_row_and_one_results_folder_per_submissio
         validate_gradescope(json.loads((tmp_path / "out" / student / "results.json").read_text()))
 
 
-def test_the_gradescope_bundle_runs_on_a_submission_in_a_grader_like_layout(solved, tmp_path):
+def _run_gradescope_bundle(assignment: str, submission: Path, root: Path, private: Path, **env) -> dict:
+    """results.json of the Gradescope bundle of ``assignment`` run as Gradescope runs it: the
+    zip (built into the folder ``private``) unpacked into ROOT/source, the upload copied to
+    ROOT/submission, run_autograder with AUTOGRADER_ROOT=ROOT and ``env``. It must be a valid
+    Gradescope result."""
     from rtfgu.grading.autograder import build_zip
 
-    bundle = build_zip(get_assignment("a05"), tmp_path / "autograder.zip")
+    bundle = build_zip(get_assignment(assignment), private / ("autograder-%s.zip" % root.name))
     with zipfile.ZipFile(bundle) as z:
-        names = z.namelist()
-        assert "setup.sh" in names and "run_autograder" in names
-        root = tmp_path / "autograder"
+        assert {"setup.sh", "run_autograder"} <= set(z.namelist())
         z.extractall(root / "source")
-    shutil.copytree(solved["a05_shadows_phong_mirror_refraction"][0], root / "submission")
-    env = dict(os.environ, AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable, AUTOGRADER_TIME_LIMIT="5")
-    subprocess.run(["bash", str(root / "source" / "run_autograder")], env=env, check=True, timeout=120,
+    shutil.copytree(submission, root / "submission")
+    env = dict(os.environ, AUTOGRADER_ROOT=str(root), AUTOGRADER_PYTHON=sys.executable, AUTOGRADER_TIME_LIMIT="5",
+               **env)
+    subprocess.run(["bash", str(root / "source" / "run_autograder")], env=env, check=True, timeout=300,
                    capture_output=True)
     data = json.loads((root / "results" / "results.json").read_text())
     validate_gradescope(data)
+    return data
+
+
+def test_the_gradescope_bundle_runs_on_a_submission_in_a_grader_like_layout(solved, tmp_path):
+    data = _run_gradescope_bundle("a05", solved["a05_shadows_phong_mirror_refraction"][0], tmp_path / "autograder",
+                                  tmp_path)
     assert data["score"] == 16
+
+
+# Run at the import of shapes/sphere.py, in every test's interpreter, by a submission whose
+# plane and triangle are solved and whose sphere is the stub (its honest part).
+BUNDLE_ATTACKS = {
+    "links": """
+import os
+for _name in set(os.listdir(".")) | {"output.txt", "stdout.txt", "stderr.txt"}:
+    for _act in (os.unlink, lambda name: os.symlink(%(solved)r, name)):
+        try:
+            _act(_name)
+        except OSError:
+            pass
+print("the output was replaced by links to the solved sphere")
+""",
+    "reads": """
+for _path in (%(solved)r, %(references)r):
+    try:
+        _text = open(_path).read()
+    except OSError as _error:
+        print("reading %%s: %%s" %% (_path, type(_error).__name__))
+    else:
+        raise RuntimeError("LEAKED " + _text[:4000])
+""",
+}
+
+
+def _strings(value) -> str:
+    """Every string in a JSON value, one per line (results.json as a reader sees it)."""
+    if isinstance(value, dict):
+        return "\n".join(_strings(v) for v in value.values())
+    if isinstance(value, list):
+        return "\n".join(_strings(v) for v in value)
+    return value if isinstance(value, str) else ""
+
+
+def test_the_gradescope_bundle_as_root_without_bwrap_scores_the_honest_part_and_shows_no_solution(tmp_path):
+    """Gradescope's case: run_autograder as root in a container where bubblewrap cannot make its
+    namespaces, nor root its own (RTFGU_BWRAP=none, RTFGU_FALLBACK_NAMESPACES=0), the bundle's
+    solved source world-readable in ROOT/source. A submission that replaces its output by links
+    to the solved sphere, and one that reads the solved sphere and the references, score what
+    the honest part scores, test by test, and results.json holds none of what they are after."""
+    import tempfile
+
+    if os.geteuid() != 0:
+        pytest.skip("Gradescope runs the bundle as root; the grader's fallback (a sandbox user per grading) needs root")
+    stub = student_files("a03")["shapes/sphere.py"]
+    solved_only = [line.strip() for line in solution_files("a03")["shapes/sphere.py"].splitlines()
+                   if len(line.strip()) > 12 and line not in stub.splitlines()]
+    assert len(solved_only) >= 5
+    shared = Path(tempfile.mkdtemp(prefix="rtfgu-gradescope-"))
+    os.chmod(shared, 0o755)                       # /autograder: root's, open to every user
+    try:
+        results = {}
+        for name in ("honest",) + tuple(BUNDLE_ATTACKS):
+            root = shared / name
+            paths = {"solved": str(root / "source" / "rtfgu" / "shapes" / "sphere.py"),
+                     "references": str(root / "source" / "rtfgu" / "grading" / "reference" / "a03_intersections"
+                                       / "observations.json")}
+            files = dict(solution_files("a03"))
+            files["shapes/sphere.py"] = stub + (BUNDLE_ATTACKS[name] % paths if name in BUNDLE_ATTACKS else "")
+            write_files(files, tmp_path / name)
+            results[name] = _run_gradescope_bundle("a03", tmp_path / name, root, tmp_path, RTFGU_BWRAP="none",
+                                                   RTFGU_FALLBACK_NAMESPACES="0", RTFGU_ISOLATION="")
+            assert os.stat(paths["solved"]).st_mode & 0o004        # readable to any user once grading is over
+            needle = Path(paths["references"]).read_text()[40:120]
+            text = _strings(results[name])
+            assert results[name]["extra_data"]["isolation"] == "unprivileged user"
+            assert "LEAKED" not in text and needle not in text
+            assert [line for line in solved_only if line in text] == []
+    finally:
+        shutil.rmtree(shared)
+    scores = {name: [(t["name"], t["score"]) for t in data["tests"]] for name, data in results.items()}
+    assert 0 < results["honest"]["score"] < sum(t["max_score"] for t in results["honest"]["tests"])
+    assert scores["links"] == scores["honest"] and scores["reads"] == scores["honest"]
+    assert "replaced by links" in _strings(results["links"])
+    assert _strings(results["reads"]).count("PermissionError") >= 2      # it tried, and was refused
 
 
 def test_the_image_tolerance_forgives_a_one_pixel_silhouette_shift_but_not_a_colour_change():
