@@ -168,3 +168,7 @@ def test_the_map_judge_names_a_map_that_is_not_suffern_s():
     assert fraction == 0.0 and "not where Suffern's map puts them" in lines[0]
     fraction, lines = judges.judge_map_contract(MAP, {"first": right, "second": swapped}, reference)
     assert fraction == 0.0 and "another direction the second time" in lines[0]
+    # a map that is a function of its arguments but not a direction: wrong, not "changed"
+    nan = [{"in": p, "out": [math.nan, 0.0, 1.0]} for p in points]
+    fraction, lines = judges.judge_map_contract(MAP, {"first": nan, "second": nan}, reference)
+    assert fraction == 0.0 and "not where Suffern's map puts them" in lines[0]

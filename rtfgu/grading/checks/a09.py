@@ -319,7 +319,7 @@ def judge_map_contract(check, got, reference):
         label = "hemisphere_map(%.17g, %.17g, %s)" % (x, y, fmt(float(e)))
         if "error" in a or "error" in b:
             raised.append("- %s: your code raised %s" % (label, a.get("error") or b.get("error")))
-        elif a["out"] != b["out"]:
+        elif not close(b["out"], a["out"], 0.0, 0.0):      # exactly the same (a NaN the same as a NaN)
             changed.append("- %s gave %s, and %s when called again" % (label, fmt(a["out"]), fmt(b["out"])))
         elif not close(a["out"], want, 0.0, MAP_ATOL):
             wrong.append("- %s is %s; Suffern's map gives %s" % (label, fmt(a["out"]), fmt(want)))
