@@ -68,9 +68,6 @@ class Light:
     def flat_limit(self):
         """None if the numba and WGSL paths take this light as the lecture layer does; else
         why not."""
-        if self.sampler is not None:
-            return ("numba and WGSL draw points of lights from the random stream; a light with a sampler of "
-                    "its own renders with backend='reference'")
         return None
 
     def casts_shadows(self) -> bool:
