@@ -346,6 +346,9 @@ SHADER_CASES = {
     # test_dielectric_under_whitted_is_fresnel_weighted); numba and WGSL refuse it outside
     # PathTrace (FLAT_REFUSED).
     "dielectric": (glowing_dielectric, lambda: EMISSION, (mirrored, refracted)),
+    # Suffern's Reflective with a Phong part: Phong, then the mirror ray (weighted by kr cr)
+    "reflective": (lambda: Reflective(kr=0.5, ka=AMBIENT_FRACTION, kd=DIFFUSE_FRACTION, ks=1.0, cs=SPECULAR,
+                                      exp=SHININESS, emission=EMISSION), phong_color, (mirrored,)),
     # the ray-cast tracers shade it as phong
     "glossy_reflector": (lambda: GlossyReflector(cs=SPECULAR, exp=SHININESS, emission=EMISSION), phong_color, ()),
 }

@@ -264,10 +264,15 @@ def test_memory_printing_and_wrong_types_cost_only_their_tests(tmp_path):
 
 def test_a_submission_cannot_change_the_reference_files(tmp_path, monkeypatch):
     # With rlimits only (no sandbox) student code can reach the checkout: the grader notices
-    # the change, restores the file and scores the submission 0.
-    from rtfgu.grading import sandbox
+    # the change, restores the file and scores the submission 0. The references graded
+    # against are a copy: the checkout's stay untouched for the tests beside this one (a
+    # test in another worker that checks `git status` would see the file changed).
+    from rtfgu.grading import grader, sandbox
 
-    target = REFERENCE_DIR / "a03_intersections" / "observations.json"
+    copy = tmp_path / "reference"
+    shutil.copytree(REFERENCE_DIR / "a03_intersections", copy / "a03_intersections")
+    monkeypatch.setattr(grader, "REFERENCE_DIR", copy)
+    target = copy / "a03_intersections" / "observations.json"
     before = target.read_bytes()
     child_env = sandbox._child_env
     monkeypatch.setattr(sandbox, "_child_env", lambda *a: dict(child_env(*a), RTFGU_ATTACK_PATH=str(target)))

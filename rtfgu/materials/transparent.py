@@ -22,18 +22,18 @@ from .reflective import Reflective, specular_scale
 
 
 class Transparent(Reflective):
+    # The book's setters of the transmitter; kt and ior are the flat layout's fields.
+    set_kt = set_on("specular_btdf", "set_kt", number, "kt")
+    set_ior = set_on("specular_btdf", "set_ior", positive, "ior")
+    kt = read_from("specular_btdf", "kt", "kt, the weight of the transmitted ray")
+    ior = read_from("specular_btdf", "ior", "the index of refraction inside the surface")
+
     def __init__(self, ior: float = 1.0, kt: float = 1.0, kr: float = 0.0, ka: float = 0.0, kd: float = 0.0,
                  cd=None, ks: float = 0.0, cs=(1.0, 1.0, 1.0), exp: float = 1.0, emission=None):
         super().__init__(kr, (1.0, 1.0, 1.0), ka, kd, cd, ks, cs, exp, emission)
         self.specular_btdf = PerfectTransmitter()
         self.set_kt(kt)
         self.set_ior(ior)
-
-    set_kt = set_on("specular_btdf", "set_kt", number, "kt")
-    set_ior = set_on("specular_btdf", "set_ior", positive, "ior")
-    ior = read_from("specular_btdf", "ior", "the index of refraction inside the surface")
-
-    kt = read_from("specular_btdf", "kt", "kt, the weight of the transmitted ray (the flat layout's ``kt``)")
 
     @property
     def is_02562(self) -> bool:
