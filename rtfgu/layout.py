@@ -80,7 +80,7 @@ def pack_fields(fields) -> tuple:
 # ambient: ka times the scene's ambient radiance (rtfgu/materials/matte.py).
 MATERIAL_FIELDS = (("color", 3), ("kd", 1), ("specular", 3), ("shininess", 1), ("emission", 3), ("ior", 1),
                    ("texture", 1), ("texture_row", 1), ("absorption", 3), ("ambient", 3), ("reflection", 3),
-                   ("kt", 1))
+                   ("kt", 1), ("diffuse_sampler", 3), ("specular_sampler", 3))
 CAMERA_FIELDS = {
     "OrthographicCamera": (("left", 1), ("right", 1), ("bottom", 1), ("top", 1), ("hither", 1),
                            ("yon", 1), ("tmin", 1)),
@@ -140,6 +140,8 @@ MAT_KD = offset("Material", "kd")
 MAT_AMBIENT = offset("Material", "ambient")
 MAT_REFLECTION = offset("Material", "reflection")
 MAT_KT = offset("Material", "kt")
+MAT_DIFFUSE_SAMPLER = offset("Material", "diffuse_sampler")
+MAT_SPECULAR_SAMPLER = offset("Material", "specular_sampler")
 # ImageTexture.filter and .address as numbers in the layout.
 TEXTURE_FILTERS = {"nearest": 0, "bilinear": 1}
 TEXTURE_ADDRESSES = {"repeat": 0, "clamp": 1}
@@ -230,10 +232,12 @@ class FlatScene:
     # Whether the ray-cast loop draws points of area lights (AreaLighting) instead of
     # worksheet 5's point at their centre.
     area_lighting: bool = False
-    # The sets of the lights' own samplers (set_sampler), one after another: points (n, 2) and
-    # each set's order (n,) int32; None where no light has a sampler (rtfgu.registry.LightKind).
-    light_samples: np.ndarray = None
-    light_shuffled: np.ndarray = None
+    # The sets of the samplers lights and BRDFs have of their own (set_sampler), one after
+    # another: points (n, 2) and each set's order (n,) int32; None where none has one. A
+    # light's row (rtfgu.registry.LightKind) and a material's row (diffuse_sampler,
+    # specular_sampler) say where its sampler's sets start.
+    own_samples: np.ndarray = None
+    own_shuffled: np.ndarray = None
     # The EnvironmentLight's image (height, width, 3), or None: rays that leave the scene
     # see ``background`` then.
     environment: np.ndarray = None
@@ -263,6 +267,33 @@ def pack_row(record: str, obj) -> list:
         value = getattr(obj, name)
         row[column:column + components] = _vec(value) if components == 3 else [float(value)]
     return row
+
+
+class _OwnSamplers:
+    """The sets of the samplers that lights and BRDFs have of their own (set_sampler), one
+    after another, each sampler once: what FlatScene.own_samples and own_shuffled hold.
+    ``drawn``: whether the scene's tracer draws points at all (PathTrace, GlobalTrace,
+    AreaLighting); under the others a sampler is never asked and is not laid out."""
+
+    def __init__(self, drawn: bool):
+        self.samples, self.shuffled, self.first, self.drawn = [], [], {}, drawn
+
+    def place(self, sampler) -> Float3:
+        """The row field of an object with ``sampler``: (its first sample, num_samples,
+        num_sets); (0, 0, 0) for None, which draws from the random stream."""
+        if sampler is None or not self.drawn:
+            return Float3(0.0)
+        if id(sampler) not in self.first:
+            self.first[id(sampler)] = len(self.samples)
+            self.samples.extend(sampler.samples)
+            self.shuffled.extend(sampler.shuffled_indices)
+        return Float3(float(self.first[id(sampler)]), float(sampler.num_samples), float(sampler.num_sets))
+
+
+def _sampler_of(material, part: str):
+    """The sampler of the material's BRDF ``part`` (PathTrace draws its directions), or None."""
+    brdf = getattr(material, part, None)
+    return getattr(brdf, "sampler", None)
 
 
 def compile_tracer(scene) -> tuple:
@@ -324,6 +355,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     rows = {kind.name: ([], []) for kind in SHAPES}
     mesh_faces = []
     materials, shaders = [], []
+    own = _OwnSamplers(tracer_feature in ("path_trace", "area_lighting"))
     texture_rows = {kind.name: [] for kind in TEXTURES}
     texels = []
     placed = {}  # id(texture) -> (kind id, row): a texture shared by shapes is laid out once
@@ -364,14 +396,15 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         materials.append(pack_row("Material", SimpleNamespace(
             color=m.cd if isinstance(m.cd, Float3) else shape.color, kd=m.kd, specular=m.specular,
             shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
-            absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt)))
+            absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt,
+            diffuse_sampler=own.place(_sampler_of(m, "diffuse_brdf")),
+            specular_sampler=own.place(_sampler_of(m, "specular_brdf")))))
         shaders.append(m.shader)
         features.add(SHADER_BY_ID[m.shader].name)
         if SHADER_BY_ID[m.shader].splits and max(m.reflection.x, m.reflection.y, m.reflection.z) > 0.0:
             features.add("two_rays")   # the ray-cast loops keep a stack of rays
 
     lights = {kind.name: [] for kind in LIGHTS}
-    light_samples, light_shuffled, light_sets = [], [], {}   # id(sampler) -> its first sample
     for j, light in enumerate(scene.lights):
         _, kind = light_kind_of(light)
         if kind is None:
@@ -381,23 +414,14 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         if limit is not None:
             raise ValueError("Scene.lights[%d] (%r): %s" % (j, light, limit))
         if kind.area:
-            # The light's sampler's sets go into the scene's light sample arrays (once per
-            # sampler); its row says where they start, how many a set has, how many sets.
-            sampler, first = light.sampler, 0
-            if sampler is not None:
-                if id(sampler) not in light_sets:
-                    light_sets[id(sampler)] = len(light_samples)
-                    light_samples.extend(sampler.samples)
-                    light_shuffled.extend(sampler.shuffled_indices)
-                first = light_sets[id(sampler)]
-                features.add("light_sampler")
             light = SimpleNamespace(**{name: getattr(light, name) for name, _ in kind.fields if name != "light_sampler"},
-                                    light_sampler=Float3(float(first), float(sampler.num_samples if sampler else 0),
-                                                         float(sampler.num_sets if sampler else 0)))
+                                    light_sampler=own.place(light.sampler))
         lights[kind.name].append(pack_row(kind.record, light))
         features.add(kind.name)
     if scene.lights:
         features.add("lights")
+    if own.samples:
+        features.add("own_sampler")
     if shadows:
         features.add("shadows")
     if scene.show_ray_direction:
@@ -439,8 +463,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         materials=table(materials, "Material"),
         shaders=np.array(shaders, dtype=np.int32),
         lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
-        light_samples=np.array(light_samples, dtype=dtype).reshape(-1, 2) if light_samples else None,
-        light_shuffled=np.array(light_shuffled, dtype=np.int32) if light_samples else None,
+        own_samples=np.array(own.samples, dtype=dtype).reshape(-1, 2) if own.samples else None,
+        own_shuffled=np.array(own.shuffled, dtype=np.int32) if own.samples else None,
         background=np.array(_vec(scene.background) + [0.0], dtype=dtype),
         shadows=shadows,
         show_ray_direction=bool(scene.show_ray_direction),

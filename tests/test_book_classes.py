@@ -373,6 +373,18 @@ def test_a_sampler_on_an_ambient_occluder_changes_the_draws_not_the_mean():
         assert abs(np.mean(values) - 0.5) <= 5 * np.std(values, ddof=1) / 16 + 1e-12
 
 
+def assert_drawn_alike(scene):
+    """``scene(True)`` (its own samplers set) on numba float64 equals the lecture layer bit
+    for bit and WGSL within 1/255, and differs from ``scene(False)`` (the random stream)."""
+    reference = rtfgu.render(scene(True), 16, 16)
+    numba64 = rtfgu.render(scene(True), 16, 16, backend="numba")
+    assert np.array_equal(reference, numba64), float(np.max(np.abs(reference - numba64)))
+    assert not np.array_equal(numba64, rtfgu.render(scene(False), 16, 16, backend="numba"))
+    wgsl = rtfgu.render(scene(True), 16, 16, backend="wgpu")
+    close = np.abs(to_8bit(wgsl).astype(int) - to_8bit(reference).astype(int)) <= 1
+    assert close.mean() >= 0.999
+
+
 @pytest.mark.parametrize("tracer", ["area_lighting", "path_trace"])
 def test_a_lights_own_sampler_draws_alike_on_every_path(wgpu_device, tracer):
     """set_sampler on an AreaLight (under AreaLighting and PathTrace) and on an
@@ -389,13 +401,25 @@ def test_a_lights_own_sampler_draws_alike_on_every_path(wgpu_device, tracer):
         s.sampler = rtfgu.Jittered(4)
         return s
 
-    reference = rtfgu.render(scene(True), 16, 16)
-    numba64 = rtfgu.render(scene(True), 16, 16, backend="numba")
-    assert np.array_equal(reference, numba64), float(np.max(np.abs(reference - numba64)))
-    assert not np.array_equal(numba64, rtfgu.render(scene(False), 16, 16, backend="numba"))
-    wgsl = rtfgu.render(scene(True), 16, 16, backend="wgpu")
-    close = np.abs(to_8bit(wgsl).astype(int) - to_8bit(reference).astype(int)) <= 1
-    assert close.mean() >= 0.999
+    assert_drawn_alike(scene)
+
+
+def test_a_brdfs_own_sampler_draws_alike_on_every_path(wgpu_device):
+    """set_sampler on the BRDFs PathTrace draws directions from (a Matte's Lambertian, a
+    GlossyReflector's Lambertian and GlossySpecular): numba float64 takes the same points
+    as the lecture layer, bit for bit, WGSL within 1/255; and they are the sampler's."""
+    def scene(with_sampler):
+        s, _ = lamp_scene(PathTrace(max_depth=3))
+        gloss = GlossyReflector(ka=0.0, kd=0.5, ks=0.4, cs=(1.0, 1.0, 1.0), exp=20.0)
+        s.shapes.append(Sphere(Float3(0.1, 0.35, 0.0), 0.25, Float3(0.6, 0.5, 0.4), gloss))
+        if with_sampler:
+            s.shapes[0].material.diffuse_brdf.set_sampler(MultiJittered(4, num_sets=3, seed=1))
+            gloss.diffuse_brdf.set_sampler(MultiJittered(4, num_sets=5, seed=2))
+            gloss.specular_brdf.set_sampler(rtfgu.Hammersley(4, num_sets=2))
+        s.sampler = rtfgu.Jittered(4)
+        return s
+
+    assert_drawn_alike(scene)
 
 
 def test_directional_points_toward_the_light_as_the_books_does():

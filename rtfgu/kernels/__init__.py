@@ -61,10 +61,11 @@ def _coprime_stride(n: int) -> int:
     return stride
 
 
-def light_sets(flat):
-    """The last two entries of the kernels' ``lights``: the sets of the lights' own samplers,
-    samples and orders, both None where no light has one (rtfgu.kernels.sampling.light_point)."""
-    return flat.light_samples, flat.light_shuffled
+def own_sets(flat):
+    """The last two entries of the kernels' ``lights``: the sets of the samplers lights and
+    BRDFs have of their own, samples and orders, both None where none has one
+    (rtfgu.kernels.sampling.sampler_point)."""
+    return flat.own_samples, flat.own_shuffled
 
 
 def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, seed: int = 0,
@@ -75,7 +76,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     range of sample indices to add."""
     formula_id = sphere_formula_id(formula)
     shapes = shape_arrays(flat)
-    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS) + light_sets(flat)
+    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS) + own_sets(flat)
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     camera64 = camera.astype(np.float64)
     eye = None

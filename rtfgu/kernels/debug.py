@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ..kernels import light_sets, sphere_formula_id
+from ..kernels import own_sets, sphere_formula_id
 from ..layout import CAMERA_WIDTH
 from ..registry import LIGHTS
 from ..tracers.whitted import MAX_DEPTH
@@ -62,7 +62,7 @@ def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:
     (ix, iy, width, height), iy from the bottom, or of every row of ``rays`` ((n, 8):
     origin, direction, tmin, tmax)."""
     shapes = shape_arrays(flat, empty=True)
-    lights = tuple(flat.lights[kind.name] for kind in LIGHTS) + light_sets(flat)
+    lights = tuple(flat.lights[kind.name] for kind in LIGHTS) + own_sets(flat)
     camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, sphere_formula_id(formula))

@@ -10,7 +10,8 @@ that numba's cache (keyed on a source file) keeps them between runs.
 The scene reaches the kernels as flat tuples in registry order (numba's parallel loop
 takes a tuple of arrays, not a tuple of tuples): ``shapes`` holds table, index per shape
 kind, ``lights`` a table per light kind, each None for a kind the scene lacks, and last the
-sets of the lights' own samplers, samples and orders, both None where no light has a sampler. A kind's
+sets of the samplers lights and BRDFs have of their own, samples and orders, both None where
+none has one (rtfgu.kernels.sampling.sampler_point). A kind's
 entries go to a function of its own as arguments, and numba compiles that function with
 the ``is None`` branch taken or removed, so a scene pays only for the kinds it has. ``hit`` is (t, scene index, kind, row); of two hits at the same t the one earlier
 in Scene.shapes wins, whichever kind is visited first.
@@ -229,12 +230,12 @@ def _by_kind(name, row_function, what, default, mesh_slots) -> str:
 
 def _draw(light, pad: str, pixel: str, sample: str, first: str, seed: str) -> list:
     """The lines that ask light ``j`` of ``table`` for (L_i, w_i, dist) at ``position``: an
-    area kind through a point (u, v) of its sampler or of the stream (light_point), as
+    area kind through a point (u, v) of its sampler or of the stream (sampler_point), as
     AreaLight.get_direction then incident do (L G / pdf); another kind has one answer."""
     if not light.area:
         return [pad + "L_i, w_i, dist = sample_%s(table, j, position)" % light.name]
     column = layout.offset(light.record, "light_sampler")
-    return [pad + "u, v = light_point(sets, table, j, %d, %s, %s, %s + LIGHT_U + 2 * j, %s, zero)"
+    return [pad + "u, v = sampler_point(sets, table, j, %d, %s, %s, %s + LIGHT_U + 2 * j, %s, zero)"
             % (column, pixel, sample, first, seed),
             pad + "L_i, w_i, dist = sample_%s_area(table, j, position, normal, u, v)" % light.name]
 
@@ -243,7 +244,7 @@ def _direct(light) -> str:
     """The light loop (02562 "Sampling light in the shader"), written once per light kind.
     ``stream`` is (the bounce's first dimension, pixel, sample, seed, sampled): under
     AreaLighting (sampled) an area light is asked for a point of it (_draw), else as
-    worksheet 5's point at its centre. ``sets``: the lights' sampler sets (light_point)."""
+    worksheet 5's point at its centre. ``sets``: the own samplers' sets (sampler_point)."""
     draw = _draw(light, "        ", "stream[1]", "stream[2]", "stream[0]", "stream[3]")
     if light.area:
         draw = (["        if stream[4]:"] + ["    " + line for line in draw]
@@ -336,7 +337,7 @@ def source() -> str:
              "from rtfgu.kernels.float3 import div",
              "from rtfgu.kernels.lights import %s" % ", ".join(
                  ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
-             "from rtfgu.kernels.sampling import light_point, sampler_sets",
+             "from rtfgu.kernels.sampling import sampler_point, sampler_sets",
              "from rtfgu.kernels.glossy import glossy_lobe",
              "from rtfgu.sampling.random import LIGHT_U",
              "from rtfgu.kernels.shaders import ends, surface, %s" % ", ".join(sorted(shader_names)),

@@ -11,16 +11,22 @@ import math
 
 from numba import njit
 
-from ..layout import MAT_ABSORPTION, MAT_EMISSION, MAT_IOR, MAT_KD, MAT_SHININESS, MAT_SPECULAR
+from ..layout import (MAT_ABSORPTION, MAT_DIFFUSE_SAMPLER, MAT_EMISSION, MAT_IOR, MAT_KD, MAT_SHININESS, MAT_SPECULAR,
+                      MAT_SPECULAR_SAMPLER)
 from ..materials.material import BASE_COLOR, DIELECTRIC, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, TRANSPARENT
-from ..sampling.random import BOUNCE_U, BOUNCE_V, CHOICE, ROULETTE, VERTEX_DIMENSIONS
+from ..registry import LIGHTS
+from ..sampling.random import BOUNCE_U, CHOICE, ROULETTE, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
 from .environment import ENVIRONMENT, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, div, dot, lit, load3, mul, neg, scale
 from .glossy import about, lobe_direction
-from .sampling import hemisphere_map, random_float
+from .sampling import hemisphere_map, random_float, sampler_point, sampler_sets
 from .shaders import mirror, transparent
+
+# Where ``lights`` holds the own samplers' sets (rtfgu.kernels.own_sets): after a table per light kind.
+OWN_SAMPLES = len(LIGHTS)
+OWN_SHUFFLED = len(LIGHTS) + 1
 
 
 @njit(cache=True, error_model="numpy")
@@ -118,8 +124,10 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             if q_d + q_s > one:
                 q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
             xi = random_float(pixel, sample, first + ROULETTE, seed, zero)
-            u = random_float(pixel, sample, first + BOUNCE_U, seed, zero)
-            v = random_float(pixel, sample, first + BOUNCE_V, seed, zero)
+            # the chosen BRDF's own sampler's point, or the stream's (BRDF.sample_point)
+            u, v = sampler_point(sampler_sets(lights[OWN_SAMPLES], lights[OWN_SHUFFLED]), materials, idx,
+                                 MAT_DIFFUSE_SAMPLER if xi < q_d else MAT_SPECULAR_SAMPLER, pixel, sample,
+                                 first + BOUNCE_U, seed, zero)
             if xi < q_d:
                 # rtfgu.brdfs.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
                 f = div(rho, lit(math.pi, zero))

@@ -60,9 +60,10 @@ def stream_point(pixel, index, dimension, seed, like):
 
 
 def sampler_sets(samples, shuffled):
-    """(samples, shuffled), or None where ``samples`` is None: the lights' sampler sets as
-    light_point takes them, from the two arrays the kernels receive them as (numba's
-    parallel loop takes no tuple inside a tuple; typed by the overload below)."""
+    """(samples, shuffled), or None where ``samples`` is None: the sets of the samplers lights
+    and BRDFs have of their own, as sampler_point takes them, from the two arrays the
+    kernels receive them as (numba's parallel loop takes no tuple inside a tuple; typed by
+    the overload below)."""
     return as_python(_typed_sampler_sets, samples, shuffled)
 
 
@@ -73,17 +74,18 @@ def _typed_sampler_sets(samples, shuffled):
     return lambda samples, shuffled: (samples, shuffled)
 
 
-def light_point(sets, table, j, column, pixel, index, dimension, seed, like):
-    """The point (u, v) light ``j`` of ``table`` draws from (Scene.light_sample): its
-    sampler's, where its row's ``light_sampler`` (at ``column``: first sample, num_samples,
-    num_sets) has num_samples > 0, from ``sets`` = (the scene's light samples, their
-    orders); else the random stream's (stream_point). ``sets`` is None in a scene where no
-    light has a sampler, and that code compiles to nothing (typed by the overload below)."""
-    return as_python(_typed_light_point, sets, table, j, column, pixel, index, dimension, seed, like)
+def sampler_point(sets, table, j, column, pixel, index, dimension, seed, like):
+    """The point (u, v) row ``j`` of ``table`` (a light, or a material's BRDF) draws from
+    (Scene.light_sample, BRDF.sample_point): its own sampler's, where the row's field at
+    ``column`` (first sample, num_samples, num_sets) has num_samples > 0, from ``sets`` =
+    (the scene's own samples, their orders); else the random stream's (stream_point).
+    ``sets`` is None in a scene where nothing has a sampler of its own, and that code
+    compiles to nothing (typed by the overload below)."""
+    return as_python(_typed_sampler_point, sets, table, j, column, pixel, index, dimension, seed, like)
 
 
-@overload(light_point, inline="always")
-def _typed_light_point(sets, table, j, column, pixel, index, dimension, seed, like):
+@overload(sampler_point, inline="always")
+def _typed_sampler_point(sets, table, j, column, pixel, index, dimension, seed, like):
     if isinstance(sets, types.NoneType):
         return lambda sets, table, j, column, pixel, index, dimension, seed, like: stream_point(
             pixel, index, dimension, seed, like)

@@ -153,16 +153,10 @@ class Material:
 
     def flat_limit(self, tracer):
         """None if the numba and WGSL paths render this material under ``tracer`` as the
-        lecture layer does; else why not (the flat layout raises it, naming the shape)."""
-        for brdf in self.brdfs():
-            if brdf.sampler is not None:
-                return ("numba and WGSL draw every direction from the random stream; a %s with a sampler "
-                        "of its own renders with backend='reference'" % type(brdf).__name__)
+        lecture layer does; else why not (the flat layout raises it, naming the shape). The
+        samplers of its diffuse_brdf and specular_brdf, the BRDFs PathTrace draws directions
+        from, travel in the Material row (rtfgu.layout.MATERIAL_FIELDS)."""
         return None
-
-    def brdfs(self) -> tuple:
-        """The BRDFs the material is built from."""
-        return tuple(v for v in vars(self).values() if hasattr(v, "sample_f") and hasattr(v, "sampler"))
 
     def __repr__(self) -> str:
         return "%s(cd=%r)" % (type(self).__name__, self.cd)

@@ -174,7 +174,7 @@ def each_kinds(flat, features, formula):
 
 
 # The arrays bound as storage buffers whatever their size.
-STORAGE_ONLY = ("samples", "shuffled", "light_samples", "light_shuffled", "texels", "environment")
+STORAGE_ONLY = ("samples", "shuffled", "own_samples", "own_shuffled", "texels", "environment")
 # The largest uniform buffer binding WebGPU guarantees (maxUniformBufferBindingSize).
 MAX_UNIFORM_BYTES = 65536
 SCENE_BUFFER_KINDS = ("uniform", "storage")
@@ -205,7 +205,7 @@ def binding_data(flat, name: str) -> np.ndarray:
         return getattr(flat, name)
     if name in ("samples", "shuffled"):
         return getattr(flat.sampler, name)
-    if name in ("light_samples", "light_shuffled"):
+    if name in ("own_samples", "own_shuffled"):
         return getattr(flat, name)
     if name == "texels":
         return flat.texels
@@ -395,11 +395,10 @@ def _bindings(flat, features, scene_buffer: str) -> list:
                 if len(table):
                     wanted.append((kind.table, "array<%s, NUM_%s>" % (kind.record, kind.table.upper()),
                                    table, False))
-            if "light_sampler" in features:
-                wanted.append(("light_samples", "array<vec2f, %d>" % len(flat.light_samples),
-                               flat.light_samples, False))
-                wanted.append(("light_shuffled", "array<i32, %d>" % len(_packed_index(flat.light_shuffled)),
-                               flat.light_shuffled, True))
+        if "own_sampler" in features:
+            wanted.append(("own_samples", "array<vec2f, %d>" % len(flat.own_samples), flat.own_samples, False))
+            wanted.append(("own_shuffled", "array<i32, %d>" % len(_packed_index(flat.own_shuffled)),
+                           flat.own_shuffled, True))
     result = []
     for number, (name, wgsl_type, data, is_index) in enumerate(wanted, start=1):
         size = len(_packed_index(data)) * 4 if is_index else max(data.size, 4) * 4

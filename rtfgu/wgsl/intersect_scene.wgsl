@@ -43,9 +43,10 @@ fn next_up(x: f32) -> f32
     return bitcast<f32>(bitcast<u32>(x) + 1u);
 }
 
-// #if debug|dielectric
+// #if debug|dielectric|own_sampler
 // The place in Scene.shapes of the shape the last intersect_scene hit, -1 for none: for the
-// pixel debugger (debug_main.wgsl) and a path through a dielectric (its absorption).
+// pixel debugger (debug_main.wgsl), a path through a dielectric (its absorption) and a BRDF
+// with a sampler of its own (its material's row).
 var<private> hit_shape: i32;
 // #endif
 
@@ -78,7 +79,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     // (intersect_mesh.wgsl), with the same tie rule.
     mesh_closest(r, hit, &shape, &kind, &row);
     // #endif
-    // #if debug|dielectric
+    // #if debug|dielectric|own_sampler
     hit_shape = shape;
     // #endif
     // #if shapes

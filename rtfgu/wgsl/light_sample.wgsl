@@ -4,17 +4,18 @@
 const VERTEX_DIMENSIONS = 65536u;
 const LIGHT_U = 8u;
 
-// The point (u, v) of the unit square from which light i of a kind draws (Scene.light_sample):
-// its own sampler's (set_sampler; `sets` is its row's light_sampler: first sample, num_samples,
-// num_sets), else the random stream's dimensions LIGHT_U + 2 i and the next.
-fn light_point(pixel: u32, s: u32, first: u32, i: u32, sets: vec3f) -> vec2f
+// The point (u, v) of the unit square from which a light or a BRDF draws (Scene.light_sample,
+// BRDF.sample_point): its own sampler's (set_sampler; `sets` is its row's light_sampler, or
+// the material's diffuse_sampler or specular_sampler: first sample, num_samples, num_sets),
+// else the random stream's `dimension` and the next. Light i of a kind draws in dimensions
+// LIGHT_U + 2 i and the next of its vertex.
+fn sampler_point(pixel: u32, s: u32, dimension: u32, sets: vec3f) -> vec2f
 {
-    let dimension = first + LIGHT_U + 2u * i;
-    // #if light_sampler
+    // #if own_sampler
     let n = u32(sets.y);
     if (n > 0u) {
         let jump = u32(sets.x) + (random_u32(pixel, s / n, dimension, uniforms.seed) % u32(sets.z)) * n;
-        return light_samples[jump + u32(light_shuffled[jump + s % n])];
+        return own_samples[jump + u32(own_shuffled[jump + s % n])];
     }
     // #endif
     return vec2f(random_float(pixel, s, dimension, uniforms.seed), random_float(pixel, s, dimension + 1u, uniforms.seed));

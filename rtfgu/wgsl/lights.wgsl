@@ -41,7 +41,7 @@ fn sample_area_light(pos: vec3f, i: u32) -> Light
 {
     // #if area_lighting
     // AreaLighting (rtfgu/tracers/area_lighting.py): a point of the light drawn from the stream.
-    let uv = light_point(stream.x, stream.y, stream.z, i, area_lights[i].light_sampler);
+    let uv = sampler_point(stream.x, stream.y, stream.z + LIGHT_U + 2u * i, area_lights[i].light_sampler);
     return sample_area_light_area(pos, i, uv.x, uv.y);
     // #else
     let light = area_lights[i];

@@ -6,7 +6,6 @@
 // The numbers of vertex `depth` are the stream's dimensions 2 + depth * 65536 + k
 // (rtfgu.sampling.random.path_dimension), as on the other paths.
 const BOUNCE_U = 0u;
-const BOUNCE_V = 1u;
 const ROULETTE = 2u;
 const CHOICE = 3u;
 
@@ -47,7 +46,7 @@ fn lobe_direction(w_r: vec3f, shininess: f32, u: f32, v: f32) -> vec3f
 // #if area_light
 fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
-    let uv = light_point(pixel, s, first, i, area_lights[i].light_sampler);
+    let uv = sampler_point(pixel, s, first + LIGHT_U + 2u * i, area_lights[i].light_sampler);
     return sample_area_light_area(pos, i, uv.x, uv.y);
 }
 // #endif
@@ -56,7 +55,7 @@ fn sample_path_area_light(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: 
 // normal, unbounded (rtfgu/lights/ambient_occluder.py).
 fn sample_path_ambient_occluder(pos: vec3f, normal: vec3f, i: u32, first: u32, pixel: u32, s: u32) -> Light
 {
-    let uv = light_point(pixel, s, first, i, ambient_occluders[i].light_sampler);
+    let uv = sampler_point(pixel, s, first + LIGHT_U + 2u * i, ambient_occluders[i].light_sampler);
     return Light(ambient_occluders[i].radiance * (2.0 * PI), about(normal, hemisphere_map(uv, 0.0)), FAR);
 }
 // #endif
@@ -147,8 +146,15 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
                 q_s = q_s / total;
             }
             let xi = random_float(pixel, s, first + ROULETTE, uniforms.seed);
-            let u = random_float(pixel, s, first + BOUNCE_U, uniforms.seed);
-            let v = random_float(pixel, s, first + BOUNCE_V, uniforms.seed);
+            // The chosen BRDF's own sampler's point, or the stream's (BRDF.sample_point).
+            // #if own_sampler
+            let m = materials[u32(hit_shape)];
+            let uv = sampler_point(pixel, s, first + BOUNCE_U, select(m.specular_sampler, m.diffuse_sampler, xi < q_d));
+            // #else
+            let uv = sampler_point(pixel, s, first + BOUNCE_U, vec3f(0.0));
+            // #endif
+            let u = uv.x;
+            let v = uv.y;
             var w_i: vec3f;
             if (xi < q_d) {
                 // rtfgu.brdfs.Lambertian.sample_f: f = rho / pi, pdf = cos(theta) / pi
