@@ -7,6 +7,7 @@ mirror, refraction) starts with a fresh ``tmax``.
 from __future__ import annotations
 
 import math
+from math import isfinite
 
 from .float3 import Float3
 
@@ -25,11 +26,13 @@ class Ray:
         self.direction = Float3(0, 0, 1) if direction is None else direction
         self.tmin = float(tmin)
         self.tmax = float(tmax)
-        if not self.origin.is_finite():
-            raise ValueError("Ray.origin must be finite, got %r" % (self.origin,))
-        if not self.direction.is_finite() or self.direction.length_squared() == 0.0:
-            raise ValueError("Ray.direction must be finite and non-zero, got %r" % (self.direction,))
-        if math.isnan(self.tmin) or math.isnan(self.tmax):
+        # Every ray of every path is checked, so the checks are written out (no method calls).
+        o, d = self.origin, self.direction
+        if not (isfinite(o.x) and isfinite(o.y) and isfinite(o.z)):
+            raise ValueError("Ray.origin must be finite, got %r" % (o,))
+        if not (isfinite(d.x) and isfinite(d.y) and isfinite(d.z)) or d.x * d.x + d.y * d.y + d.z * d.z == 0.0:
+            raise ValueError("Ray.direction must be finite and non-zero, got %r" % (d,))
+        if self.tmin != self.tmin or self.tmax != self.tmax:
             raise ValueError("Ray.tmin and Ray.tmax must not be NaN")
 
     def __call__(self, t: float) -> Float3:

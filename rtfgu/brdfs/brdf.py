@@ -51,6 +51,4 @@ class BRDF:
     @staticmethod
     def surface_color(cd, sr) -> Float3:
         """cd, or the surface's colour at the hit where cd is None or a texture."""
-        if cd is None or not isinstance(cd, Float3):
-            return sr.color
-        return cd
+        return cd if isinstance(cd, Float3) else sr.color

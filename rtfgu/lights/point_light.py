@@ -46,9 +46,8 @@ class PointLight(Light):
         return self.intensity / (self.position - sr.position).length_squared()
         ### END SOLUTION
 
-    def incident(self, sr) -> Float3:
-        """L (a point has G = pdf = 1)."""
-        return self.L(sr)
+    # L G / pdf is L: a point has G = pdf = 1.
+    incident = L
 
     def distance(self, sr) -> float:
         return math.sqrt((self.position - sr.position).length_squared())

@@ -132,10 +132,12 @@ class Material:
     def color_at(self, shape, position) -> Float3:
         """The surface's colour at ``position`` on ``shape``: the texture's there, cd, or the
         shape's colour."""
-        texture = self.texture
-        if texture is not None:
-            return texture.color_at(*shape.texcoord(position))
-        return shape.color if self.cd is None else self.cd
+        cd = self.cd
+        if isinstance(cd, Float3):
+            return cd
+        if cd is None:
+            return shape.color
+        return cd.color_at(*shape.texcoord(position))
 
     specular = Float3(0.0)
     shininess = 0.0

@@ -46,7 +46,7 @@ class Phong(Matte):
         return self.diffuse_brdf.f(sr, wo, wi) + self.specular_brdf.f(sr, wo, wi)
 
     def reflects_light(self) -> bool:
-        return self.kd > 0.0 or self.specular_brdf.ks > 0.0
+        return self.diffuse_brdf.kd > 0.0 or self.specular_brdf.ks > 0.0
 
     def flat_limit(self, tracer):
         if not self.specular_brdf.normalized:

@@ -45,9 +45,8 @@ class PointLight(Light):
         #   Kepler's inverse square law: return self.intensity / |p - x|^2 (x = sr.position).
         raise NotImplementedError('a04: PointLight.L')
 
-    def incident(self, sr) -> Float3:
-        """L (a point has G = pdf = 1)."""
-        return self.L(sr)
+    # L G / pdf is L: a point has G = pdf = 1.
+    incident = L
 
     def distance(self, sr) -> float:
         return math.sqrt((self.position - sr.position).length_squared())

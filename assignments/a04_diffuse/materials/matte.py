@@ -66,7 +66,7 @@ class Matte(Material):
 
     def reflects_light(self) -> bool:
         """Whether the light loop can add anything: a BRDF that is not 0."""
-        return self.kd > 0.0
+        return self.diffuse_brdf.kd > 0.0
 
     def direct_light(self, sr, wo, L: Float3) -> Float3:
         """The light loop, written once for every material that reflects light: to L add
