@@ -39,11 +39,6 @@ class HitInfo:
         return BASE_COLOR if self.material is None else self.material.shader
 
     @property
-    def wo(self) -> Float3:
-        """The direction toward where the ray came from, -ray.direction (the book's wo)."""
-        return -self.ray.direction
-
-    @property
     def emission(self) -> Float3:
         """L_e of the surface hit (its material's ``get_Le``)."""
         return Float3(0.0) if self.material is None else self.material.get_Le(self)

@@ -44,9 +44,12 @@ def render_reference(scene, width: int, height: int, progress=None, sampler=None
         sums = np.zeros((height, width, 3), dtype=np.float64)
     camera = scene.camera
     for iy in range(height):
+        # The row's sums as Python floats while it renders (a numpy element costs more to add
+        # to than a float, and float64 adds the same either way).
+        row = sums[height - 1 - iy].tolist()
         for ix in range(width):
             pixel = (height - 1 - iy) * width + ix      # the pixel's place, row 0 at the top
-            total = sums[height - 1 - iy, ix]
+            total = row[ix]
             for s in range(samples[0], samples[1]):
                 if sampler is None:
                     sp = (0.5, 0.5)
@@ -66,6 +69,7 @@ def render_reference(scene, width: int, height: int, progress=None, sampler=None
                 total[0] += color.x
                 total[1] += color.y
                 total[2] += color.z
+        sums[height - 1 - iy] = row
         if progress is not None:
             progress(iy + 1, height)
     return sums

@@ -52,8 +52,8 @@ class GlossySpecular(BRDF):
         w_r = sr.normal * (2.0 * cos_i) - wi
         cos_r = max(dot(wo, w_r), 0.0)
         if self.normalized:
-            return self.specular * ((self.exp + 2.0) / (2.0 * math.pi) * cos_r ** self.exp)
-        return self.specular * cos_r ** self.exp
+            return self.cs * self.ks * ((self.exp + 2.0) / (2.0 * math.pi) * cos_r ** self.exp)
+        return self.cs * self.ks * cos_r ** self.exp
         ### END SOLUTION
 
     def sample_f(self, sr, wo, u: float, v: float) -> tuple:

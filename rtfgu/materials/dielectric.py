@@ -78,7 +78,7 @@ class Dielectric(Phong):
         return L
 
     def shade(self, sr) -> Float3:
-        wo = sr.wo
+        wo = -sr.ray.direction
         L = Phong.shade(self, sr)
         tracer = sr.scene.tracer
         fr, wi, _ = self.fresnel_brdf.sample_f(sr, wo)

@@ -60,7 +60,7 @@ class Matte(Material):
     def shade(self, sr) -> Float3:
         """L_e + ka cd L_a + the light of every light (the 02562 diffuse shader); a
         surface that reflects no light (kd = 0, and no lobe) casts no shadow rays."""
-        wo = sr.wo
+        wo = -sr.ray.direction
         L = self.ambient(sr, wo)
         return self.direct_light(sr, wo, L) if self.reflects_light() else L
 
@@ -92,7 +92,7 @@ class Matte(Material):
         roulette with survival q = mean(kd cd), a diffuse bounce drawn by
         ``diffuse_brdf.sample_f``: the throughput is multiplied by f (n . w_i) / (pdf q)."""
         self.face_ray(sr)
-        wo = sr.wo
+        wo = -sr.ray.direction
         tracer = sr.scene.tracer
         L = self.direct_light(sr, wo, Float3(0.0)) if tracer.samples_lights_at(sr.depth) else None
         if sr.depth + 1 == tracer.max_depth:

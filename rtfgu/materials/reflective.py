@@ -57,7 +57,7 @@ class Reflective(Phong):
     def shade(self, sr) -> Float3:
         ### BEGIN SOLUTION
         L = super().shade(sr)
-        fr, wi, pdf = self.reflective_brdf.sample_f(sr, sr.wo)
+        fr, wi, pdf = self.reflective_brdf.sample_f(sr, -sr.ray.direction)
         reflected = Ray(sr.position, wi, SPAWN_EPSILON)
         L_r = sr.scene.tracer.trace_ray(reflected, sr.depth + 1)
         return L + fr * L_r * specular_scale(abs(dot(sr.normal, wi)), pdf)

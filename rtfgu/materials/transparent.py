@@ -45,7 +45,7 @@ class Transparent(Reflective):
         return GLOSSY if self.reflects_light() or self.ka > 0.0 else TRANSPARENT
 
     def shade(self, sr) -> Float3:
-        wo = sr.wo
+        wo = -sr.ray.direction
         L = Phong.shade(self, sr)
         tracer = sr.scene.tracer
         fr, wi, pdf_r = self.reflective_brdf.sample_f(sr, wo)
