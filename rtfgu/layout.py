@@ -359,6 +359,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     texture_rows = {kind.name: [] for kind in TEXTURES}
     texels = []
     placed = {}  # id(texture) -> (kind id, row): a texture shared by shapes is laid out once
+    material_rows = {}  # (id(material), surface colour if not cd) -> its row
     features = {CAMERA_KINDS[camera_kind]}
     for i, shape in enumerate(scene.shapes):
         _, kind = shape_kind_of(shape)
@@ -372,6 +373,13 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         rows[kind.name][1].append(i)
         features.add(kind.name)
         m = shape.material
+        # A material shared by shapes (a mesh's thousands of triangles) is checked and laid
+        # out once per surface colour: its row depends on nothing else.
+        key = (id(m),) if isinstance(m.cd, Float3) else (id(m), shape.color.x, shape.color.y, shape.color.z)
+        if key in material_rows:
+            materials.append(material_rows[key])
+            shaders.append(m.shader)
+            continue
         texture, texture_row = -1, 0
         if m.texture is not None:
             if id(m.texture) not in placed:
@@ -399,6 +407,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt,
             diffuse_sampler=own.place(_sampler_of(m, "diffuse_brdf")),
             specular_sampler=own.place(_sampler_of(m, "specular_brdf")))))
+        material_rows[key] = materials[-1]
         shaders.append(m.shader)
         features.add(SHADER_BY_ID[m.shader].name)
         if SHADER_BY_ID[m.shader].splits and max(m.reflection.x, m.reflection.y, m.reflection.z) > 0.0:
