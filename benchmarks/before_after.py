@@ -8,11 +8,12 @@ samples of as many renders as fill SAMPLE_SECONDS, and reports the median time p
 ratio, and each image's largest difference from the lecture layer's float64 image (on every
 4th row and column for the 1024 x 1024 scene), so no speed figure stands without its error.
 
-    python benchmarks/before_after.py --before REV [--suite registry|book] [--rounds 3] [--out FILE]
+    python benchmarks/before_after.py --before REV [--suite registry|book|lecture] [--rounds 3] [--out FILE]
 
 ``--suite registry`` (the default) times the numba and WGSL paths on CONFIGS; ``--suite book``
 times the lecture layer itself (the reference backend, small images) and the flat paths on
-the scenes whose materials, lights and tracer the book's classes express (BOOK_CONFIGS).
+the scenes whose materials, lights and tracer the book's classes express (BOOK_CONFIGS);
+``--suite lecture`` the reference rows of that suite alone (teapot left out), for more rounds.
 """
 from __future__ import annotations
 
@@ -50,7 +51,10 @@ BOOK_CONFIGS = [
     (("default_lambertian_shadows", 256, 256), FLAT), (("default_glossy_sphere", 256, 256), FLAT),
     (("suffern_disks", 256, 256), FLAT), (("teapot", 400, 225), FLAT), (("cornell_box_blocks", 256, 256), FLAT),
 ]
-SUITES = {"registry": [(config, PATHS) for config in CONFIGS], "book": BOOK_CONFIGS}
+SUITES = {"registry": [(config, PATHS) for config in CONFIGS], "book": BOOK_CONFIGS,
+          # The lecture layer alone, small enough for more rounds (and, with --before HEAD, for
+          # the spread between two runs of one version: the noise the other tables sit in).
+          "lecture": [(config, paths) for config, paths in BOOK_CONFIGS if paths is REFERENCE and config[0] != "teapot"]}
 
 
 def _scene(name):
@@ -195,7 +199,8 @@ def format_row(config, path, seconds, errors) -> str:
         _rate(config, seconds["after"]), ratio, err("before"), err("after"))
 
 
-TITLES = {"registry": "the kind registry", "book": "the lecture layer in Suffern's classes"}
+TITLES = {"registry": "the kind registry", "book": "the lecture layer in Suffern's classes",
+          "lecture": "the lecture layer in Suffern's classes: the reference backend"}
 
 
 def report(before, suite, out, rows, load, seconds, rounds) -> str:
