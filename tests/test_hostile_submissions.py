@@ -14,6 +14,7 @@ runs it. tests/test_grader_fallback.py holds the attacks on the grader itself.
 """
 from __future__ import annotations
 
+import csv
 import os
 import socket
 import stat
@@ -675,3 +676,30 @@ def _uid_of(pid: str):
         return os.stat("/proc/" + pid).st_uid
     except OSError:
         return None
+
+
+def test_the_gradebook_error_column_names_why_tests_could_not_judge_the_code(tmp_path, isolation):
+    # Staff sort a class of 300 by this column: a syntax error at its file and line, the time
+    # limit, an exception raised as a whole; empty for a submission that was judged.
+    from rtfgu.grading.gradebook import grade_all
+
+    solved = solution_files("a04")
+    rho = "        return self.surface_color(self.cd, sr) * self.kd\n"
+    assert rho in solved["brdfs/lambertian.py"]
+    variants = {
+        "alice": {},
+        "dave": {"materials/matte.py": solved["materials/matte.py"].replace(
+            "    def ambient(self, sr, wo)", "    def ambient(self, sr, wo", 1)},
+        "erin": {"brdfs/lambertian.py": solved["brdfs/lambertian.py"].replace(
+            rho, "        while True:\n            pass\n", 1)},
+        "fred": {"lights/point_light.py": solved["lights/point_light.py"] + "\nraise RuntimeError('boom')\n"},
+    }
+    for student, changed in variants.items():
+        write_files(dict(solved, **changed), tmp_path / "class" / student)
+    line = solved["materials/matte.py"].splitlines().index("    def ambient(self, sr, wo) -> Float3:") + 1
+    path = grade_all("a04", tmp_path / "class", tmp_path / "out", processes=2, time_limit=1)
+    errors = {r["student"]: r["error"] for r in csv.DictReader(open(path))}
+    assert errors["alice"] == ""
+    assert errors["dave"].startswith("SyntaxError in materials/matte.py, line %d" % line), errors["dave"]
+    assert errors["erin"].startswith("time limit (1 s) ("), errors["erin"]
+    assert "exception: RuntimeError: boom" in errors["fred"], errors["fred"]

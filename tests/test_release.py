@@ -300,6 +300,28 @@ def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_rende
     assert "the render failed" in done.stdout and "a04: " in done.stdout and "failed to render" in done.stdout
 
 
+def test_make_render_and_make_check_without_an_assignment_say_what_they_need(release):
+    for command in ("render", "check"):
+        done = _run(release, command)
+        assert done.returncode == 2
+        assert "make %s needs an assignment: make %s A=a03" % (command, command) in done.stderr
+        assert "a01" in done.stderr and "a09" in done.stderr and "usage:" not in done.stderr
+
+
+def test_every_release_readme_names_the_files_the_student_edits_where_they_are(release):
+    # In a release the student edits rtfgu/<file> in place; assignments/<id>/ holds only the README.
+    readmes = [release / "assignments" / "README.md"] + sorted((release / "assignments").glob("*/README.md"))
+    assert len(readmes) == 10
+    for readme in readmes:
+        text = readme.read_text()
+        assert "on your files in assignments/" not in text, readme
+        for path in re.findall(r"`(rtfgu/[\w/]+\.(?:py|wgsl))`", text):
+            assert (release / path).is_file(), (readme, path)
+    a03 = (release / "assignments" / "a03_intersections" / "README.md").read_text()
+    assert "`rtfgu/shapes/sphere.py`" in a03 and "on your files in rtfgu/" in a03
+    assert sorted(p.name for p in (release / "assignments" / "a03_intersections").iterdir()) == ["README.md"]
+
+
 def test_running_a_student_file_directly_says_how_to_run_it(release):
     # a04's and a01's files: the a03 tests above replace the a03 files with the solution
     done = subprocess.run([sys.executable, "rtfgu/lights/point_light.py"], cwd=release, capture_output=True,

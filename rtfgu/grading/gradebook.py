@@ -31,7 +31,7 @@ def _grade_one(job):
     try:
         result = grade(assignment_id, path, Path(out_dir) / student, time_limit=time_limit, memory_mb=memory_mb,
                        require_sandbox=require_sandbox)
-        return student, result.score, result.max_score, {t.number: t.score for t in result.tests}, ""
+        return student, result.score, result.max_score, {t.number: t.score for t in result.tests}, result.cause
     except Exception as error:  # one broken submission must not stop the class
         return student, 0.0, None, {}, "%s: %s" % (type(error).__name__, error)
 
@@ -39,7 +39,9 @@ def _grade_one(job):
 def grade_all(assignment, submissions, out_dir, *, processes=None, time_limit=None, memory_mb=1024, log=None,
               require_sandbox: bool = False) -> Path:
     """Grade every submission in ``submissions``; write ``out_dir/<student>/results.json`` and
-    ``out_dir/gradebook.csv`` (one row per submission); return the CSV's path."""
+    ``out_dir/gradebook.csv`` (one row per submission; its ``error`` column says why tests
+    could not judge the code: a syntax error at file and line, the time limit, the memory
+    limit, a crash, or the grading's own failure); return the CSV's path."""
     from .sandbox import choose_isolation, hidden_from_sandbox_user
 
     a = get_assignment(assignment) if isinstance(assignment, str) else assignment

@@ -110,6 +110,17 @@ def _digest(files: dict) -> dict:
 
 # --- grading -------------------------------------------------------------------------------
 
+def _child_cause(child, time_limit, memory_mb) -> str:
+    """The gradebook's short name for why a test's process gave no answer."""
+    if child.status == "timeout":
+        return "time limit (%g s)" % time_limit
+    if child.status == "crashed" and "MemoryError" in child.output:
+        return "memory limit (%d MB)" % memory_mb
+    if child.status == "crashed":
+        return "crash: " + child.detail
+    return child.status
+
+
 def _child_failure(child, time_limit, memory_mb) -> str:
     if child.status == "timeout":
         return ("stopped after the time limit of %g s: your code did not finish (an endless loop, or far "
@@ -186,18 +197,25 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
     diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
     image_path = None
     seconds = 0.0
+    cause = ""
     if broken:
         fraction, lines = 0.0, ["this test runs a file that does not compile, so it was not run: " + b
                                 for b in broken]
+        cause = "; ".join(broken)
         output = ""
     else:
+        memory = memory_mb if check.memory_mb is None else check.memory_mb
         child = run_child(ws, tmp / "scratch" / check.slug, probe, isolation=isolation,
-                          time_limit=time_limit, memory_mb=memory_mb if check.memory_mb is None else check.memory_mb,
-                          output_limit=output_limit)
+                          time_limit=time_limit, memory_mb=memory, output_limit=output_limit)
         seconds, output = child.seconds, child.output
         if child.status != "ok":
-            fraction, lines = 0.0, [_child_failure(child, time_limit, memory_mb)]
+            fraction, lines = 0.0, [_child_failure(child, time_limit, memory)]
+            cause = _child_cause(child, time_limit, memory)
         else:
+            raised = child.data.get("error")
+            if isinstance(raised, str):   # the student's code raised as a whole (probes/boot.py)
+                cause = ("memory limit (%d MB)" % memory if raised.startswith("MemoryError")
+                         else "exception: " + (raised.splitlines() or [""])[0][:120])
             # The answer is the child's to write (student code can reach the pipe): one that
             # does not have the shape the probe gives costs this test only.
             try:
@@ -212,6 +230,9 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
                 fraction, lines, image_path = 0.0, [
                     "the test's answer was not in the form the test writes (%s); was something else "
                     "written to its pipe?" % type(error).__name__], None
+                cause = "bad answer"
+    if fraction >= 1.0:
+        cause = ""
     if output.strip() and fraction < 1.0:
         lines.append("What your code printed:\n" + output)
     message = "\n".join(lines) if lines else "all cases right"
@@ -220,7 +241,7 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
     if fraction >= 1.0 and check.kind == "cases" and check.judge is None:
         message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
     test = TestResult(check.number, check.name, float(check.weight), round(check.weight * fraction, 4),
-                      check.visibility, message, str(image_path) if image_path else None)
+                      check.visibility, message, str(image_path) if image_path else None, cause)
     if log:
         log("%-5s %-70s %5.2f / %g  (%.2f s)" % (test.number, test.name[:70], test.score, test.max_score, seconds))
     return test

@@ -171,12 +171,12 @@ def main(argv=None) -> int:
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("list", help="the assignments")
     p = sub.add_parser("check", help="the visible tests of an assignment (make check A=a03)")
-    p.add_argument("assignment")
+    p.add_argument("assignment", nargs="?")
     p.add_argument("--root", default=".", help="the folder holding your rtfgu/ (default: here)")
     p.add_argument("--out", default=None, help="default check-results/<aNN>")
     p.add_argument("--time-limit", type=float, default=None, help="seconds per test")
     p = sub.add_parser("render", help="the assignment's images, rendered with your code (make render A=a03)")
-    p.add_argument("assignment")
+    p.add_argument("assignment", nargs="?")
     p.add_argument("--root", default=".")
     p.add_argument("--out", default=None, help="default renders/<aNN>")
     p.add_argument("--width", type=int, default=0)
@@ -187,6 +187,10 @@ def main(argv=None) -> int:
             for a in ASSIGNMENTS.values():
                 print("%-40s %s" % (a.id, a.title))
             return 0
+        if args.assignment is None:   # `make render` or `make check` without A=
+            parser.exit(2, "make %s needs an assignment: make %s A=a03 (or A=a03_intersections); "
+                           "the assignments are:\n%s\n" % (args.command, args.command, "\n".join(
+                               "  %-6s %s" % (a.short, a.title) for a in ASSIGNMENTS.values())))
         a = get_assignment(args.assignment)
         if args.command == "render":
             return render(a, args.root, args.out, args.width, args.height)

@@ -356,10 +356,10 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
                                       "package_data": package_data},
         "pyproject.toml": (Path(package_dir).parent / "pyproject.toml").read_text(),
         "tests/test_visible.py": STUDENT_TEST,
-        "assignments/README.md": index_readme(),
+        "assignments/README.md": index_readme(release=True),
         ".gitignore": ".venv/\nrenders/\ncheck-results/\n__pycache__/\n*.pyc\n*.egg-info/\n",
     }
     for a in ASSIGNMENTS.values():
-        extra["assignments/%s/README.md" % a.id] = assignment_readme(a)
+        extra["assignments/%s/README.md" % a.id] = assignment_readme(a, release=True)
     written += write_files(extra, out)
     return written

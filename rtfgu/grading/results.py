@@ -20,6 +20,9 @@ class TestResult:
     visibility: str
     output: str
     image: str | None = None   # the diff image of an image test (path)
+    # Why the test could not judge the code ("" where it ran and judged): a syntax error at
+    # file and line, the time limit, the memory limit, a crash (the gradebook's error column).
+    cause: str = ""
 
     @property
     def status(self) -> str:
@@ -42,6 +45,16 @@ class Result:
     @property
     def max_score(self) -> float:
         return round(sum(t.max_score for t in self.tests), 4)
+
+    @property
+    def cause(self) -> str:
+        """The causes of the tests that could not judge the code, each once with the tests it
+        cost ("" where every test ran and was judged): what staff sort a class by."""
+        counts = {}
+        for t in self.tests:
+            if t.cause:
+                counts[t.cause] = counts.get(t.cause, 0) + 1
+        return "; ".join("%s (%d test%s)" % (c, n, "" if n == 1 else "s") for c, n in counts.items())
 
     def output(self) -> str:
         lines = ["%s: %g / %g points" % (self.assignment, self.score, self.max_score)]
