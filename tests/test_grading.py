@@ -342,6 +342,34 @@ def test_grade_all_writes_one_gradebook_row_and_one_results_folder_per_submissio
         validate_gradescope(json.loads((tmp_path / "out" / student / "results.json").read_text()))
 
 
+def test_gradescope_shows_a_visible_image_tests_diff_image_inline_with_the_students_output_escaped(tmp_path):
+    # Gradescope shows only results.json: the diff image goes in as a data URI of an HTML
+    # output, the message points to it, and what the student's code printed is text, not HTML.
+    import base64
+    import html
+
+    files = dict(solution_files("a03"))
+    head = "    def intersect_p(self, ray: Ray) -> bool:\n"
+    assert head in files["shapes/sphere.py"]
+    files["shapes/sphere.py"] = files["shapes/sphere.py"].replace(
+        head, head + "        print('<img src=x onerror=alert(1)>')\n        return False\n", 1)
+    write_files(files, tmp_path / "sub")
+    slugs = ("07_image_lecture_01_scene_the_closest_hit_in_flat_c", "02_sphere_intersect_p_rays_that_hit")
+    grade("a03", tmp_path / "sub", tmp_path / "out", only=slugs, time_limit=LIMIT)
+    data = json.loads((tmp_path / "out" / "results.json").read_text())
+    validate_gradescope(data)
+    image_test, cases_test = sorted(data["tests"], key=lambda t: t["number"], reverse=True)
+    assert image_test["status"] == "failed" and image_test["output_format"] == "html"
+    diff = next((tmp_path / "out" / "diffs").glob("07_*.png")).read_bytes()
+    assert 'src="data:image/png;base64,%s"' % base64.b64encode(diff).decode() in image_test["output"]
+    assert "the diff image is below" in image_test["output"] and ".png" not in image_test["output"]
+    assert "<img src=x" not in image_test["output"]
+    assert html.escape("<img src=x onerror=alert(1)>") in image_test["output"]
+    assert "output_format" not in cases_test and "<img src=x onerror=alert(1)>" in cases_test["output"]
+    # The local summary keeps the file's name, where the file is.
+    assert "the diff image is 07_image" in (tmp_path / "out" / "summary.txt").read_text()
+
+
 def _run_gradescope_bundle(assignment: str, submission: Path, root: Path, private: Path, **env) -> dict:
     """results.json of the Gradescope bundle of ``assignment`` run as Gradescope runs it: the
     zip (built into the folder ``private``) unpacked into ROOT/source, the upload copied to

@@ -3,11 +3,39 @@ PrairieLearn's results format, and a summary a person reads."""
 from __future__ import annotations
 
 import base64
+import html
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
 OUTPUT_LIMIT = 8000   # characters of message per test
+IMAGE_LIMIT = 256 * 1024   # bytes of a diff image shown inside a result (a 48 x 48 test's: about 2 KB)
+
+
+def _shown_image(t) -> bytes | None:
+    """The PNG bytes of a visible test's diff image, to show inside the result (Gradescope and
+    PrairieLearn show only results.json, not the files beside it); None for a hidden test (its
+    image holds the hidden reference), for none, or one above IMAGE_LIMIT."""
+    if t.visibility != "visible" or not t.image or not Path(t.image).is_file():
+        return None
+    data = Path(t.image).read_bytes()
+    return data if len(data) <= IMAGE_LIMIT else None
+
+
+def gradescope_test_output(t) -> dict:
+    """A test's output for Gradescope: text, or where it has a diff image to show, HTML with
+    the text escaped (what the student's code printed is in it) and the image inline as a data
+    URI, which the message then points to instead of a file the student cannot see."""
+    text = t.output[:OUTPUT_LIMIT]
+    image = _shown_image(t)
+    if image is None:
+        return {"output": text}
+    text = text.replace("the diff image is %s" % Path(t.image).name, "the diff image is below")
+    return {"output_format": "html",
+            "output": "<pre>%s</pre>\n<p>yours | reference | differences in red</p>\n"
+                      "<img alt=\"diff image: yours | reference | differences in red\" "
+                      "src=\"data:image/png;base64,%s\" style=\"image-rendering: pixelated\">"
+                      % (html.escape(text), base64.b64encode(image).decode())}
 
 
 @dataclass
@@ -88,9 +116,10 @@ class Result:
             "visibility": "visible",
             "stdout_visibility": "hidden",
             "extra_data": {"isolation": self.isolation},
-            "tests": [{"name": t.name, "number": t.number, "score": round(t.score, 4),
-                       "max_score": t.max_score, "status": t.status, "output": t.output[:OUTPUT_LIMIT],
-                       "visibility": "visible" if t.visibility == "visible" else "after_published"}
+            "tests": [dict({"name": t.name, "number": t.number, "score": round(t.score, 4),
+                            "max_score": t.max_score, "status": t.status,
+                            "visibility": "visible" if t.visibility == "visible" else "after_published"},
+                           **gradescope_test_output(t))
                       for t in self.tests],
         }
 
@@ -103,10 +132,10 @@ class Result:
             entry = {"name": t.name, "description": "test %s" % t.number, "points": round(t.score, 4),
                      "max_points": t.max_score,
                      "message": "a hidden test" if hidden else t.output[:OUTPUT_LIMIT], "output": ""}
-            if t.image and Path(t.image).is_file() and not hidden:
-                data = base64.b64encode(Path(t.image).read_bytes()).decode()
+            image = _shown_image(t)
+            if image is not None:
                 entry["images"] = [{"label": "yours | reference | difference",
-                                    "url": "data:image/png;base64," + data}]
+                                    "url": "data:image/png;base64," + base64.b64encode(image).decode()}]
             tests.append(entry)
         return {"gradable": True, "score": self.score / self.max_score if self.max_score else 0.0,
                 "message": self.visible_output(), "output": "", "tests": tests,
@@ -157,6 +186,8 @@ def validate_gradescope(data: dict) -> None:
                 raise ValueError("results.json: tests[%d].%s missing or of the wrong type" % (i, key))
         if test["status"] not in ("passed", "failed"):
             raise ValueError("results.json: tests[%d].status must be passed or failed" % i)
+        if test.get("output_format", "text") not in ("text", "html", "simple_format", "md", "ansi"):
+            raise ValueError("results.json: tests[%d].output_format is %r" % (i, test["output_format"]))
         if test["visibility"] not in ("visible", "hidden", "after_due_date", "after_published"):
             raise ValueError("results.json: tests[%d].visibility is %r" % (i, test["visibility"]))
         if not 0 <= test["score"] <= test["max_score"] + 1e-9:
