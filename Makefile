@@ -8,10 +8,12 @@ STAMP := $(VENV)/.installed
 
 # Create the virtual environment and install the package (editable) with its test extras.
 # The stamp depends on setup.cfg, so a second run reinstalls nothing unless it changed.
+# pip's and setuptools' chatter goes to .venv/install.log, shown only if the install fails.
 $(STAMP): setup.cfg pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
-	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test]'
+	@echo "installing rtfgu and what it needs into $(VENV) (log: $(VENV)/install.log)"
+	@{ $(PY) -m pip install --quiet --upgrade pip && $(PY) -m pip install --quiet -e '.[test]'; } \
+	  > $(VENV)/install.log 2>&1 || { cat $(VENV)/install.log; exit 1; }
 	touch $(STAMP)
 
 # bubblewrap isolates the grader's student code (rtfgu/grading/sandbox.py). Where it is not

@@ -322,6 +322,34 @@ def test_every_release_readme_names_the_files_the_student_edits_where_they_are(r
     assert sorted(p.name for p in (release / "assignments" / "a03_intersections").iterdir()) == ["README.md"]
 
 
+def _data_folders_outside_the_packages(root: Path) -> list:
+    """The folders holding package data that the setup.cfg of ``root`` does not list as
+    packages: setuptools warns about each (about 40 lines apiece), burying a first `make`."""
+    import configparser
+
+    import setuptools
+
+    config = configparser.ConfigParser()
+    config.read(root / "setup.cfg")
+    find = {"find:": setuptools.find_packages, "find_namespace:": setuptools.find_namespace_packages}
+    include = [name.strip() for name in config["options.packages.find"]["include"].split(",")]
+    packages = set(find[config["options"]["packages"].strip()](where=str(root), include=include))
+    outside = set()
+    for package, patterns in config["options.package_data"].items():
+        for pattern in patterns.split(","):
+            for path in (root / package.replace(".", "/")).glob(pattern.strip()):
+                outside.add(".".join(path.parent.relative_to(root).parts))
+    return sorted(outside - packages)
+
+
+def test_the_first_make_is_quiet_no_data_folder_outside_the_packages_and_pip_in_a_log(release):
+    assert _data_folders_outside_the_packages(release) == []
+    assert _data_folders_outside_the_packages(PACKAGE_DIR.parent) == []
+    for makefile in (release / "Makefile", PACKAGE_DIR.parent / "Makefile"):
+        text = makefile.read_text()
+        assert "> $(VENV)/install.log 2>&1 || { cat $(VENV)/install.log; exit 1; }" in text, makefile
+
+
 def test_running_a_student_file_directly_says_how_to_run_it(release):
     # a04's and a01's files: the a03 tests above replace the a03 files with the solution
     done = subprocess.run([sys.executable, "rtfgu/lights/point_light.py"], cwd=release, capture_output=True,

@@ -207,11 +207,13 @@ STAMP := $(VENV)/.installed
 
 .PHONY: check render test venv clean
 
+# pip's and setuptools' chatter goes to .venv/install.log, shown only if the install fails.
 $(STAMP): setup.cfg pyproject.toml
-\ttest -x $(PY) || $(PYTHON) -m venv $(VENV)
-\t$(PY) -m pip install --quiet --upgrade pip
-\t$(PY) -m pip install --quiet -e '.[test]'
-\ttouch $(STAMP)
+\t@test -x $(PY) || $(PYTHON) -m venv $(VENV)
+\t@echo "installing rtfgu and what it needs into $(VENV), once (log: $(VENV)/install.log)"
+\t@{ $(PY) -m pip install --quiet --upgrade pip && $(PY) -m pip install --quiet -e '.[test]'; } \\
+\t  > $(VENV)/install.log 2>&1 || { cat $(VENV)/install.log; exit 1; }
+\t@touch $(STAMP)
 
 venv: $(STAMP)
 
@@ -252,7 +254,7 @@ version = 0.1.0
 description = Your copy of rtfgu, a teaching ray tracer after Suffern's Ray Tracing from the Ground Up
 
 [options]
-packages = find:
+packages = find_namespace:
 python_requires = >=3.10
 include_package_data = True
 install_requires =
