@@ -22,22 +22,48 @@ BAR = 30
 
 def _progress_printer(label: str, stream=None):
     """progress(done, total) drawing a bar on one line of standard error, at most twice a
-    second, with the time so far and the time left at this pace."""
+    second, with the time so far and the time left at the pace measured since the first
+    report: the first pass or row also holds compiling the kernels (numba, WGSL), which the
+    rest do not repeat, so it is left out of the estimate."""
     start = time.perf_counter()
     shown = [0.0]
+    first = []   # (elapsed, done) at the first report
 
     def progress(done: int, total: int) -> None:
         elapsed = time.perf_counter() - start
+        if done and not first:
+            first.append((elapsed, done))
         if done < total and elapsed - shown[0] < 0.5:
             return  # a line every half second is enough to show it is alive
         shown[0] = elapsed
         filled = BAR * done // total
-        left = elapsed * (total - done) / done if done else 0.0
+        if done == total:
+            left = "done"
+        elif first and done > first[0][1]:
+            pace = (elapsed - first[0][0]) / (done - first[0][1])
+            left = "%.1f s left" % (pace * (total - done))
+        else:
+            left = "estimating the time left"
         end = "\n" if done == total else ""
-        print("\r%s [%s%s] %3d%%  %.1f s, %.1f s left" % (
+        print("\r%s [%s%s] %3d%%  %.1f s, %s" % (
             label, "#" * filled, "." * (BAR - filled), 100 * done // total, elapsed, left),
             end=end, file=stream or sys.stderr, flush=True)
     return progress
+
+
+# What the first render on a backend in a process waits for, said before it starts.
+COMPILING = {
+    "numba": "numba: compiling the kernels this scene needs, once (about 20 s; later runs load them "
+             "from numba's cache)",
+    "wgpu": "wgpu: compiling the scene's WGSL program on the adapter (a few seconds per scene)",
+}
+_announced = set()
+
+
+def _announce_compiling(backend: str, stream=None) -> None:
+    if backend in COMPILING and backend not in _announced:
+        _announced.add(backend)
+        print(COMPILING[backend], file=stream or sys.stderr, flush=True)
 
 
 # Passes of a long render: the progress bar moves (and a notebook refreshes) once per pass.
@@ -49,6 +75,8 @@ def _render_one(name, width, height, backend, precision, out, show_progress, spp
     w, h = fn.size
     width = w if width is None else width
     height = h if height is None else height
+    if show_progress:
+        _announce_compiling(backend or render_module.DEFAULT_BACKEND)
     progress = _progress_printer(name) if show_progress else None
     scene = fn()
     if isinstance(scene.camera, PinholeCamera) and (width, height) != (w, h):

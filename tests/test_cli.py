@@ -94,3 +94,33 @@ def test_bad_size_exits_2_and_names_it(tmp_path):
 
 def test_no_command_exits_2(tmp_path):
     assert run(cwd=tmp_path).returncode == 2
+
+
+def test_the_time_left_comes_from_the_passes_after_the_first_which_holds_compiling(monkeypatch):
+    # A 16-pass render whose first pass took 20 s (19 s of it compiling) and the others 1 s
+    # each: after the second pass 14 s are left, not 20 s x 14 passes.
+    import io
+
+    import rtfgu.__main__ as cli
+
+    clock = iter([0.0, 20.0, 21.0, 35.0])
+    monkeypatch.setattr(cli.time, "perf_counter", lambda: next(clock))
+    stream = io.StringIO()
+    progress = cli._progress_printer("scene", stream)
+    progress(1, 16)
+    assert stream.getvalue().endswith("6%  20.0 s, estimating the time left")
+    progress(2, 16)
+    assert stream.getvalue().endswith("12%  21.0 s, 14.0 s left")
+    progress(16, 16)
+    assert stream.getvalue().endswith("100%  35.0 s, done\n")
+
+
+def test_the_first_render_on_a_compiling_backend_says_so_before_it_starts(tmp_path):
+    done = run("render", "lecture01_flat_colors", "-o", str(tmp_path / "a.png"), "--width", "8", "--height", "8",
+               "--backend", "numba", cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert done.stderr.startswith("numba: compiling the kernels this scene needs, once (about 20 s")
+    assert done.stderr.count("compiling") == 1
+    done = run("render", "lecture01_flat_colors", "-o", str(tmp_path / "b.png"), "--width", "8", "--height", "8",
+               "--backend", "reference", cwd=tmp_path)
+    assert done.returncode == 0 and "compiling" not in done.stderr, done.stderr
