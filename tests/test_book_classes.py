@@ -366,8 +366,9 @@ def test_a_sampler_on_an_ambient_occluder_changes_the_draws_not_the_mean():
         return scene
 
     d = normalize(Float3(0.3, 0.0, 0.0) - Float3(0.0, 2.0, 4.0))
-    stream = [trace(occluded(None), Ray(Float3(0.0, 2.0, 4.0), d), (0, s, 0)).x for s in range(256)]
-    sampled = [trace(occluded(MultiJittered(256)), Ray(Float3(0.0, 2.0, 4.0), d), (0, s, 0)).x for s in range(256)]
+    by_stream, by_sampler = occluded(None), occluded(MultiJittered(256))
+    stream = [trace(by_stream, Ray(Float3(0.0, 2.0, 4.0), d), (0, s, 0)).x for s in range(256)]
+    sampled = [trace(by_sampler, Ray(Float3(0.0, 2.0, 4.0), d), (0, s, 0)).x for s in range(256)]
     assert stream != sampled
     for values in (stream, sampled):          # an open plane: rho L = 0.5 exactly in expectation
         assert abs(np.mean(values) - 0.5) <= 5 * np.std(values, ddof=1) / 16 + 1e-12
