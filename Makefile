@@ -36,7 +36,7 @@ $(SANDBOX_STAMP): $(STAMP)
 venv: $(STAMP) $(SANDBOX_STAMP)
 
 render: $(STAMP) $(SANDBOX_STAMP)
-	$(if $(A),$(PY) -m rtfgu.grading render $(A),$(PY) -m rtfgu render-all --backend numba --out renders)
+	$(if $(A),$(PY) -m rtfgu.grading render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H)),$(PY) -m rtfgu render-all --backend numba --out renders)
 
 # The benchmark (not a test): prints the table and writes docs/bench.md and its plot.
 # The bench extra (matplotlib) is installed once, through its own stamp.

@@ -363,6 +363,8 @@ def test_gradescope_shows_a_visible_image_tests_diff_image_inline_with_the_stude
     diff = next((tmp_path / "out" / "diffs").glob("07_*.png")).read_bytes()
     assert 'src="data:image/png;base64,%s"' % base64.b64encode(diff).decode() in image_test["output"]
     assert "the diff image is below" in image_test["output"] and ".png" not in image_test["output"]
+    # The pixel it names is one of the test image, and the message says how to render at its size.
+    assert "of the 48x48 test image (`make render A=a03 W=48 H=48`" in image_test["output"]
     assert "<img src=x" not in image_test["output"]
     assert html.escape("<img src=x onerror=alert(1)>") in image_test["output"]
     assert "output_format" not in cases_test and "<img src=x onerror=alert(1)>" in cases_test["output"]

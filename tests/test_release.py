@@ -348,6 +348,8 @@ def test_the_first_make_is_quiet_no_data_folder_outside_the_packages_and_pip_in_
     for makefile in (release / "Makefile", PACKAGE_DIR.parent / "Makefile"):
         text = makefile.read_text()
         assert "> $(VENV)/install.log 2>&1 || { cat $(VENV)/install.log; exit 1; }" in text, makefile
+        # make render A=a03 W=48 H=48: the size of the image tests, whose messages name its pixels
+        assert "render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H))" in text, makefile
 
 
 def test_running_a_student_file_directly_says_how_to_run_it(release):

@@ -37,7 +37,9 @@ def assignment_readme(a, release: bool = False) -> str:
                   "by more than %d of 255 levels from every pixel in the 3 x 3 neighbourhood of the reference pixel,"
                   % IMAGE_LEVELS,
                   "and up to %.1f%% of the pixels may differ. Every image test writes a diff image" % (100 * IMAGE_FRACTION),
-                  "(yours | reference | differences in red)."]
+                  "(yours | reference | differences in red). A failing one names a pixel of its test image",
+                  "(%s) and the `make render A=%s W=.. H=..` that renders the images at that size."
+                  % (" or ".join(sorted({"%d x %d" % c.size for c in checks if c.kind == "image"})), a.short)]
     if any(c.kind == "statistic" for c in checks):
         lines += ["Statistical tests judge random samples: a chi-square test of where your directions fall (it",
                   "fails a correct sampler once in %d gradings), and means of many samples against the truth or" % round(1 / CHI_SQUARE_ALPHA),

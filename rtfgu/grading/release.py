@@ -199,6 +199,7 @@ STUDENT_MAKEFILE = """\
 # Your copy of rtfgu. A is an assignment (a03 or a03_intersections).
 #   make check A=a03    the assignment's visible tests on your code (diff images in check-results/a03/diffs/)
 #   make render A=a03   the assignment's images rendered with your code, into renders/a03/
+#                       (W=48 H=48: at the size of the image tests, whose pixels their messages name)
 #   make test [A=a03]   every assignment's (or one's) visible tests, through pytest
 PYTHON ?= python3
 VENV := .venv
@@ -221,7 +222,7 @@ check: $(STAMP)
 \t$(PY) -m rtfgu_checker check $(A)
 
 render: $(STAMP)
-\t$(PY) -m rtfgu_checker render $(A)
+\t$(PY) -m rtfgu_checker render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H))
 
 test: $(STAMP)
 \t$(PY) -m pytest $(if $(A),-k $(A))

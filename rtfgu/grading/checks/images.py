@@ -86,8 +86,11 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
         return 1.0, ["%dx%d image matches the reference (%d pixels beyond the tolerance, %d allowed)%s"
                      % (w, h, n_bad, allowed, where)], diff_path
     row, col = np.unravel_index(np.argmax(difference), difference.shape)
+    # The pixel is named in the test image, whose size the student's own renders differ from.
+    short = check.assignment.split("_", 1)[0]
     return 0.0, ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
                  "allowing a one-pixel shift (at most %d may). The largest difference is at column %d, "
-                 "row %d (row 0 at the top): the reference pixel is %s, yours is %s%s"
-                 % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, col, row,
+                 "row %d (row 0 at the top) of the %dx%d test image (`make render A=%s W=%d H=%d` renders "
+                 "the assignment's images at that size): the reference pixel is %s, yours is %s%s"
+                 % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, col, row, w, h, short, w, h,
                     fmt([int(v) for v in reference[row, col]]), fmt([int(v) for v in mine[row, col]]), where)], diff_path
