@@ -53,8 +53,8 @@ def _progress_printer(label: str, stream=None):
 
 # What the first render on a backend in a process waits for, said before it starts.
 COMPILING = {
-    "numba": "numba: compiling the kernels this scene needs, once (about 20 s; later runs load them "
-             "from numba's cache)",
+    "numba": "numba: compiling the kernels this scene needs, or loading them from numba's cache "
+             "(about 20 s the first time)",
     "wgpu": "wgpu: compiling the scene's WGSL program on the adapter (a few seconds per scene)",
 }
 _announced = set()

@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -292,10 +293,13 @@ def test_the_release_checker_gives_the_a_is_one_hint(release):
         write_files(solution_files("a03"), release / "rtfgu")
 
 
-def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_render_fails(release):
+def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_render_fails(release, tmp_path):
     done = _run(release, "render", "a01")
     assert done.returncode == 0 and "has no images to render" in done.stdout
-    done = _run(release, "render", "a04", "--width", "8", "--height", "8")
+    own = tmp_path / "release"          # a04's scene meets a03's shapes first: a copy with a03 solved
+    shutil.copytree(release, own)
+    write_files(solution_files("a03"), own / "rtfgu")
+    done = _run(own, "render", "a04", "--width", "8", "--height", "8")
     assert done.returncode == 1
     assert "the render failed" in done.stdout and "a04: " in done.stdout and "failed to render" in done.stdout
 

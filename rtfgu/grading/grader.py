@@ -110,26 +110,18 @@ def _digest(files: dict) -> dict:
 
 # --- grading -------------------------------------------------------------------------------
 
-def _child_cause(child, time_limit, memory_mb) -> str:
-    """The gradebook's short name for why a test's process gave no answer."""
-    if child.status == "timeout":
-        return "time limit (%g s)" % time_limit
-    if child.status == "crashed" and "MemoryError" in child.output:
-        return "memory limit (%d MB)" % memory_mb
-    if child.status == "crashed":
-        return "crash: " + child.detail
-    return child.status
-
-
-def _child_failure(child, time_limit, memory_mb) -> str:
+def _child_failure(child, time_limit, memory_mb) -> tuple:
+    """(the test's message, the gradebook's short cause) for a test whose process gave no
+    answer."""
     if child.status == "timeout":
         return ("stopped after the time limit of %g s: your code did not finish (an endless loop, or far "
-                "too slow)" % time_limit)
+                "too slow)" % time_limit, "time limit (%g s)" % time_limit)
     if child.status == "too much output":
-        return "stopped: " + child.detail
+        return "stopped: " + child.detail, child.status
     if child.status == "crashed":
-        return "the test process died: %s (the memory limit is %d MB)" % (child.detail, memory_mb)
-    return "the test gave no usable answer: %s" % child.detail
+        cause = "memory limit (%d MB)" % memory_mb if "MemoryError" in child.output else "crash: " + child.detail
+        return "the test process died: %s (the memory limit is %d MB)" % (child.detail, memory_mb), cause
+    return "the test gave no usable answer: %s" % child.detail, child.status
 
 
 def _needs(check, a) -> tuple:
@@ -209,8 +201,8 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
                           time_limit=time_limit, memory_mb=memory, output_limit=output_limit)
         seconds, output = child.seconds, child.output
         if child.status != "ok":
-            fraction, lines = 0.0, [_child_failure(child, time_limit, memory)]
-            cause = _child_cause(child, time_limit, memory)
+            failure, cause = _child_failure(child, time_limit, memory)
+            fraction, lines = 0.0, [failure]
         else:
             raised = child.data.get("error")
             if isinstance(raised, str):   # the student's code raised as a whole (probes/boot.py)

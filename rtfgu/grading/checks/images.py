@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..assignments import get_assignment
 from . import IMAGE_FRACTION, IMAGE_LEVELS, fmt
 
 GAMMA = 2.2   # rtfgu.image.GAMMA: references are stored as the renderer writes its images
@@ -87,7 +88,7 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
                      % (w, h, n_bad, allowed, where)], diff_path
     row, col = np.unravel_index(np.argmax(difference), difference.shape)
     # The pixel is named in the test image, whose size the student's own renders differ from.
-    short = check.assignment.split("_", 1)[0]
+    short = get_assignment(check.assignment).short
     return 0.0, ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
                  "allowing a one-pixel shift (at most %d may). The largest difference is at column %d, "
                  "row %d (row 0 at the top) of the %dx%d test image (`make render A=%s W=%d H=%d` renders "
