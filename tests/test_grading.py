@@ -17,6 +17,8 @@ import pytest
 
 from rtfgu.grading.assignments import ASSIGNMENTS, get_assignment
 from rtfgu.grading.generate import solution_files, student_files, write_files
+from rtfgu.grading.checks import checks_for
+from rtfgu.grading.checks.images import image_differences, judge_image
 from rtfgu.grading.grader import REFERENCE_DIR, grade, neighbourhood_difference
 from rtfgu.grading.results import validate_gradescope
 
@@ -73,7 +75,14 @@ PLANTED = [
     ("a03_sphere_a_is_one", "a03", {"3.2": "as if a = d . d were 1", "3.9": "should be",
                                     "3.10": "as if a = d . d were 1"}),
     ("a03_triangle_parallel_hits", "a03", {"3.5": "in its plane, parallel to it"}),
-    ("a03_triangle_open_edges", "a03", {"3.5": "beta + gamma = 1"}),
+    ("a03_triangle_open_edges", "a03", {"3.5": "the edge v1 v2 left out (beta + gamma < 1) gives that here"}),
+    # The classic barycentric slips: the hint names them with the exact beta and gamma; the diff
+    # image counts the triangle missing where the reference has it.
+    ("a03_triangle_gamma_sign", "a03", {"3.5": "a flipped sign of gamma, a flipped sign of beta or e0 and e1 "
+                                               "swapped gives that here", "3.8": "missing from yours",
+                                        "3.9": "closest shape should be"}),
+    ("a03_triangle_swapped_edges", "a03", {"3.5": "(beta = 0.333333, gamma = 0.333333", "3.8": "missing from yours",
+                                           "3.9": "closest shape should be"}),
     ("a03_triangle_closed_tmax", "a03", {"3.5": "t = tmax = 3"}),
     ("a02_half_pixel_offset", "a02", {"2.1": "half-pixel offset", "2.3": "pixels", "2.5": "half-pixel offset"}),
     ("a04_missing_cosine", "a04", {"4.2": "cosine term", "4.4": "pixels", "4.5": "should be"}),
@@ -485,6 +494,28 @@ def test_the_image_tolerance_forgives_a_one_pixel_silhouette_shift_but_not_a_col
     darker = ref.copy()
     darker[4:12, 4:12] = 150
     assert (neighbourhood_difference(darker, ref) > 8).sum() >= 36   # the inside of the square
+
+
+def test_a_thin_object_left_out_is_counted_missing_and_shown_in_blue(tmp_path):
+    """One direction of the neighbourhood test excuses a one-pixel-wide line that is missing
+    (each of its pixels has background next to it in the reference); the other does not."""
+    ref = np.zeros((16, 16, 3), np.uint8)
+    ref[2:14, 8] = 200                                   # a line one pixel wide
+    mine = np.zeros_like(ref)
+    assert neighbourhood_difference(mine, ref).max() == 0
+    wrong, missing = image_differences(mine, ref)
+    assert wrong.max() == 0 and (missing > 8).sum() == 12
+    check = checks_for("a03")[7]
+    assert check.kind == "image" and check.visibility == "visible"
+    diff = tmp_path / "diff.png"
+    fraction, lines, _ = judge_image(check, {"image": (mine / 255.0).tolist()}, ref, diff)
+    assert fraction == 0.0 and "0 drawn where the reference has nothing like them, 12 missing from yours" in lines[0]
+    assert "make debug-pixel A=a03 T=3.8 X=8 Y=" in lines[-1]
+    from PIL import Image
+    strip = np.asarray(Image.open(diff).convert("RGB"))
+    panel = strip[:, 2 * (16 * 4 + 2 * 4):]                # the third panel (4x enlarged, 2-pixel gaps)
+    blue = (panel == (0, 96, 255)).all(axis=2)
+    assert blue.sum() == 12 * 16 and not (panel == (255, 0, 0)).all(axis=2).any()
 
 
 def test_cli_names_an_unknown_assignment(tmp_path):

@@ -304,6 +304,42 @@ def test_make_render_says_when_there_is_nothing_to_render_and_fails_when_a_rende
     assert "the render failed" in done.stdout and "a04: " in done.stdout and "failed to render" in done.stdout
 
 
+def test_debug_pixel_compares_the_students_code_with_the_expected_values_at_the_failing_pixel(release, tmp_path):
+    """A failing image test names `make debug-pixel A T X Y`; it traces that pixel through the
+    student's code beside the solution's bounces, which the release holds for every pixel of
+    every visible image test (and for no hidden one), and marks the first difference."""
+    own = tmp_path / "release"
+    shutil.copytree(release, own)
+    spec = describe("a03_triangle_gamma_sign")
+    write_files(apply_replacements(solution_files("a03"), spec["REPLACE"], "a03_triangle_gamma_sign"), own / "rtfgu")
+    done = _run(own, "check", "a03")
+    found = re.search(r"`make debug-pixel A=a03 T=(3\.8) X=(\d+) Y=(\d+)`", done.stdout)
+    assert done.returncode == 1 and found, done.stdout
+    test, x, y = found.groups()
+    done = _run(own, "debug-pixel", "a03", test, x, y)
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "pixel (%s, %s) of the 48x48 test image" % (x, y) in done.stdout
+    first = [line for line in done.stdout.splitlines() if "<< first" in line]
+    assert len(first) == 1 and first[0].startswith("0 shape"), done.stdout
+    assert re.search(r"^0 kind\s+triangle\s+\w+ !$", done.stdout, re.M), done.stdout
+    write_files(solution_files("a03"), own / "rtfgu")
+    done = _run(own, "debug-pixel", "a03", "8", x, y)        # the test's number within a03 will do
+    assert done.returncode == 0 and "agrees with expected" in done.stdout, done.stdout + done.stderr
+    # Where the student has no code yet, and what an image test is not.
+    done = _run(release, "debug-pixel", "a03", "3.8", x, y)
+    assert done.returncode == 2 and "not written yet" in done.stderr
+    done = _run(release, "debug-pixel", "a03", "3.2", "0", "0")
+    assert done.returncode == 2 and "is not an image test" in done.stderr
+    done = _run(release, "debug-pixel", "a03", "3.8", "48", "0")
+    assert done.returncode == 2 and "X must be in [0, 48)" in done.stderr
+    assert "debug-pixel:" in (release / "Makefile").read_text()
+    assert "make debug-pixel A=a03 T=3.8 X=16 Y=32" in (release / "README.md").read_text()
+    for a in ASSIGNMENTS.values():
+        stored = {p.name for p in (release / "rtfgu_checker" / "reference" / a.id).glob("*.pixels.npz")}
+        assert stored == {c.slug + ".pixels.npz" for c in checks_for(a.id)
+                          if c.kind == "image" and c.visibility == "visible"}, a.id
+
+
 def test_make_render_and_make_check_without_an_assignment_say_what_they_need(release):
     for command in ("render", "check"):
         done = _run(release, command)

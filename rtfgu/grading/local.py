@@ -7,7 +7,7 @@ package ``rtfgu_checker`` beside the student's ``rtfgu``; ``python -m rtfgu_chec
 a03`` is ``make check A=a03``. Each test's probe runs in a new interpreter
 (``probes/boot.py``) with the folder holding the student's ``rtfgu`` first on its path; its
 answer comes back through a pipe and is judged here, as the grader does. Image tests write
-``<out>/diffs/<test>.png`` (yours | reference | differences in red).
+``<out>/diffs/<test>.png`` (checks.images.DIFF_LEGEND says what it shows).
 """
 from __future__ import annotations
 
@@ -23,7 +23,8 @@ from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
 from .checks import REFERENCE_DIR, checks_for, judge_cases, stored_probe
-from .checks.images import judge_image, load_png, write_png
+from .checks.images import DIFF_LEGEND, judge_image, load_png, write_png
+from .pixels import SUFFIX as PIXELS_SUFFIX, pixel_bounces
 from .results import Result, TestResult
 
 PROBES = Path(__file__).resolve().parent / "probes"
@@ -163,6 +164,53 @@ def render(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, 
     return 1 if failed else 0
 
 
+def find_test(assignment, test):
+    """The visible test of ``assignment`` that ``test`` names: its number ("3.8" or "8") or
+    its slug; a ValueError listing the visible image tests otherwise."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    visible = [c for c in checks_for(a.id) if c.visibility == "visible"]
+    for c in visible:
+        if str(test) in (c.number, c.number.split(".")[1], c.slug):
+            return c
+    raise ValueError("%s has no visible test %r; its image tests are: %s" % (
+        a.short, test, ", ".join("%s (%s)" % (c.number, c.name) for c in visible if c.kind == "image") or "none"))
+
+
+def debug_pixel(assignment, test, x: int, y: int, root=".", reference_dir: Path = REFERENCE_DIR) -> tuple:
+    """(report, differs): pixel (x, y) (column, row 0 at the top) of image test ``test``
+    traced through the student's code beside what the solution computes there, bounce by
+    bounce (the ray, the shape hit, t, the normal, the shader and the colour it adds), from
+    the expected paths the release holds (rtfgu.grading.pixels)."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    c = find_test(a, test)
+    if c.kind != "image":
+        raise ValueError("test %s (%s) is not an image test: `make check A=%s` shows its cases"
+                         % (c.number, c.name, a.short))
+    module, function, kwargs = c.probe
+    width, height = kwargs["width"], kwargs["height"]
+    for name, value, limit in (("X", x, width), ("Y", y, height)):
+        if not 0 <= value < limit:
+            raise ValueError("%s must be in [0, %d) for the %dx%d image of test %s, got %d"
+                             % (name, limit, width, height, c.number, value))
+    path = Path(reference_dir) / a.id / (c.slug + PIXELS_SUFFIX)
+    if not path.is_file():
+        raise ValueError("this copy holds no expected pixels for test %s (%s)" % (c.number, path))
+    title = ("%s test %s (%s): pixel (%d, %d) of the %dx%d test image, row 0 at the top"
+             % (a.short, c.number, c.name, x, y, width, height))
+    probe = ("images", "debug_pixel", dict(kwargs, x=x, y=y, expected=pixel_bounces(path, x, y),
+                                           rtol=c.rtol, title=title))
+    data, output, failure = run_probe(Path(root).resolve(), probe, c.time_limit or a.time_limit * 6)
+    if failure is None and "error" in data:
+        failure = data["error"]
+    if failure is not None and failure.startswith("PathNotInRelease"):
+        raise ValueError("test %s's image is rendered on a path whose debugger this copy leaves out: %s"
+                         % (c.number, failure))
+    if failure is not None:
+        raise ValueError("tracing the pixel with your code failed: %s%s"
+                         % (failure, ("\n" + output) if output.strip() else ""))
+    return data["report"], bool(data["differs"])
+
+
 def main(argv=None) -> int:
     import argparse
 
@@ -181,8 +229,22 @@ def main(argv=None) -> int:
     p.add_argument("--out", default=None, help="default renders/<aNN>")
     p.add_argument("--width", type=int, default=0)
     p.add_argument("--height", type=int, default=0)
+    p = sub.add_parser("debug-pixel", help="one pixel of an image test, traced through your code beside the "
+                                           "expected values (make debug-pixel A=a03 T=3.8 X=16 Y=32)")
+    p.add_argument("assignment", nargs="?")
+    p.add_argument("test", nargs="?", help="the test's number (3.8, or 8) as make check prints it")
+    p.add_argument("x", nargs="?", type=int, help="column, 0 at the left")
+    p.add_argument("y", nargs="?", type=int, help="row, 0 at the top")
+    p.add_argument("--root", default=".")
     args = parser.parse_args(argv)
     try:
+        if args.command == "debug-pixel" and None in (args.assignment, args.test, args.x, args.y):
+            parser.exit(2, "make debug-pixel needs A, T (the test's number), X and Y: a failing image test's "
+                           "message gives them, e.g. make debug-pixel A=a03 T=3.8 X=16 Y=32\n")
+        if args.command == "debug-pixel":
+            report, differs = debug_pixel(args.assignment, args.test, args.x, args.y, args.root)
+            print(report)
+            return 1 if differs else 0
         if args.command == "list":
             for a in ASSIGNMENTS.values():
                 print("%-40s %s" % (a.id, a.title))
@@ -198,7 +260,7 @@ def main(argv=None) -> int:
         result = check(a, args.root, out, args.time_limit, log=lambda line: print(line, flush=True))
         print(result.summary())
         if any(t.image for t in result.tests):
-            print("diff images (yours | reference | differences in red): %s" % (Path(out) / "diffs"))
+            print("diff images (%s): %s" % (DIFF_LEGEND, Path(out) / "diffs"))
         return 0 if result.score >= result.max_score - 1e-9 else 1
     except ValueError as error:
         parser.exit(2, "error: %s\n" % error)

@@ -41,6 +41,34 @@ def sphere(inputs: dict) -> dict:
     return {"a": a, "disc": disc, "roots": roots, "roots_plus_4ac": roots_plus, "roots_a_is_one": roots_a_is_one}
 
 
+def triangle(inputs: dict) -> dict:
+    """The barycentric coordinates where the ray meets the triangle's plane, exactly (the
+    slides' p = v0 + beta e0 + gamma e1, e0 = v1 - v0, e1 = v2 - v0), and whether the point
+    counts as inside with the classic slips: gamma's or beta's sign flipped, e0 and e1
+    swapped (which flips both), the edge v1 v2 left out (beta + gamma < 1). None where the
+    ray is parallel to the plane."""
+    from fractions import Fraction
+
+    v0, v1, v2, o, d = ([Fraction(c) for c in inputs[k]] for k in ("v0", "v1", "v2", "o", "d"))
+    e0, e1 = [v1[i] - v0[i] for i in range(3)], [v2[i] - v0[i] for i in range(3)]
+    n = [e0[1] * e1[2] - e0[2] * e1[1], e0[2] * e1[0] - e0[0] * e1[2], e0[0] * e1[1] - e0[1] * e1[0]]
+    denom = sum(d[i] * n[i] for i in range(3))
+    if denom == 0:
+        return {}
+    a = [v0[i] - o[i] for i in range(3)]
+    c = [a[1] * d[2] - a[2] * d[1], a[2] * d[0] - a[0] * d[2], a[0] * d[1] - a[1] * d[0]]
+    beta = sum(c[i] * e1[i] for i in range(3)) / denom
+    gamma = -sum(c[i] * e0[i] for i in range(3)) / denom
+    t = sum(a[i] * n[i] for i in range(3)) / denom
+
+    def inside(b, g, closed=True):
+        return b >= 0 and g >= 0 and (b + g <= 1 if closed else b + g < 1)
+
+    return {"beta": float(beta), "gamma": float(gamma), "t": float(t), "inside": inside(beta, gamma),
+            "gamma_sign": inside(beta, -gamma), "beta_sign": inside(-beta, gamma),
+            "swapped_edges": inside(-gamma, -beta), "open_edge": inside(beta, gamma, closed=False)}
+
+
 def lambert(inputs: dict) -> dict:
     """n . w_i for every light of a lambertian case (n the unit normal, w_i toward the light)."""
     normal, position = inputs["normal"], inputs["position"]

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from .assignments import ASSIGNMENTS
 from .checks import IMAGE_FRACTION, IMAGE_LEVELS, checks_for
+from .checks.images import DIFF_LEGEND
 from .checks.statistics import CHI_SQUARE_ALPHA, PIXEL_FRACTION, Z_LIMIT, Z_PIXEL
 
 
@@ -37,7 +38,7 @@ def assignment_readme(a, release: bool = False) -> str:
                   "by more than %d of 255 levels from every pixel in the 3 x 3 neighbourhood of the reference pixel,"
                   % IMAGE_LEVELS,
                   "and up to %.1f%% of the pixels may differ. Every image test writes a diff image" % (100 * IMAGE_FRACTION),
-                  "(yours | reference | differences in red). A failing one names a pixel of its test image",
+                  "(%s). A failing one names a pixel of its test image" % DIFF_LEGEND,
                   "(%s) and the `make render A=%s W=.. H=..` that renders the images at that size."
                   % (" or ".join(sorted({"%d x %d" % c.size for c in checks if c.kind == "image"})), a.short)]
     if any(c.kind == "statistic" for c in checks):

@@ -26,6 +26,7 @@ from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
 from .generate import PACKAGE_DIR, strip_regions, transform, write_files
+from .pixels import SUFFIX as PIXELS_SUFFIX, expected_pixels
 
 MARKER = re.compile(r"^\s*(?:#|//)\s*release: solves\s+(?P<ids>[a0-9 ]+?)\s*$")
 MARKER_LINES = 5        # a marker sits on one of a file's first lines
@@ -157,7 +158,7 @@ def is_hidden_probe(module: str) -> bool:
 # --- the student repository ---------------------------------------------------------------
 
 CHECKER = "rtfgu_checker"              # the student checker's package in a release
-CHECKER_MODULES = ("assignments.py", "results.py", "local.py")
+CHECKER_MODULES = ("assignments.py", "results.py", "local.py", "pixels.py")
 
 
 def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:
@@ -192,6 +193,7 @@ def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:
             png = folder / (c.slug + ".png")
             if c.kind == "image" and png.is_file():
                 files["reference/%s/%s" % (a.id, png.name)] = png.read_bytes()
+                files["reference/%s/%s%s" % (a.id, c.slug, PIXELS_SUFFIX)] = expected_pixels(c)
     return files
 
 
@@ -200,13 +202,15 @@ STUDENT_MAKEFILE = """\
 #   make check A=a03    the assignment's visible tests on your code (diff images in check-results/a03/diffs/)
 #   make render A=a03   the assignment's images rendered with your code, into renders/a03/
 #                       (W=48 H=48: at the size of the image tests, whose pixels their messages name)
+#   make debug-pixel A=a03 T=3.8 X=16 Y=32
+#                       one pixel of image test 3.8, traced through your code beside the expected values
 #   make test [A=a03]   every assignment's (or one's) visible tests, through pytest
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: check render test venv clean
+.PHONY: check render debug-pixel test venv clean
 
 # pip's and setuptools' chatter goes to .venv/install.log, shown only if the install fails.
 $(STAMP): setup.cfg pyproject.toml
@@ -223,6 +227,9 @@ check: $(STAMP)
 
 render: $(STAMP)
 \t$(PY) -m rtfgu_checker render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H))
+
+debug-pixel: $(STAMP)
+\t$(PY) -m rtfgu_checker debug-pixel $(A) $(T) $(X) $(Y)
 
 test: $(STAMP)
 \t$(PY) -m pytest $(if $(A),-k $(A))
@@ -311,7 +318,17 @@ def _student_readme(reveal, assignments) -> str:
         "code gave back and what it should have, often with a hint. It writes",
         "`check-results/<aNN>/summary.txt`, and for every image test a diff image",
         "`check-results/<aNN>/diffs/<test>.png`: your render | the reference | the pixels that",
-        "differ, in red. The grader runs these tests and hidden ones like them.",
+        "differ: red where yours has a colour the reference lacks near there, blue where the",
+        "reference has one yours lacks (a missing object). The grader runs these tests and hidden",
+        "ones like them.",
+        "",
+        "A failing image test names its worst pixel and the command that traces it through your",
+        "code beside what the solution computes there, ray by ray: the shape hit, t, the normal,",
+        "the shader and the colour, with the first value that differs marked:",
+        "",
+        "```",
+        "make debug-pixel A=a03 T=3.8 X=16 Y=32    # test 3.8, column 16, row 32 (row 0 at the top)",
+        "```",
         "",
         "A file of the package is not a program: `python rtfgu/shapes/sphere.py` only tells you",
         "to run `make check`. To try your code yourself, `.venv/bin/python -c 'import rtfgu; ...'`",

@@ -8,6 +8,8 @@ import json
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .checks.images import DIFF_LEGEND
+
 OUTPUT_LIMIT = 8000   # characters of message per test
 IMAGE_LIMIT = 256 * 1024   # bytes of a diff image shown inside a result (a 48 x 48 test's: about 2 KB)
 
@@ -32,10 +34,11 @@ def gradescope_test_output(t) -> dict:
         return {"output": text}
     text = text.replace("the diff image is %s" % Path(t.image).name, "the diff image is below")
     return {"output_format": "html",
-            "output": "<pre>%s</pre>\n<p>yours | reference | differences in red</p>\n"
-                      "<img alt=\"diff image: yours | reference | differences in red\" "
+            "output": "<pre>%s</pre>\n<p>%s</p>\n"
+                      "<img alt=\"diff image: %s\" "
                       "src=\"data:image/png;base64,%s\" style=\"image-rendering: pixelated\">"
-                      % (html.escape(text), base64.b64encode(image).decode())}
+                      % (html.escape(text), html.escape(DIFF_LEGEND), html.escape(DIFF_LEGEND),
+                         base64.b64encode(image).decode())}
 
 
 @dataclass

@@ -56,11 +56,36 @@ def hint_sphere(inputs, want, got):
     return None
 
 
+# The slips that decide inside or outside wrongly (rtfgu.grading.mistakes.triangle), in the
+# order a hint names them.
+TRIANGLE_SLIPS = (("gamma_sign", "a flipped sign of gamma"), ("beta_sign", "a flipped sign of beta"),
+                  ("swapped_edges", "e0 and e1 swapped"), ("open_edge", "the edge v1 v2 left out (beta + gamma < 1)"))
+
+
 def hint_triangle(inputs, want, got):
-    if want["returned"] is False and got.get("returned") is True and isinstance(got.get("ray.tmax"), float) \
-            and inputs["tmin"] <= got["ray.tmax"] < inputs["tmax"]:
-        return ("the ray meets the triangle's plane outside the triangle: a hit needs beta >= 0, "
-                "gamma >= 0 and beta + gamma <= 1")
+    """Names where the ray meets the plane (the exact beta and gamma of the known mistakes)
+    and the slips that give the student's answer there."""
+    known = inputs.get("known") or {}
+    returned = got.get("returned")
+    t = got.get("ray.tmax")
+    if "beta" in known and isinstance(returned, bool) and returned != want["returned"] \
+            and (not returned or (isinstance(t, float) and inputs["tmin"] <= t < inputs["tmax"])):
+        where = "beta = %.6g, gamma = %.6g, beta + gamma = %.6g" % (
+            known["beta"], known["gamma"], known["beta"] + known["gamma"])
+        slips = [text for key, text in TRIANGLE_SLIPS if known.get(key) == returned != known["inside"]]
+        if known.get("open_edge") == returned != known["inside"]:
+            slips = [TRIANGLE_SLIPS[-1][1]]   # on the edge itself: that slip, not the signs
+        if known["inside"] and not returned and not inputs["tmin"] <= known["t"] < inputs["tmax"]:
+            slips = []        # outside the interval: the interval's hint below
+        if slips or known["inside"] != returned:
+            text = ("the ray meets the triangle's plane %s the triangle (%s), but your code %s" % (
+                "inside" if known["inside"] else "outside", where,
+                "reports no hit" if known["inside"] else "reports a hit"))
+            if slips:
+                text += "; %s gives that here" % (slips[0] if len(slips) == 1 else
+                                                   ", ".join(slips[:-1]) + " or " + slips[-1])
+            return text + (". beta weighs v1 (e0 = v1 - v0) and gamma weighs v2 (e1 = v2 - v0); a point is "
+                           "inside when beta >= 0, gamma >= 0 and beta + gamma <= 1")
     return _interval_hint(inputs, want, got)
 
 
@@ -82,7 +107,7 @@ register("a03_intersections", [
     Check("Sphere.intersect_p: only t in [tmin, tmax) counts", 2, ("a03", "observe_sphere_interval"),
           hint=hint_sphere, known="sphere", needs=("shapes/sphere.py",)),
     Check("Triangle.intersect_p: inside, outside and the ray interval", 2, ("a03", "observe_triangle"),
-          hint=hint_triangle, needs=("shapes/triangle.py",)),
+          hint=hint_triangle, known="triangle", needs=("shapes/triangle.py",)),
     Check("normal_at: unit normals of sphere, plane and triangle", 1, ("a03", "observe_normals"), hint=hint_normals),
     image_check("image: lecture 01 scene, the closest hit in flat colours", 2, "lecture01_flat_colors"),
     image_check("image: 02562 default scene in flat colours", 2, "default_flat_colors"),

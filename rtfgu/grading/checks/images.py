@@ -32,6 +32,12 @@ def load_png(path) -> np.ndarray:
     return np.asarray(Image.open(path).convert("RGB"))
 
 
+# What the three panels of a diff image show, and what its colours mean (write_diff_image).
+DIFF_LEGEND = ("yours | reference | differences (red: yours has a colour the reference lacks near there; "
+               "blue: the reference has a colour yours lacks near there)")
+WRONG, MISSING = (255, 0, 0), (0, 96, 255)
+
+
 def neighbourhood_difference(mine: np.ndarray, reference: np.ndarray) -> np.ndarray:
     """Per pixel, the smallest (over the 3 x 3 neighbourhood of the reference pixel) of the
     largest channel difference, in 8-bit levels: a silhouette one pixel off costs nothing."""
@@ -45,14 +51,25 @@ def neighbourhood_difference(mine: np.ndarray, reference: np.ndarray) -> np.ndar
     return best
 
 
-def write_diff_image(mine, reference, difference, bad, path: Path, scale: int = 4) -> None:
-    """yours | reference | difference (grey: small, red: beyond the tolerance), enlarged."""
+def image_differences(mine: np.ndarray, reference: np.ndarray) -> tuple:
+    """(wrong, missing), per pixel in 8-bit levels: how far the student's pixel is from every
+    reference pixel near it (something drawn that should not be there), and how far the
+    reference pixel is from every student pixel near it (something the student's image lacks:
+    a thin object left out is excused by the first, one pixel away from the background, but
+    not by the second). Both forgive a one-pixel shift."""
+    return neighbourhood_difference(mine, reference), neighbourhood_difference(reference, mine)
+
+
+def write_diff_image(mine, reference, wrong, missing, path: Path, scale: int = 4) -> None:
+    """yours | reference | differences (DIFF_LEGEND: grey, small; red, wrong; blue, missing
+    from yours), enlarged."""
     from PIL import Image
 
     h, w = reference.shape[:2]
-    heat = np.clip(difference * 4, 0, 255).astype(np.uint8)
+    heat = np.clip(np.maximum(wrong, missing) * 4, 0, 255).astype(np.uint8)
     diff = np.stack([heat, heat, heat], axis=2)
-    diff[bad] = [255, 0, 0]
+    diff[missing > IMAGE_LEVELS] = MISSING
+    diff[wrong > IMAGE_LEVELS] = WRONG
     gap = np.full((h, 2, 3), 255, dtype=np.uint8)
     mine = mine if mine is not None else np.zeros_like(reference)
     strip = np.concatenate([mine, gap, reference, gap, diff], axis=1)
@@ -66,7 +83,8 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
     h, w = reference.shape[:2]
     if "error" in data:
         if diff_path is not None:
-            write_diff_image(None, reference, np.zeros((h, w), np.int32), np.ones((h, w), bool), diff_path)
+            everything = np.full((h, w), 255, np.int32)
+            write_diff_image(None, reference, everything, everything, diff_path)
         return 0.0, ["rendering the image failed: " + data["error"]], diff_path
     image = np.asarray(data.get("image"), dtype=np.float64)
     if image.shape != (h, w, 3):
@@ -76,22 +94,36 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
         return 0.0, ["the pixel at column %d, row %d (row 0 at the top) is not a finite number (%s): "
                      "a NaN or infinity came out of your code there" % (col, row, image[row, col].tolist())], None
     mine = to_8bit(image)
-    difference = neighbourhood_difference(mine, reference)
+    wrong, missing = image_differences(mine, reference)
+    difference = np.maximum(wrong, missing)
     bad = difference > IMAGE_LEVELS
     allowed = max(1, int(IMAGE_FRACTION * h * w))
     if diff_path is not None:
-        write_diff_image(mine, reference, difference, bad, diff_path)
+        write_diff_image(mine, reference, wrong, missing, diff_path)
     n_bad = int(bad.sum())
-    where = "; the diff image is %s (yours | reference | differences in red)" % diff_path.name if diff_path else ""
+    where = "; the diff image is %s (%s)" % (diff_path.name, DIFF_LEGEND) if diff_path else ""
     if n_bad <= allowed:
         return 1.0, ["%dx%d image matches the reference (%d pixels beyond the tolerance, %d allowed)%s"
                      % (w, h, n_bad, allowed, where)], diff_path
     row, col = np.unravel_index(np.argmax(difference), difference.shape)
     # The pixel is named in the test image, whose size the student's own renders differ from.
     short = get_assignment(check.assignment).short
-    return 0.0, ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
-                 "allowing a one-pixel shift (at most %d may). The largest difference is at column %d, "
-                 "row %d (row 0 at the top) of the %dx%d test image (`make render A=%s W=%d H=%d` renders "
-                 "the assignment's images at that size): the reference pixel is %s, yours is %s%s"
-                 % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, col, row, w, h, short, w, h,
-                    fmt([int(v) for v in reference[row, col]]), fmt([int(v) for v in mine[row, col]]), where)], diff_path
+    kinds = "%d drawn where the reference has nothing like them, %d missing from yours" % (
+        int((wrong > IMAGE_LEVELS).sum()), int(((missing > IMAGE_LEVELS) & (wrong <= IMAGE_LEVELS)).sum()))
+    lines = ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
+             "allowing a one-pixel shift (at most %d may): %s. The largest difference is at column %d, "
+             "row %d (row 0 at the top) of the %dx%d test image (`make render A=%s W=%d H=%d` renders "
+             "the assignment's images at that size): the reference pixel is %s, yours is %s%s"
+             % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, kinds, col, row, w, h, short, w, h,
+                fmt([int(v) for v in reference[row, col]]), fmt([int(v) for v in mine[row, col]]), where)]
+    return 0.0, lines + debug_hint(check, col, row), diff_path
+
+
+def debug_hint(check, x: int, y: int) -> list:
+    """The command that traces pixel (x, y) of a visible image test through the student's code
+    beside the expected values (rtfgu.grading.local.debug_pixel); none for a hidden test."""
+    if check.visibility != "visible":
+        return []
+    return ["`make debug-pixel A=%s T=%s X=%d Y=%d` traces that pixel through your code beside what the "
+            "solution computes there (the shape hit, t, the normal, the colour)"
+            % (get_assignment(check.assignment).short, check.number, x, y)]

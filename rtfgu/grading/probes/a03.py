@@ -95,24 +95,27 @@ def observe_triangle(rt):
         centroid = [sum(p[i] for p in v) / 3 for i in range(3)]
         above = (centroid[0], centroid[1] + 2, centroid[2] + 0.5)
         to = lambda p, o: tuple(p[i] - o[i] for i in range(3))
-        _hit_case(rt, cases, label, make, above, to(centroid, above))                       # centroid
-        _hit_case(rt, cases, label, make, above, to((v[0][0] - 0.3, v[0][1], v[0][2] - 0.3), above))  # outside by v0
-        _hit_case(rt, cases, label, make, above, to((v[1][0] + 0.3, v[1][1], v[1][2] + 0.05), above))
-        _hit_case(rt, cases, label, make, above, to(above, centroid))                      # pointing away
-        _hit_case(rt, cases, label, make, above, to(centroid, above), 1e-5, 0.5)            # beyond tmax
+        corners = dict(v0=list(v[0]), v1=list(v[1]), v2=list(v[2]))   # the known mistakes' inputs
+        _hit_case(rt, cases, label, make, above, to(centroid, above), **corners)            # centroid
+        _hit_case(rt, cases, label, make, above, to((v[0][0] - 0.3, v[0][1], v[0][2] - 0.3), above),
+                  **corners)                                                                  # outside by v0
+        _hit_case(rt, cases, label, make, above, to((v[1][0] + 0.3, v[1][1], v[1][2] + 0.05), above), **corners)
+        _hit_case(rt, cases, label, make, above, to(above, centroid), **corners)           # pointing away
+        _hit_case(rt, cases, label, make, above, to(centroid, above), 1e-5, 0.5, **corners)  # beyond tmax
     def slide_triangle():
         return rt.Triangle(F(*TRIANGLE[0]), F(*TRIANGLE[1]), F(*TRIANGLE[2]), F(1, 1, 1))
     label = "the triangle %s" % (TRIANGLE,)
-    _hit_case(rt, cases, label, slide_triangle, (0.9, 0.9, 0), (0, 0, -1))
+    corners = dict(v0=list(TRIANGLE[0]), v1=list(TRIANGLE[1]), v2=list(TRIANGLE[2]))
+    _hit_case(rt, cases, label, slide_triangle, (0.9, 0.9, 0), (0, 0, -1), **corners)
     # The boundaries the slides define, with inputs whose arithmetic is exact: a ray in the
     # triangle's plane (w . n = 0) misses; a point on the edge v1 v2 (beta + gamma = 1
     # exactly) is inside; a hit at t = tmax is outside [tmin, tmax).
     _hit_case(rt, cases, label + " (a ray in its plane, parallel to it)", slide_triangle,
-              (-2, -0.5, -3), (1, 0, 0))
+              (-2, -0.5, -3), (1, 0, 0), **corners)
     _hit_case(rt, cases, label + " (through the edge v1 v2, beta + gamma = 1)", slide_triangle,
-              (0.5, 0, 0), (0, 0, -1))
+              (0.5, 0, 0), (0, 0, -1), **corners)
     _hit_case(rt, cases, label + " (the hit at exactly t = tmax = 3)", slide_triangle,
-              (0, 0, 0), (0, 0, -1), 1e-5, 3.0)
+              (0, 0, 0), (0, 0, -1), 1e-5, 3.0, **corners)
     return cases.result()
 
 

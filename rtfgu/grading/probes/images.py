@@ -33,3 +33,27 @@ def render_homework(rt, scene: str, width: int = 0, height: int = 0):
     fn = rt.scenes.get_scene(scene)
     w, h = fn.size
     return image(rt.renderer.render_reference(fn(), width or w, height or h))
+
+
+# The path on which a test's image is made, when it is not the lecture layer's pixel loop:
+# (backend, formula) for rtfgu.debug.trace_pixel.
+DEBUG_PATHS = {"a06.render_wgsl": ("wgpu", "slide")}
+
+
+def debug_pixel(rt, scene: str, width: int, height: int, x: int, y: int, expected: list, rtol: float,
+                title: str, render=None, shaders=None, shadows=None):
+    """Pixel (x, y) of the test image traced through the student's code (rtfgu.debug), side
+    by side with the ``expected`` bounces (dicts of rtfgu.debug.Bounce's fields, from the
+    solution): {"report": text, "differs": bool}. Numbers agree within ``rtol`` (relative
+    above 1, absolute below); a float32 path within rtfgu.debug's float32 tolerance."""
+    import importlib
+
+    debug = importlib.import_module("rtfgu.debug")
+    built = build_scene(rt, scene, shaders, shadows)
+    backend, formula = DEBUG_PATHS.get(render, ("reference", None))
+    yours = debug.trace_pixel(built, x, y, width, height, backend, None, formula)
+    wanted = [debug.Bounce(**{k: tuple(v) if isinstance(v, list) else v for k, v in b.items()}) for b in expected]
+    tolerance = max(rtol, debug.TOLERANCES["float32"]) if backend == "wgpu" else rtol
+    label = "yours (%s)" % ("your WGSL" if backend == "wgpu" else "your code")
+    report = debug.report(title, {"expected": wanted, label: yours}, {label: tolerance})
+    return {"report": report, "differs": debug.first_difference(wanted, yours, tolerance) is not None}
