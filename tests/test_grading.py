@@ -249,13 +249,21 @@ def test_a_planted_bug_whose_text_is_gone_from_the_solution_or_ambiguous_is_an_e
         describe("a03_nothing")
 
 
-def test_an_endless_loop_is_stopped_at_the_time_limit_and_the_other_tests_run(tmp_path):
-    # Triangle.normal_at never returns: the normals test and the default-scene image call it.
+def test_an_endless_loop_costs_one_time_limit_names_its_place_and_the_other_tests_run(tmp_path):
+    """Triangle.normal_at never returns: the normals test (3.6) and the default-scene image (3.8)
+    call it. 3.6 waits out the limit and names the line of the loop (from the traceback dumped
+    just before the limit); in 3.8 the stopped function fails at once, naming 3.6; the tests
+    that never call it keep their points."""
     result = grade("a03", make_submission("a03_infinite_loop", tmp_path / "sub"), tmp_path / "out", time_limit=2.0)
     tests = _by_number(result)
-    for number in ("3.6", "3.8"):
-        assert tests[number].score == 0
-        assert "time limit of 2 s" in tests[number].output
+    loop = solution_files("a03")["shapes/triangle.py"].split("\n").index("        return normalize(self.n)") + 1
+    assert tests["3.6"].score == 0 and "time limit of 2 s" in tests["3.6"].output
+    at = [n for n in (loop, loop + 1) if "rtfgu/shapes/triangle.py, line %d, in normal_at" % n in tests["3.6"].output]
+    assert at, tests["3.6"].output                         # the loop's `while True:` or its `pass`
+    assert tests["3.6"].cause == "time limit (2 s) at shapes/triangle.py:%d" % at[0]
+    assert tests["3.8"].score == 0 and tests["3.8"].cause == "time limit in test 3.6"
+    assert "Triangle.normal_at was not run: it did not finish in test 3.6" in tests["3.8"].output
+    assert "time limit of 2 s" not in tests["3.8"].output      # it did not wait out a limit of its own
     for number in ("3.1", "3.2", "3.3", "3.4", "3.5", "3.7", "3.9", "3.10"):
         assert tests[number].score == tests[number].max_score, tests[number].output
 

@@ -14,7 +14,7 @@ import pytest
 
 from rtfgu.grading.assignments import ASSIGNMENTS, block_table
 from rtfgu.grading.checks import checks_for
-from rtfgu.grading.generate import PACKAGE_DIR, find_blocks, solution_files, source_text, write_files
+from rtfgu.grading.generate import PACKAGE_DIR, find_blocks, solution_files, source_text, student_files, write_files
 from rtfgu.grading.release import build_package, probe_files, solves, write_release
 
 from planted import apply_replacements, describe
@@ -326,7 +326,8 @@ def test_debug_pixel_compares_the_students_code_with_the_expected_values_at_the_
     done = _run(own, "debug-pixel", "a03", "8", x, y)        # the test's number within a03 will do
     assert done.returncode == 0 and "agrees with expected" in done.stdout, done.stdout + done.stderr
     # Where the student has no code yet, and what an image test is not.
-    done = _run(release, "debug-pixel", "a03", "3.8", x, y)
+    write_files(student_files("a03"), own / "rtfgu")
+    done = _run(own, "debug-pixel", "a03", "3.8", x, y)
     assert done.returncode == 2 and "not written yet" in done.stderr
     done = _run(release, "debug-pixel", "a03", "3.2", "0", "0")
     assert done.returncode == 2 and "is not an image test" in done.stderr
@@ -338,6 +339,40 @@ def test_debug_pixel_compares_the_students_code_with_the_expected_values_at_the_
         stored = {p.name for p in (release / "rtfgu_checker" / "reference" / a.id).glob("*.pixels.npz")}
         assert stored == {c.slug + ".pixels.npz" for c in checks_for(a.id)
                           if c.kind == "image" and c.visibility == "visible"}, a.id
+
+
+def test_the_release_checker_names_where_an_endless_loop_is_and_waits_for_it_once(release, tmp_path):
+    own = tmp_path / "release"
+    shutil.copytree(release, own)
+    spec = describe("a03_infinite_loop")
+    write_files(apply_replacements(solution_files("a03"), spec["REPLACE"], "a03_infinite_loop"), own / "rtfgu")
+    done = _run(own, "check", "a03", "--time-limit", "2")
+    assert done.returncode == 1
+    assert re.search(r"time limit of 2 s: your code did not finish; your code was at rtfgu/shapes/triangle.py, "
+                     r"line \d+, in normal_at", done.stdout), done.stdout
+    summary = (own / "check-results" / "a03" / "summary.txt").read_text()
+    assert "Triangle.normal_at was not run: it did not finish in test 3.6" in summary, summary
+    assert summary.count("time limit of 2 s") == 1, summary
+
+
+def test_make_release_names_the_visible_tests_students_cannot_pass_with_the_assignments_own_code():
+    """Found by running them in the release: a09's furnace and Cornell box render with a03's
+    shapes and a04's (and a05's) materials; in a release revealing nothing, a06's image needs
+    a WGSL camera that the release carries once a02 is revealed."""
+    from rtfgu.grading.release_gaps import release_gaps, report
+
+    gaps = {g.test: g for g in release_gaps(("a01", "a02"), ["a09"])}
+    assert gaps["9.4"].needs == ["a03", "a04"] and gaps["9.5"].needs == ["a03", "a04", "a05"]
+    assert "9.1" not in gaps and "9.6" not in gaps                 # the map alone: a09's own code
+    assert all(not g.left_out and not g.failure for g in gaps.values())
+    lines = report(list(gaps.values()))
+    visible = [c for c in checks_for("a09") if c.visibility == "visible"]
+    assert lines[0].startswith("warning: a09: %d of its %d visible tests (%g of %g points) cannot pass" % (
+        len(gaps), len(visible), sum(g.points for g in gaps.values()), sum(c.weight for c in visible)))
+    assert "  9.5 (3 points): runs a03, a04, a05" in lines
+    (gap,) = release_gaps((), ["a06"])
+    assert gap.test == "6.4" and gap.left_out == [("wgsl/camera_pinhole.wgsl", ["a02"])], gap
+    assert "left out of this release until a02 is revealed" in gap.describe()
 
 
 def test_make_render_and_make_check_without_an_assignment_say_what_they_need(release):

@@ -97,6 +97,8 @@ def main(argv=None) -> int:
     p = sub.add_parser("release", help="write a student repository (no solution in it) into OUT")
     p.add_argument("out")
     p.add_argument("--reveal", default="", help="assignments whose solutions the release carries, e.g. a01,a02")
+    p.add_argument("--no-gaps", action="store_true",
+                   help="do not run the visible tests to find those students cannot pass in this release")
     p = sub.add_parser("autograder-zip", help="build the Gradescope autograder bundle")
     p.add_argument("assignment")
     p.add_argument("--out", default=None, help="default dist/autograder-<id>.zip")
@@ -197,6 +199,13 @@ def main(argv=None) -> int:
             written = write_release(args.out, reveal)
             print("wrote a student release (%d files, revealed: %s) into %s"
                   % (len(written), ", ".join(reveal) or "none", args.out))
+            if not args.no_gaps:
+                from .release_gaps import release_gaps, report
+
+                print("checking which visible tests students can pass in it with each assignment's own code "
+                      "(--no-gaps skips this)", flush=True)
+                for line in report(release_gaps(reveal)):
+                    print(line)
         elif args.command == "autograder-zip":
             from .autograder import build_zip
 

@@ -25,6 +25,7 @@ from .checks import checks_for, drawn_inputs, judge_cases
 from .checks.images import judge_image, neighbourhood_difference  # noqa: F401  (tests import it here)
 from .results import Result, TestResult
 from .sandbox import choose_isolation, hidden_from_sandbox_user, prepare, run_child, work_folder
+from .timeouts import STOPPED, stopped_entry, stuck_at, where
 
 REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
 MESSAGE_LIMIT = 8000                   # characters of one test's message in the results
@@ -156,14 +157,18 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     with hidden_from_sandbox_user(isolation, hidden), work_folder() as tmp:
         ws = prepare(a, submission, tmp / "work")
         result.notes.extend(ws.notes)
+        stopped = []          # functions a time limit stopped (rtfgu.grading.timeouts)
         for check in checks_for(a.id):
             if visible_only and check.visibility != "visible":
                 continue
             if only is not None and check.slug not in only:
                 continue
             rng = random.SystemRandom() if seed is None else random.Random("%s/%s" % (seed, check.slug))
-            result.tests.append(_run_check(a, check, ws, tmp, refs, out_dir, isolation,
-                                           time_limit, memory_mb, output_limit, log, rng))
+            test, stuck = _run_check(a, check, ws, tmp, refs, out_dir, isolation,
+                                     time_limit, memory_mb, output_limit, log, rng, stopped)
+            result.tests.append(test)
+            if stuck is not None:
+                stopped.append(stopped_entry(stuck, check.number))
     now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
     if now != digest:
         for path, data in ref_files.items():
@@ -179,13 +184,16 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     return result
 
 
-def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_mb, output_limit, log, rng):
+def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_mb, output_limit, log, rng,
+               stopped=()):
+    """(the test's result, where a time limit found the student's code or None)."""
     time_limit = check.time_limit or time_limit
     probe, reference = ["check", a.id, check.slug], refs[check.slug]
     if check.draw is not None:
         (module, function, kwargs), reference = drawn_inputs(check, rng)
         probe = ["probe", module, function, json.dumps(kwargs)]
     broken = [ws.broken[f] for f in _needs(check, a) if f in ws.broken]
+    stuck = None
     diff_path = out_dir / "diffs" / (check.slug + ".png") if out_dir is not None and check.kind == "image" else None
     image_path = None
     seconds = 0.0
@@ -198,15 +206,22 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
     else:
         memory = memory_mb if check.memory_mb is None else check.memory_mb
         child = run_child(ws, tmp / "scratch" / check.slug, probe, isolation=isolation,
-                          time_limit=time_limit, memory_mb=memory, output_limit=output_limit)
+                          time_limit=time_limit, memory_mb=memory, output_limit=output_limit, stopped=stopped)
         seconds, output = child.seconds, child.output
         if child.status != "ok":
             failure, cause = _child_failure(child, time_limit, memory)
             fraction, lines = 0.0, [failure]
+            stuck = stuck_at(child.dump, a.files) if child.status == "timeout" else None
+            if stuck is not None:
+                lines.append("Your code was at %s when the time ran out; the later tests do not run that "
+                             "function again (a call to it fails at once)." % where(stuck))
+                cause += " at %s:%d" % stuck[:2]
         else:
             raised = child.data.get("error")
             if isinstance(raised, str):   # the student's code raised as a whole (probes/boot.py)
+                stopped_in = STOPPED.search(raised)
                 cause = ("memory limit (%d MB)" % memory if raised.startswith("MemoryError")
+                         else "time limit in test %s" % stopped_in.group(1) if stopped_in
                          else "exception: " + (raised.splitlines() or [""])[0][:120])
             # The answer is the child's to write (student code can reach the pipe): one that
             # does not have the shape the probe gives costs this test only.
@@ -236,4 +251,4 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
                       check.visibility, message, str(image_path) if image_path else None, cause)
     if log:
         log("%-5s %-70s %5.2f / %g  (%.2f s)" % (test.number, test.name[:70], test.score, test.max_score, seconds))
-    return test
+    return test, stuck

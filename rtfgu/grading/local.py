@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import select
 import signal
 import subprocess
@@ -26,30 +27,37 @@ from .checks import REFERENCE_DIR, checks_for, judge_cases, stored_probe
 from .checks.images import DIFF_LEGEND, judge_image, load_png, write_png
 from .pixels import SUFFIX as PIXELS_SUFFIX, pixel_bounces
 from .results import Result, TestResult
+from .timeouts import boot_options, stopped_entry, stuck_at, where
 
 PROBES = Path(__file__).resolve().parent / "probes"
+# The stub of an assignment's function, as probes/support.describe_exception names it.
+OTHER_STUB = re.compile(r"NotImplementedError\('(a\d\d): ([^']+)'\)")
 ANSWER_LIMIT = 64 * 1024 * 1024
 
 
-def run_probe(root: Path, probe: tuple, time_limit: float):
-    """(data or None, what the code printed, why it failed or None): ``probe`` run by a new
-    interpreter with ``root`` (the folder holding the student's rtfgu) first on its path."""
+def run_probe(root: Path, probe: tuple, time_limit: float, stopped=(), student_files=()):
+    """(data or None, what the code printed, why it failed or None, where a time limit found the
+    code in ``student_files`` or None): ``probe`` run by a new interpreter with ``root`` (the
+    folder holding the student's rtfgu) first on its path; ``stopped``, the functions earlier
+    time limits stopped (rtfgu.grading.timeouts)."""
     module, function, kwargs = probe
     read_fd, write_fd = os.pipe()
-    with tempfile.TemporaryFile() as printed:
+    with tempfile.TemporaryFile() as printed, tempfile.TemporaryFile() as dump:
         process = subprocess.Popen(
-            [sys.executable] + (["-S"] if sys.flags.no_site else []) + [str(PROBES / "boot.py"), str(root), str(PROBES.parent), "", str(write_fd),
-             "probe", module, function, json.dumps(kwargs)],
-            stdin=subprocess.DEVNULL, stdout=printed, stderr=subprocess.STDOUT, pass_fds=(write_fd,),
+            [sys.executable] + (["-S"] if sys.flags.no_site else []) + [
+                str(PROBES / "boot.py"), str(root), str(PROBES.parent), "", str(write_fd),
+                boot_options(dump.fileno(), time_limit, stopped), "probe", module, function, json.dumps(kwargs)],
+            stdin=subprocess.DEVNULL, stdout=printed, stderr=subprocess.STDOUT, pass_fds=(write_fd, dump.fileno()),
             cwd=str(root), start_new_session=True)
         os.close(write_fd)
-        chunks, size, failure = [], 0, None
+        chunks, size, failure, timed_out = [], 0, None, False
         deadline = time.monotonic() + time_limit
         try:
             while True:
                 left = deadline - time.monotonic()
                 if left <= 0:
                     failure = "stopped after the time limit of %g s: your code did not finish" % time_limit
+                    timed_out = True
                     break
                 ready, _, _ = select.select([read_fd], [], [], left)
                 if not ready:
@@ -71,14 +79,19 @@ def run_probe(root: Path, probe: tuple, time_limit: float):
             process.wait()
         printed.seek(0)
         output = printed.read(4000).decode("utf-8", "replace")
+        dump.seek(0)
+        stuck = stuck_at(dump.read(16000).decode("utf-8", "replace"), student_files) if timed_out else None
     if failure is None and not chunks:
         failure = "the test process exited (code %s) before it answered" % process.returncode
+    if stuck is not None:
+        failure += ("; your code was at %s when the time ran out (the later tests do not run that function "
+                    "again: a call to it fails at once)" % where(stuck))
     if failure is not None:
-        return None, output, failure
+        return None, output, failure, stuck
     try:
-        return json.loads(b"".join(chunks)), output, None
+        return json.loads(b"".join(chunks)), output, None, None
     except ValueError:
-        return None, output, "the test's answer was not readable"
+        return None, output, "the test's answer was not readable", None
 
 
 def load_reference(check, reference_dir: Path = REFERENCE_DIR):
@@ -98,13 +111,17 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
     out_dir = Path(out_dir) if out_dir is not None else None
     start = time.monotonic()
     result = Result(a.id, str(root / "rtfgu"), isolation="none (your own code, on your machine)")
+    stopped = []      # functions a time limit stopped (rtfgu.grading.timeouts)
     for c in checks_for(a.id):
         if c.visibility != "visible" or (only is not None and c.slug not in only):
             continue
         t0 = time.monotonic()
         reference = load_reference(c)
-        data, output, failure = run_probe(root, stored_probe(c, reference),
-                                          c.time_limit or (time_limit * 6 if c.kind == "image" else time_limit))
+        data, output, failure, stuck = run_probe(
+            root, stored_probe(c, reference), c.time_limit or (time_limit * 6 if c.kind == "image" else time_limit),
+            stopped, a.files)
+        if stuck is not None:
+            stopped.append(stopped_entry(stuck, c.number))
         image = None
         if failure is not None:
             fraction, lines = 0.0, [failure]
@@ -119,6 +136,11 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
                                         % type(error).__name__]
         else:
             fraction, lines = judge_cases(c, data, reference)
+        other = OTHER_STUB.search("\n".join(lines)) if fraction < 1.0 else None
+        if other and other.group(1) != a.short:
+            lines.append("This test also runs %s of %s, which your copy does not have yet: it passes here once you "
+                         "have written %s (the grader runs it with the solution of %s)."
+                         % (other.group(2), other.group(1), other.group(1), other.group(1)))
         if output.strip() and fraction < 1.0:
             lines.append("What your code printed:\n" + output)
         message = "\n".join(lines) if lines else "all cases right"
@@ -148,7 +170,7 @@ def render(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, 
     out.mkdir(parents=True, exist_ok=True)
     failed = 0
     for name in a.images:
-        data, output, failure = run_probe(root, ("images", "render_homework",
+        data, output, failure, _ = run_probe(root, ("images", "render_homework",
                                                  {"scene": name, "width": width, "height": height}), 3600)
         if failure is None and "error" in data:
             failure = data["error"]
@@ -199,7 +221,7 @@ def debug_pixel(assignment, test, x: int, y: int, root=".", reference_dir: Path 
              % (a.short, c.number, c.name, x, y, width, height))
     probe = ("images", "debug_pixel", dict(kwargs, x=x, y=y, expected=pixel_bounces(path, x, y),
                                            rtol=c.rtol, title=title))
-    data, output, failure = run_probe(Path(root).resolve(), probe, c.time_limit or a.time_limit * 6)
+    data, output, failure, _ = run_probe(Path(root).resolve(), probe, c.time_limit or a.time_limit * 6)
     if failure is None and "error" in data:
         failure = data["error"]
     if failure is not None and failure.startswith("PathNotInRelease"):

@@ -158,7 +158,7 @@ def is_hidden_probe(module: str) -> bool:
 # --- the student repository ---------------------------------------------------------------
 
 CHECKER = "rtfgu_checker"              # the student checker's package in a release
-CHECKER_MODULES = ("assignments.py", "results.py", "local.py", "pixels.py")
+CHECKER_MODULES = ("assignments.py", "results.py", "local.py", "pixels.py", "timeouts.py")
 
 
 def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:

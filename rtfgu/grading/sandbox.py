@@ -59,6 +59,7 @@ from pathlib import Path
 from .archive import find_files, unpack_submission
 from .generate import PACKAGE_DIR, student_files
 from .release import build_package, probe_files
+from .timeouts import boot_options
 
 RESULT_LIMIT = 64 * 1024 * 1024        # bytes of JSON a child may send back
 SANDBOX_UID = int(os.environ.get("RTFGU_SANDBOX_UID", "64055"))
@@ -916,6 +917,7 @@ class ChildResult:
     output: str          # the first part of what the child printed
     seconds: float
     detail: str = ""
+    dump: str = ""       # the child's tracebacks shortly before its time limit (rtfgu.grading.timeouts)
 
 
 # The child's whole command line besides the interpreter: its boot arguments (the folders of
@@ -944,12 +946,13 @@ def _pipe_with(data: bytes) -> int:
 
 
 def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time_limit: float = 10.0,
-              memory_mb: int = 1024, output_limit: int = 1024 * 1024) -> ChildResult:
+              memory_mb: int = 1024, output_limit: int = 1024 * 1024, stopped=()) -> ChildResult:
     """Run one probe (["check", assignment id, slug], ["probe", module, function, kwargs as
     JSON] or ["render", scene, width, height]) in a new interpreter under ``isolation``; its
     answer is JSON through a pipe, its output goes to an unnamed file the grader keeps open
     (at most ``output_limit`` bytes). ``scratch`` is the child's working folder under the
-    fallback (its own, mode 0700)."""
+    fallback (its own, mode 0700). ``stopped``: the student functions earlier time limits
+    stopped (rtfgu.grading.timeouts); the result holds the child's tracebacks on a timeout."""
     scratch = Path(scratch)
     scratch.parent.mkdir(parents=True, exist_ok=True)
     scratch.mkdir(exist_ok=True)
@@ -965,10 +968,13 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         package, probes = INSIDE / "package", INSIDE / "probes"
     else:
         package, probes = ws.package, ws.probes
-    boot = [str(probes / BOOT), str(package), str(probes), os.pathsep.join(sites), str(write_fd)] + [str(p) for p in probe]
+    dump = tempfile.TemporaryFile(dir=str(scratch.parent))     # the tracebacks before the limit
+    dump_fd = os.dup(dump.fileno())
+    boot = [str(probes / BOOT), str(package), str(probes), os.pathsep.join(sites), str(write_fd),
+            boot_options(dump_fd, time_limit, stopped)] + [str(p) for p in probe]
     command = [python, "-I", "-S", "-c", BOOTSTRAP]
-    fds = [read_fd, write_fd]
-    pass_fds = [write_fd]
+    fds = [read_fd, write_fd, dump_fd]
+    pass_fds = [write_fd, dump_fd]
     namespaces = None
     if isolation == "bwrap":
         bwrap = find_bwrap()
@@ -1002,6 +1008,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
                                    preexec_fn=_preexec(limits, isolation, uid, namespaces))
     except BaseException:
         output.close()
+        dump.close()
         os.close(read_fd)
         raise
     finally:
@@ -1056,6 +1063,8 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         with output:
             out_size = os.fstat(output.fileno()).st_size
             out_text = _read_output(output.fileno())
+        with dump:
+            dump_text = _read_output(dump.fileno(), 16000) if status == "timeout" else ""
     seconds = time.monotonic() - start
     if status is None and out_size >= output_limit:
         status, detail = "too much output", "your code printed %d bytes or more; the limit is %d" % (
@@ -1078,7 +1087,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
         if not isinstance(data, dict):
             return ChildResult("bad answer", None, out_text, seconds, "the test's answer was not an object")
         return ChildResult("ok", data, out_text, seconds)
-    return ChildResult(status, None, out_text, seconds, detail)
+    return ChildResult(status, None, out_text, seconds, detail, dump_text)
 
 
 def _read_output(fd: int, limit: int = 2000) -> str:

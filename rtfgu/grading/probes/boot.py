@@ -1,9 +1,12 @@
-"""The entry of a test's interpreter: ``python -I -S boot.py PACKAGE PROBES SITE FD PROBE...``.
+"""The entry of a test's interpreter: ``python -I -S boot.py PACKAGE PROBES SITE FD OPTIONS PROBE...``.
 
 It puts the folder holding the student's ``rtfgu`` (PACKAGE), the folder holding this probe
 package (PROBES) and the site-packages (SITE, joined by os.pathsep) on the path, runs one
-probe with the student's package, and writes the probe's JSON answer to the pipe FD. It
-imports nothing of the grader: it runs next to the student's code.
+probe with the student's package, and writes the probe's JSON answer to the pipe FD. OPTIONS
+is JSON (rtfgu.grading.timeouts.boot_options): ``dump`` [fd, seconds], where faulthandler
+writes every thread's traceback shortly before the time limit, and ``stopped``, the student
+functions that an earlier test's time limit stopped, which raise instead of running
+(support.stop_functions). It imports nothing of the grader: it runs next to the student's code.
 
 PROBE is one of
   ``probe MODULE FUNCTION KWARGS``  probes.run(MODULE, FUNCTION, json.loads(KWARGS), rt);
@@ -11,6 +14,7 @@ PROBE is one of
                                     this file (written when the probes are copied);
   ``render SCENE WIDTH HEIGHT``     a homework image by the lecture layer (0: its own size).
 """
+import faulthandler
 import importlib
 import json
 import os
@@ -40,8 +44,14 @@ def main(argv) -> None:
     sys.path[:] = [package, probes] + [d for d in site_dirs.split(os.pathsep) if d] + \
         [p for p in sys.path if p != HERE]
     fd = int(fd)
+    options = json.loads(argv[5])
+    if options.get("dump"):
+        dump_fd, seconds = options["dump"]
+        faulthandler.dump_traceback_later(float(seconds), file=int(dump_fd))
+    argv = argv[:5] + argv[6:]
     probe_package = importlib.import_module(PACKAGE_NAME)
-    describe_exception = importlib.import_module(PACKAGE_NAME + ".support").describe_exception
+    support = importlib.import_module(PACKAGE_NAME + ".support")
+    describe_exception = support.describe_exception
 
     try:
         module, function, kwargs = _probe(argv[5], argv[6:])
@@ -50,6 +60,7 @@ def main(argv) -> None:
             raise RuntimeError("rtfgu was imported from %s, not from the student package" % rt.__file__)
         for name in SUBMODULES:
             importlib.import_module("rtfgu." + name)
+        support.stop_functions(options.get("stopped", []))
         data = probe_package.run(module, function, kwargs, rt)
     except BaseException as error:  # the student's import or code failed as a whole
         data = {"error": describe_exception(error)}

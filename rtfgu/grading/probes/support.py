@@ -14,6 +14,37 @@ class StudentError(Exception):
     """The student's code returned something of the wrong kind; the message says what."""
 
 
+class StoppedFunction(StudentError):
+    """A student function that an earlier test's time limit stopped was called again."""
+
+
+def stop_functions(stopped) -> None:
+    """Replace each student function of ``stopped`` ([file under rtfgu/, function name, line,
+    test number]: where an earlier test's time limit found the code) by one that raises
+    StoppedFunction: the tests that would run it again fail at once, with the place, instead
+    of each waiting out its own time limit (rtfgu.grading.timeouts)."""
+    import importlib
+    import types
+
+    for relpath, name, line, number in stopped:
+        module = importlib.import_module("rtfgu." + relpath[:-len(".py")].replace("/", "."))
+        owners = [module] + [v for v in vars(module).values() if isinstance(v, type) and v.__module__ == module.__name__]
+        found = [(owner, key, f) for owner in owners for key, f in vars(owner).items()
+                 if isinstance(f, types.FunctionType) and f.__code__.co_name == name
+                 and f.__code__.co_firstlineno <= line]
+        if not found:
+            continue
+        owner, key, f = max(found, key=lambda item: item[2].__code__.co_firstlineno)
+        label = ("%s.%s" % (owner.__name__, key)) if isinstance(owner, type) else key
+        message = ("%s was not run: it did not finish in test %s (your code was at rtfgu/%s, line %d)"
+                   % (label, number, relpath, line))
+
+        def stopped_function(*args, _message=message, **kwargs):
+            raise StoppedFunction(_message)
+
+        setattr(owner, key, stopped_function)
+
+
 def _type_name(value) -> str:
     return type(value).__name__
 
