@@ -227,3 +227,36 @@ def test_arrays_too_large_for_a_uniform_binding_go_to_storage():
     kinds = {b.name: b.kind for b in assemble(compile_scene(scene, "float32")).bindings}
     assert kinds["materials"] == "storage"
     assert kinds["spheres"] == "uniform" and kinds["camera"] == "uniform"
+
+
+def test_a_process_without_a_runtime_dir_gets_a_private_one_and_mesa_stays_quiet(wgpu_device, tmp_path, monkeypatch):
+    """Mesa's Vulkan driver (lavapipe) prints "error: XDG_RUNTIME_DIR is invalid or not set"
+    through libwayland once per probe where the variable is missing (a container, CI, ssh);
+    the device gives the process a private, empty one first. A folder others can write to is
+    not kept either (the XDG Base Directory specification requires mode 0700)."""
+    import os
+    import stat
+    import subprocess
+    import sys
+
+    monkeypatch.delenv("XDG_RUNTIME_DIR", raising=False)
+    wgsl_device._runtime_dir()
+    made = os.environ["XDG_RUNTIME_DIR"]
+    info = os.stat(made)
+    assert stat.S_ISDIR(info.st_mode) and info.st_uid == os.getuid() and stat.S_IMODE(info.st_mode) == 0o700
+    open_folder = tmp_path / "open"
+    open_folder.mkdir()
+    open_folder.chmod(0o777)
+    monkeypatch.setenv("XDG_RUNTIME_DIR", str(open_folder))
+    wgsl_device._runtime_dir()
+    assert os.environ["XDG_RUNTIME_DIR"] not in (str(open_folder), made)
+    kept = os.environ["XDG_RUNTIME_DIR"]
+    wgsl_device._runtime_dir()
+    assert os.environ["XDG_RUNTIME_DIR"] == kept
+    # As a user runs it: a wgpu render in a process without the variable prints no such error.
+    env = {k: v for k, v in os.environ.items() if k != "XDG_RUNTIME_DIR"}
+    done = subprocess.run([sys.executable, "-m", "rtfgu", "render", "default_flat_colors", "--backend", "wgpu",
+                           "--width", "8", "--height", "8", "--out", str(tmp_path / "x.png")],
+                          env=env, capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "XDG_RUNTIME_DIR" not in done.stdout + done.stderr

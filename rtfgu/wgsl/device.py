@@ -25,11 +25,38 @@ def _pick(adapters):
     return min(adapters, key=lambda a: rank.get(a.info.get("adapter_type", "Unknown"), 3))
 
 
+def _runtime_dir() -> None:
+    """Give the process an XDG_RUNTIME_DIR where it has none (a container, a CI job, ssh
+    without a login session): Mesa's Vulkan driver asks libwayland for a display, which
+    prints "error: XDG_RUNTIME_DIR is invalid or not set in the environment." once per
+    probe otherwise, alarming and meaningless for an off-screen render. The folder is the
+    process's own (mode 0700, as the XDG Base Directory specification requires), empty, so
+    no display is found there either."""
+    import os
+    import stat
+    import tempfile
+
+    current = os.environ.get("XDG_RUNTIME_DIR")
+    if current:
+        try:
+            info = os.stat(current)
+            if stat.S_ISDIR(info.st_mode) and info.st_uid == os.getuid() and not info.st_mode & 0o077:
+                return
+        except OSError:
+            pass
+    import atexit
+
+    folder = tempfile.mkdtemp(prefix="rtfgu-runtime-")
+    atexit.register(lambda: os.path.isdir(folder) and not os.listdir(folder) and os.rmdir(folder))
+    os.environ["XDG_RUNTIME_DIR"] = folder
+
+
 def get_device():
     """(adapter, device), created on the first call and cached for the process."""
     global _DEVICE
     if _DEVICE is not None:
         return _DEVICE
+    _runtime_dir()
     try:
         import wgpu
     except Exception as error:  # ImportError, or wgpu-native's library failing to load
