@@ -79,9 +79,11 @@ PLANTED = [
     # The classic barycentric slips: the hint names them with the exact beta and gamma; the diff
     # image counts the triangle missing where the reference has it.
     ("a03_triangle_gamma_sign", "a03", {"3.5": "a flipped sign of gamma, a flipped sign of beta or e0 and e1 "
-                                               "swapped gives that here", "3.8": "missing from yours",
+                                               "swapped gives that here",
+                                        "3.8": "35 unlike every reference pixel near them, 22 more are details",
                                         "3.9": "closest shape should be"}),
-    ("a03_triangle_swapped_edges", "a03", {"3.5": "(beta = 0.333333, gamma = 0.333333", "3.8": "missing from yours",
+    ("a03_triangle_swapped_edges", "a03", {"3.5": "(beta = 0.333333, gamma = 0.333333",
+                                           "3.8": "30 unlike every reference pixel near them, 28 more are details",
                                            "3.9": "closest shape should be"}),
     ("a03_triangle_closed_tmax", "a03", {"3.5": "t = tmax = 3"}),
     ("a02_half_pixel_offset", "a02", {"2.1": "half-pixel offset", "2.3": "pixels", "2.5": "half-pixel offset"}),
@@ -517,7 +519,7 @@ def test_a_thin_object_left_out_is_counted_missing_and_shown_in_blue(tmp_path):
     assert check.kind == "image" and check.visibility == "visible"
     diff = tmp_path / "diff.png"
     fraction, lines, _ = judge_image(check, {"image": (mine / 255.0).tolist()}, ref, diff)
-    assert fraction == 0.0 and "0 drawn where the reference has nothing like them, 12 missing from yours" in lines[0]
+    assert fraction == 0.0 and "0 unlike every reference pixel near them, 12 more are details of the reference missing from yours" in lines[0]
     assert "make debug-pixel A=a03 T=3.8 X=8 Y=" in lines[-1]
     from PIL import Image
     strip = np.asarray(Image.open(diff).convert("RGB"))

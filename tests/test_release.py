@@ -355,6 +355,29 @@ def test_the_release_checker_names_where_an_endless_loop_is_and_waits_for_it_onc
     assert summary.count("time limit of 2 s") == 1, summary
 
 
+def test_make_render_compares_with_the_full_size_reference_the_release_holds(release, tmp_path):
+    own = tmp_path / "release"
+    shutil.copytree(release, own)
+    spec = describe("a03_triangle_gamma_sign")
+    write_files(apply_replacements(solution_files("a03"), spec["REPLACE"], "a03_triangle_gamma_sign"), own / "rtfgu")
+    done = _run(own, "render", "a03")
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "lecture01_flat_colors.png: the same as the reference" in done.stdout      # no triangle in it
+    found = re.search(r"default_flat_colors.png: (\d+) pixels differ from the reference; default_flat_colors_diff.png",
+                      done.stdout)
+    assert found and int(found.group(1)) > 1000, done.stdout
+    from PIL import Image
+    assert Image.open(own / "renders" / "a03" / "default_flat_colors_diff.png").size == (3 * 512 + 4, 512)
+    done = _run(own, "render", "a03", "--width", "32", "--height", "32")
+    assert "the reference is 512x512 (`make render A=a03` without W and H compares with it)" in done.stdout
+    write_files(solution_files("a03"), own / "rtfgu")
+    done = _run(own, "render", "a03")
+    assert done.stdout.count("the same as the reference") == 2, done.stdout
+    for a in ASSIGNMENTS.values():
+        held = sorted(p.stem for p in (release / "rtfgu_checker" / "reference" / a.id / "full_size").glob("*.png"))
+        assert held == sorted(a.images), a.id
+
+
 def test_make_release_names_the_visible_tests_students_cannot_pass_with_the_assignments_own_code():
     """Found by running them in the release: a09's furnace and Cornell box render with a03's
     shapes and a04's (and a05's) materials; in a release revealing nothing, a06's image needs

@@ -22,14 +22,17 @@ import tempfile
 import time
 from pathlib import Path
 
+import numpy as np
+
 from .assignments import ASSIGNMENTS, get_assignment
-from .checks import REFERENCE_DIR, checks_for, judge_cases, stored_probe
-from .checks.images import DIFF_LEGEND, judge_image, load_png, write_png
+from .checks import IMAGE_LEVELS, REFERENCE_DIR, checks_for, judge_cases, stored_probe
+from .checks.images import DIFF_LEGEND, image_differences, judge_image, load_png, write_diff_image, write_png
 from .pixels import SUFFIX as PIXELS_SUFFIX, pixel_bounces
 from .results import Result, TestResult
 from .timeouts import boot_options, stopped_entry, stuck_at, where
 
 PROBES = Path(__file__).resolve().parent / "probes"
+FULL_SIZE = "full_size"    # an assignment's full-size references, in its reference folder (a release's)
 # The stub of an assignment's function, as probes/support.describe_exception names it.
 OTHER_STUB = re.compile(r"NotImplementedError\('(a\d\d): ([^']+)'\)")
 ANSWER_LIMIT = 64 * 1024 * 1024
@@ -180,7 +183,7 @@ def render(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, 
             continue
         path = out / (name + ".png")
         write_png(data["image"], path)
-        log(str(path))
+        log(str(path) + compare_full_size(a, name, path))
     if failed:
         log("%d of %d images of %s failed to render" % (failed, len(a.images), a.id))
     return 1 if failed else 0
@@ -231,6 +234,26 @@ def debug_pixel(assignment, test, x: int, y: int, root=".", reference_dir: Path 
         raise ValueError("tracing the pixel with your code failed: %s%s"
                          % (failure, ("\n" + output) if output.strip() else ""))
     return data["report"], bool(data["differs"])
+
+
+def compare_full_size(a, name: str, path: Path, reference_dir: Path = REFERENCE_DIR) -> str:
+    """What the render at ``path`` is beside the full-size reference a release holds for it
+    (rtfgu.grading.release.full_size_references): a diff image next to it when they differ,
+    as the image tests judge (checks.images); "" where there is no reference."""
+    reference_path = Path(reference_dir) / a.id / FULL_SIZE / (name + ".png")
+    if not reference_path.is_file():
+        return ""
+    mine, reference = load_png(path), load_png(reference_path)
+    if mine.shape != reference.shape:
+        return ": the reference is %dx%d (`make render A=%s` without W and H compares with it)" % (
+            reference.shape[1], reference.shape[0], a.short)
+    wrong, missing = image_differences(mine, reference)
+    bad = (np.maximum(wrong, missing) > IMAGE_LEVELS).sum()
+    if bad == 0:
+        return ": the same as the reference, allowing a one-pixel shift"
+    diff = path.with_name(path.stem + "_diff.png")
+    write_diff_image(mine, reference, wrong, missing, diff, scale=1)
+    return ": %d pixels differ from the reference; %s is %s" % (bad, diff.name, DIFF_LEGEND)
 
 
 def main(argv=None) -> int:

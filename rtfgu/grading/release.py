@@ -26,6 +26,7 @@ from pathlib import Path
 
 from .assignments import ASSIGNMENTS, get_assignment
 from .generate import PACKAGE_DIR, strip_regions, transform, write_files
+from .local import FULL_SIZE
 from .pixels import SUFFIX as PIXELS_SUFFIX, expected_pixels
 
 MARKER = re.compile(r"^\s*(?:#|//)\s*release: solves\s+(?P<ids>[a0-9 ]+?)\s*$")
@@ -200,7 +201,8 @@ def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:
 STUDENT_MAKEFILE = """\
 # Your copy of rtfgu. A is an assignment (a03 or a03_intersections).
 #   make check A=a03    the assignment's visible tests on your code (diff images in check-results/a03/diffs/)
-#   make render A=a03   the assignment's images rendered with your code, into renders/a03/
+#   make render A=a03   the assignment's images rendered with your code, into renders/a03/, each
+#                       compared with its full-size reference (renders/a03/<image>_diff.png where they differ)
 #                       (W=48 H=48: at the size of the image tests, whose pixels their messages name)
 #   make debug-pixel A=a03 T=3.8 X=16 Y=32
 #                       one pixel of image test 3.8, traced through your code beside the expected values
@@ -273,7 +275,7 @@ include = rtfgu, rtfgu.*, rtfgu_checker, rtfgu_checker.*
 
 [options.package_data]
 rtfgu = %(package_data)s
-rtfgu_checker = reference/*/*
+rtfgu_checker = reference/*/*, reference/*/full_size/*
 
 [options.extras_require]
 test =
@@ -296,6 +298,38 @@ def _staff_requirements(package_dir) -> tuple:
     requires = [line.strip() for line in config["options"]["install_requires"].splitlines() if line.strip()]
     return requires, config["options.package_data"]["rtfgu"].strip()
 
+def full_size_references(log=None) -> dict:
+    """relpath (under rtfgu_checker/) -> PNG bytes: every assignment's homework images at their
+    registered size, rendered by the solution, for ``make render A=..`` to compare the student's
+    renders with (rtfgu.grading.local.render). The numba path in float64 with the slide's
+    formulas computes the lecture layer's images bit for bit (tests/test_numba_parity.py) and
+    fast; the lecture layer renders them where numba is not installed."""
+    import io
+
+    from ..image import to_8bit
+    from ..renderer import render
+    from ..scenes import get_scene
+    from PIL import Image
+
+    try:
+        import numba  # noqa: F401
+        path = {"backend": "numba", "precision": "float64", "formula": "slide"}
+    except ImportError:
+        path = {"backend": "reference"}
+    files, images = {}, {}
+    for a in ASSIGNMENTS.values():
+        for name in a.images:
+            if name not in images:
+                if log:
+                    log("rendering the reference of %s (%s)" % (name, path["backend"]))
+                fn = get_scene(name)
+                out = io.BytesIO()
+                Image.fromarray(to_8bit(render(fn(), *fn.size, **path)), mode="RGB").save(out, format="PNG")
+                images[name] = out.getvalue()
+            files["reference/%s/%s/%s.png" % (a.id, FULL_SIZE, name)] = images[name]
+    return files
+
+
 def _student_readme(reveal, assignments) -> str:
     ids = ", ".join(sorted(get_assignment(r).short for r in reveal)) or "none"
     lines = [
@@ -309,7 +343,8 @@ def _student_readme(reveal, assignments) -> str:
         "",
         "```",
         "make check A=a03     # a03's visible tests on your code",
-        "make render A=a03    # a03's images rendered with your code, into renders/a03/",
+        "make render A=a03    # a03's images rendered with your code, into renders/a03/, each compared",
+        "                     # with the reference (renders/a03/<image>_diff.png where they differ)",
         "make test            # every assignment's visible tests (pytest); make test A=a03: a03's only",
         "```",
         "",
@@ -361,7 +396,7 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
     out.mkdir(parents=True, exist_ok=True)
     package = build_package(out, reveal, package_dir)
     written = [p for p in sorted(package.rglob("*")) if p.is_file()]
-    for rel, data in checker_files(package_dir).items():
+    for rel, data in dict(checker_files(package_dir), **full_size_references()).items():
         target = out / CHECKER / rel
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)

@@ -33,8 +33,8 @@ def load_png(path) -> np.ndarray:
 
 
 # What the three panels of a diff image show, and what its colours mean (write_diff_image).
-DIFF_LEGEND = ("yours | reference | differences (red: yours has a colour the reference lacks near there; "
-               "blue: the reference has a colour yours lacks near there)")
+DIFF_LEGEND = ("yours | reference | differences (red: your pixel is unlike every reference pixel near it; "
+               "blue: a detail of the reference, such as a thin edge or object, that yours lacks)")
 WRONG, MISSING = (255, 0, 0), (0, 96, 255)
 
 
@@ -108,7 +108,7 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
     row, col = np.unravel_index(np.argmax(difference), difference.shape)
     # The pixel is named in the test image, whose size the student's own renders differ from.
     short = get_assignment(check.assignment).short
-    kinds = "%d drawn where the reference has nothing like them, %d missing from yours" % (
+    kinds = "%d unlike every reference pixel near them, %d more are details of the reference missing from yours" % (
         int((wrong > IMAGE_LEVELS).sum()), int(((missing > IMAGE_LEVELS) & (wrong <= IMAGE_LEVELS)).sum()))
     lines = ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
              "allowing a one-pixel shift (at most %d may): %s. The largest difference is at column %d, "
