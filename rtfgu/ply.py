@@ -47,6 +47,7 @@ import numpy as np
 from .materials.material import Material
 from .obj import DEFAULT_COLOR, _fan
 from .shapes.mesh import Mesh, zero_area_faces
+from .validation import colour
 
 # The PLY property types (Turk's ply.c names and the sized names of later writers) as numpy
 # type codes, without byte order.
@@ -87,6 +88,7 @@ def load_ply(path, material: Material | None = None, default_color=DEFAULT_COLOR
     path = Path(path)
     if material is not None and not isinstance(material, Material):
         raise ValueError("load_ply: material must be a Material or None, got %r" % (material,))
+    color = tuple(colour(default_color, "load_ply: default_color"))
     if not path.is_file():
         raise ValueError("load_ply: no such file %s" % path)
     data = path.read_bytes()
@@ -100,7 +102,8 @@ def load_ply(path, material: Material | None = None, default_color=DEFAULT_COLOR
     vertices, normals = _vertices(tables["vertex"], vertex, where["vertex"], path)
     triangles, polygon_of = _triangles(tables["face"], face, where["face"], len(vertices), path)
     if len(triangles) == 0:
-        raise ValueError("load_ply: %s: no faces (element 'face' 0): an empty mesh" % path)
+        raise ValueError("load_ply: %s, line %d: no faces (element face has 0 rows): an empty mesh"
+                         % (path, face.line))
 
     flat = zero_area_faces(vertices, triangles)
     if len(flat):
@@ -113,7 +116,7 @@ def load_ply(path, material: Material | None = None, default_color=DEFAULT_COLOR
         triangles = np.delete(triangles, flat, axis=0)
         if len(triangles) == 0:
             raise ValueError("load_ply: %s: every triangle spans zero area" % path)
-    return Mesh(vertices, triangles, default_color, normals=normals,
+    return Mesh(vertices, triangles, color, normals=normals,
                 material=Material() if material is None else material)
 
 

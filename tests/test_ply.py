@@ -196,6 +196,7 @@ GOOD_BODY = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
     (GOOD_HEADER.replace("vertex_indices", "corners") + GOOD_BODY, r"line 7: element face has no list property"),
     (GOOD_HEADER.replace("element face 1\nproperty list uchar int vertex_indices\n", "")
      + GOOD_BODY[:-8], r"no faces \(the header has no 'element face'\)"),
+    (GOOD_HEADER.replace("face 1", "face 0") + GOOD_BODY[:-8], r"line 7: no faces \(element face has 0 rows\)"),
     (GOOD_HEADER.replace("float z", "float z\nproperty float nx\nproperty float ny\nproperty float nz")
      + "0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n3 0 1 2\n", r"line 14, element 'vertex' 1: the normal \(nx, ny, nz\) is the zero vector"),
     (GOOD_HEADER.replace("float z", "float z\nproperty float nx\nproperty float ny") + GOOD_BODY,
@@ -278,3 +279,5 @@ def test_a_missing_file_and_a_bad_material_are_named(tmp_path):
     path = write_ply(tmp_path, "m.ply", "ascii", XYZ, POLYGON_VERTICES, POLYGONS)
     with pytest.raises(ValueError, match="load_ply: material must be a Material"):
         load_ply(path, material="matte")
+    with pytest.raises(ValueError, match="load_ply: default_color"):
+        load_ply(path, default_color=(1, -1, 0))
