@@ -1,5 +1,5 @@
 """load_ply: a PLY file (the Stanford polygon format, Turk 1994) as a ``Mesh``. Suffern ch. 23
-reads his meshes (the bunny, the dragon, the horse, ...) from PLY files into a Mesh, with
+reads his meshes (the bunny, the horse, ...) from PLY files into a Mesh, with
 Turk's ply.c; load_ply reads the same files.
 
     mesh = rtfgu.load_ply("bunny.ply", material=rtfgu.Matte())
@@ -27,9 +27,10 @@ with bytes after its last element, and a triangle of zero area (refused; ``drop_
 True`` drops such triangles with a warning instead, as for load_obj).
 
 The reader is rtfgu's own, not trimesh's (``trimesh.exchange.ply``, which rtfgu already
-depends on for OBJ): trimesh reads a PLY file into arrays but says of bad input no more than
-that numpy could not reshape a buffer, and names neither the line nor the element; it also
-reads a truncated binary body without an error. A PLY body is a table per element whose
+depends on for OBJ): trimesh's errors name neither the line nor the element ("PLY is
+unexpected length!", numpy's "string or file could not be read to its end due to unmatched
+data"), and it returns an ASCII body cut short, or a face index out of range, without an
+error. A PLY body is a table per element whose
 layout the header states, so a reader is short: numpy reads the table at once (np.frombuffer
 for binary, one float conversion of the split text for ASCII) when every face has the same
 number of corners, as in Suffern's files, and walks the rows one by one only for faces of

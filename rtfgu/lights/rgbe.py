@@ -1,6 +1,6 @@
 """read_hdr: a Radiance picture (``.hdr``, ``.pic``: Greg Ward's RGBE format, Graphics Gems II,
-"Real Pixels", 1991; the format of the environment maps of 02562 worksheet 9 and of Suffern's
-ch. 18 light probes) as linear radiance for ``EnvironmentLight``.
+"Real Pixels", 1991; the format of the environment maps of 02562 worksheet 9) as linear
+radiance for ``EnvironmentLight``.
 
 A file is a text header, a resolution line and the scanlines:
 
@@ -23,7 +23,7 @@ pixel divided by their product; the resolution line may name its axes in any of 
 orders and directions (``-Y h +X w`` is the usual one) and the image is turned to have row 0
 at the top and column 0 at the left.
 
-The reader is rtfgu's own (about 150 lines of Python and numpy): the dependencies rtfgu
+The reader is rtfgu's own, a short one in Python and numpy: the dependencies rtfgu
 already has do not read RGBE (Pillow, OpenEXR, trimesh), and the libraries that do are large
 for one format (OpenCV, imagecodecs) or need a native library at run time (imageio's
 FreeImage plugin). Bad input is a ValueError naming the file and, in the header, the line,
