@@ -22,6 +22,8 @@ from .scene import Scene
 from .shapes import Shape
 from .shapes.mesh import Mesh
 from .obj import load_obj
+from .ply import load_ply
+from .mesh_files import load_mesh
 from .textures import Checker, ImageTexture, Texture
 from .image import write_png
 from .registry import SHAPES as _SHAPES
@@ -33,7 +35,7 @@ globals().update({_kind.cls.__name__: _kind.cls for _kind in _SHAPES})
 __all__ = [
     "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON", "SPAWN_EPSILON", "HitInfo",
     "Camera", "OrthographicCamera", "PinholeCamera", "ThinLens",
-    "Shape", "Mesh", "load_obj", "Scene",
+    "Shape", "Mesh", "load_obj", "load_ply", "load_mesh", "Scene",
     "BRDF", "Lambertian", "GlossySpecular", "PerfectSpecular",
     "BTDF", "PerfectTransmitter",
     "Material", "Matte", "Phong", "Reflective", "GlossyReflector", "Transparent", "Emissive",

@@ -13,19 +13,26 @@ looked up as in worksheet 9:
 the texel (floor(u W), floor(v H)) (the nearest, clamped to the image): -z is the middle
 of the image, +y its top row.
 
-``image`` is an array or the path of an OpenEXR file, read with the Academy Software
-Foundation's OpenEXR bindings (the ``OpenEXR`` package: the format's own reference
-library, which keeps half and float radiance as it is, where 8-bit image readers clip it).
+``image`` is an array or the path of an image of linear radiance, read by the reader its
+suffix names (in any case):
+
+* ``.exr``: OpenEXR, read with the Academy Software Foundation's OpenEXR bindings (the
+  ``OpenEXR`` package: the format's own reference library, which keeps half and float
+  radiance as it is, where 8-bit image readers clip it);
+* ``.hdr``, ``.pic``: a Radiance RGBE picture, the format of worksheet 9's environment
+  maps, read by rtfgu's ``read_hdr`` (rtfgu/lights/rgbe.py says why its own).
 """
 from __future__ import annotations
 
 import math
 import os
+from pathlib import Path
 
 import numpy as np
 
 from ..float3 import Float3
 from .light import Light
+from .rgbe import read_hdr
 
 
 class EnvironmentLight(Light):
@@ -33,7 +40,7 @@ class EnvironmentLight(Light):
         source = "EnvironmentLight.image"
         if isinstance(image, (str, os.PathLike)):
             source = "EnvironmentLight.image %s" % os.fspath(image)
-            image = read_exr(image)
+            image = read_image(image)
         try:
             texels = np.array(image, dtype=np.float64)
         except (TypeError, ValueError):
@@ -82,3 +89,18 @@ def read_exr(path) -> np.ndarray:
     except RuntimeError as error:
         raise ValueError("EnvironmentLight.image %s is not an OpenEXR image (%s)" % (path, error)) from None
     return rgb.astype(np.float32)
+
+
+# The image readers by suffix (lower case).
+READERS = {".exr": read_exr, ".hdr": read_hdr, ".pic": read_hdr}
+
+
+def read_image(path) -> np.ndarray:
+    """The radiance of the image ``path`` (height, width, 3), read by the reader its suffix
+    names; a ValueError naming the file and the suffix when there is none."""
+    suffix = Path(path).suffix
+    reader = READERS.get(suffix.lower())
+    if reader is None:
+        raise ValueError("EnvironmentLight.image %s: unknown image suffix %r: it reads .exr (OpenEXR) "
+                         "and .hdr or .pic (Radiance RGBE)" % (os.fspath(path), suffix))
+    return reader(path)
