@@ -106,10 +106,17 @@ async function start() {
     device.lost.then((info) => fail("GPU device lost (" + info.reason + "): " + info.message));
     device.addEventListener("uncapturederror", (event) => fail("GPU error: " + event.error.message));
 
+    // The compilation messages name the line; the error scope keeps the same error from
+    // also arriving, without a line, as an uncaptured error.
+    device.pushErrorScope("validation");
     const module = device.createShaderModule({label: scene.name, code: scene.wgsl});
     const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === "error");
+    const invalid = await device.popErrorScope();
     if (errors.length) {
         throw new PageError("The scene's WGSL did not compile:\n" + errors.map(describe).join("\n"));
+    }
+    if (invalid) {
+        throw new PageError("The scene's WGSL did not compile: " + invalid.message);
     }
     const compute = GPUShaderStage.COMPUTE;
     const sceneLayout = device.createBindGroupLayout({entries: [
