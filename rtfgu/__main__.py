@@ -122,12 +122,19 @@ def _debug_pixel(args) -> None:
 
 
 def _export_html(name, out, width=None, height=None, spp=None, seed=0) -> str:
-    """Write the WebGPU page of scene ``name`` (rtfgu/browser/export.py) to ``out``."""
-    from .browser import scene_page
+    """Write the WebGPU page of scene ``name`` (rtfgu/browser/export.py) to ``out``; a scene
+    of the worksheet's shader menu offers the others of the menu."""
+    from .browser import menu_page, scene_page
+    from .scenes.default_scene import SHADER_MENU
 
     scene, width, height = scene_at(name, width, height)
+    if name in SHADER_MENU:
+        menu = {other: scene_at(other, width, height)[0] for other in SHADER_MENU}
+        html = menu_page(menu, name, width, height, spp, seed)
+    else:
+        html = scene_page(scene, width, height, spp, seed, name)
     with open(out, "w", encoding="utf-8") as f:
-        f.write(scene_page(scene, width, height, spp, seed, name))
+        f.write(html)
     return "%s  %dx%d  WebGPU page" % (out, width, height)
 
 

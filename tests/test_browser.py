@@ -16,11 +16,12 @@ import pytest
 
 from rtfgu import renderer
 from rtfgu.__main__ import main, scene_at
-from rtfgu.browser import scene_page
+from rtfgu.browser import menu_page, scene_page
 from rtfgu.browser import headless
 from rtfgu.image import to_8bit, write_png
 from rtfgu.options import pixel_sampler
 from rtfgu.scenes import SCENES
+from rtfgu.scenes.default_scene import SHADER_MENU
 from rtfgu.wgsl.assemble import read_piece
 from rtfgu.wgsl.runner import assemble_scene
 
@@ -33,6 +34,9 @@ MIN_AGREEING = 0.999
 # Chromium's whole run, every page together.
 TIMEOUT = 300
 BROKEN = "broken_lambertian"
+# The shader menu's page with its controls set by the query string.
+CONTROLS = "shader_menu"
+CONTROLLED_SCENE, ZOOM, CONTROLLED_GAMMA = "default_mirror_sphere", 1.5, 1.0
 
 
 def spp_of(name):
@@ -67,8 +71,11 @@ def page_results(chromium):
     overrides, _ = broken_lambertian()
     scene, width, height = scene_at("default_lambertian", WIDTH, HEIGHT)
     pages[BROKEN] = scene_page(scene, width, height, name=BROKEN, overrides=overrides)
+    menu = {name: scene_at(name, WIDTH, HEIGHT)[0] for name in SHADER_MENU}
+    pages[CONTROLS] = menu_page(menu, SHADER_MENU[0], WIDTH, HEIGHT)
     start = time.perf_counter()
-    results = headless.render_pages(pages, timeout=TIMEOUT)
+    results = headless.render_pages(pages, timeout=TIMEOUT, queries={
+        CONTROLS: "scene=%s&zoom=%r&gamma=%r" % (CONTROLLED_SCENE, ZOOM, CONTROLLED_GAMMA)})
     results["seconds"] = time.perf_counter() - start
     return results
 
@@ -93,6 +100,24 @@ def test_page_renders_the_wgpu_image(page_results, wgpu_device, name, output_dir
     shown = np.abs(canvas.astype(int) - ours).max(axis=2)
     assert shown.max() <= 1, "%s: the canvas differs from the page's image by %d/255 at %s" % (
         name, shown.max(), np.unravel_index(shown.argmax(), shown.shape))
+
+
+def test_the_shader_menu_zoom_and_gamma_render_what_they_say(page_results, wgpu_device):
+    """The menu's page, set to the mirror sphere, camera constant 1.5 and gamma 1, renders
+    that scene with that camera as the wgpu path does, and shows it with that gamma."""
+    result = page_results[CONTROLS]
+    assert result.get("ok"), result.get("message")
+    assert result["name"] == CONTROLLED_SCENE and result["gamma"] == CONTROLLED_GAMMA
+    page, canvas = headless.result_images(result)
+    scene, width, height = scene_at(CONTROLLED_SCENE, WIDTH, HEIGHT)
+    unzoomed = renderer.render(scene, width, height, backend="wgpu")
+    scene.camera.d = ZOOM
+    wgpu = renderer.render(scene, width, height, backend="wgpu")
+    ours = to_8bit(page).astype(int)
+    assert (np.abs(ours - to_8bit(wgpu).astype(int)).max(axis=2) <= 1).mean() >= MIN_AGREEING
+    assert (np.abs(ours - to_8bit(unzoomed).astype(int)).max(axis=2) > 1).mean() > 0.1
+    shown = np.abs(canvas.astype(int) - to_8bit(page, gamma=CONTROLLED_GAMMA).astype(int))
+    assert shown.max() <= 1, "the canvas is not the image with gamma %r" % CONTROLLED_GAMMA
 
 
 def test_a_shader_that_does_not_compile_is_shown_by_its_file_and_line(page_results):
@@ -121,8 +146,10 @@ def test_export_html_holds_the_program_the_wgpu_path_runs(tmp_path):
     out = tmp_path / "page.html"
     assert main(["export-html", "suffern_disks", "-o", str(out), "--width", "40", "--height", "30"]) == 0
     text = out.read_text(encoding="utf-8")
-    data = json.loads(re.search(r'<script type="application/json" id="rtfgu-scene">(.*?)</script>',
+    page = json.loads(re.search(r'<script type="application/json" id="rtfgu-scene">(.*?)</script>',
                                 text, re.S).group(1))
+    assert len(page["scenes"]) == 1
+    data = page["scenes"][page["selected"]]
     scene, width, height = scene_at("suffern_disks", 40, 30)
     flat, program = assemble_scene(scene, sampler=pixel_sampler(scene, None))
     assert data["wgsl"] == program.source
@@ -131,6 +158,16 @@ def test_export_html_holds_the_program_the_wgpu_path_runs(tmp_path):
     samples = 1 if scene.sampler is None else scene.sampler.num_samples
     assert data["frames"][-1]["end_sample"] == samples
     assert "</script" not in data["wgsl"] and text.count("</script>") == 3
+
+
+def test_a_page_of_the_shader_menu_offers_the_menu(tmp_path):
+    out = tmp_path / "page.html"
+    assert main(["export-html", "default_phong_sphere", "-o", str(out)]) == 0
+    page = json.loads(re.search(r'<script type="application/json" id="rtfgu-scene">(.*?)</script>',
+                                out.read_text(encoding="utf-8"), re.S).group(1))
+    assert [s["name"] for s in page["scenes"]] == list(SHADER_MENU)
+    assert page["scenes"][page["selected"]]["name"] == "default_phong_sphere"
+    assert len({s["wgsl"] for s in page["scenes"]}) == len(SHADER_MENU)   # each its own program
 
 
 def test_export_html_refuses_an_unknown_scene(tmp_path, capsys):

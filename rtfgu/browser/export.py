@@ -82,7 +82,6 @@ def scene_data(scene, width: int, height: int, spp: int | None = None, seed: int
             for origin, size in tiles(width, height, tile)]})
     return {
         "name": name, "width": width, "height": height, "samples": total, "seed": seed,
-        "gamma": GAMMA,
         "wgsl": program.source,
         "origins": _origins(program),
         "uniforms_size": structs.UNIFORMS_SIZE,
@@ -98,11 +97,19 @@ def _script_text(text: str) -> str:
     return text.replace("</", "<\\/")
 
 
-def page_html(data: dict) -> str:
-    """The page of ``scene_data``'s result: page.html with the data, display.wgsl and
-    page.js put in."""
-    title = data["name"] or "rtfgu scene"
-    scene_json = json.dumps(data, separators=(",", ":")).replace("<", "\\u003c")
+def page_html(scenes: list, selected: int = 0) -> str:
+    """The page of ``scene_data`` results of one size: page.html with them, display.wgsl and
+    page.js put in; it renders ``scenes[selected]`` and offers the others in a menu."""
+    first = scenes[selected]
+    for data in scenes:
+        if (data["width"], data["height"]) != (first["width"], first["height"]):
+            raise ValueError("page_html: scene %r is %dx%d, scene %r %dx%d: a page has one size"
+                             % (data["name"], data["width"], data["height"], first["name"],
+                                first["width"], first["height"]))
+    page = {"width": first["width"], "height": first["height"], "gamma": GAMMA,
+            "scenes": scenes, "selected": selected}
+    title = first["name"] or "rtfgu scene"
+    scene_json = json.dumps(page, separators=(",", ":")).replace("<", "\\u003c")
     html = _read("page.html")
     for marker, text in (("{{TITLE}}", title.replace("&", "&amp;").replace("<", "&lt;")),
                          ("{{SCENE_JSON}}", scene_json),
@@ -117,4 +124,14 @@ def page_html(data: dict) -> str:
 def scene_page(scene, width: int, height: int, spp: int | None = None, seed: int = 0,
                name: str = "", overrides=None) -> str:
     """The self-contained HTML page that renders ``scene`` with WebGPU."""
-    return page_html(scene_data(scene, width, height, spp, seed, name, overrides))
+    return page_html([scene_data(scene, width, height, spp, seed, name, overrides)])
+
+
+def menu_page(scenes: dict, selected: str, width: int, height: int, spp: int | None = None,
+              seed: int = 0) -> str:
+    """One page for the scenes {name: Scene} (the worksheet's shader menu,
+    rtfgu.scenes.default_scene.SHADER_MENU), showing ``selected`` first."""
+    if selected not in scenes:
+        raise ValueError("menu_page: %r is not among %s" % (selected, ", ".join(scenes)))
+    data = [scene_data(scene, width, height, spp, seed, name) for name, scene in scenes.items()]
+    return page_html(data, list(scenes).index(selected))

@@ -94,15 +94,16 @@ for (let k = 0; k < %(parallel)d; k++) load();
 class _Server(ThreadingHTTPServer):
     daemon_threads = True
 
-    def __init__(self, pages: dict, deadline: float, parallel: int):
+    def __init__(self, pages: dict, deadline: float, parallel: int, queries: dict):
         super().__init__(("127.0.0.1", 0), _Handler)
         self.names = list(pages)
         self.pages = {"/page/%d.html" % k: html.encode("utf-8") for k, html in enumerate(pages.values())}
         self.results = {}
         self.done = threading.Condition()
         self.deadline = deadline
-        self.index = (INDEX % {"pages": json.dumps(["/page/%d.html?report=/result/%d" % (k, k)
-                                                    for k in range(len(pages))]),
+        urls = ["/page/%d.html?report=/result/%d" % (k, k) + ("&" + queries[name] if name in queries else "")
+                for k, name in enumerate(pages)]
+        self.index = (INDEX % {"pages": json.dumps(urls),
                                "parallel": parallel}).encode("utf-8")
 
 
@@ -160,13 +161,15 @@ class _Handler(BaseHTTPRequestHandler):
         self._answer(204)
 
 
-def render_pages(pages: dict, timeout: float = 300.0, parallel: int = PARALLEL_PAGES) -> dict:
+def render_pages(pages: dict, timeout: float = 300.0, parallel: int = PARALLEL_PAGES,
+                 queries: dict | None = None) -> dict:
     """Open the pages {name: HTML} in one headless Chromium and return {name: result}, the
-    JSON each page posted (rtfgu/browser/export.py); a page that posted nothing within
+    JSON each page posted (rtfgu/browser/export.py); ``queries`` {name: "zoom=2&gamma=1"}
+    adds to a page's query string (page.js reads its controls' values from it). A page that posted nothing within
     ``timeout`` seconds of the start gets ``{"ok": False, "message": ...}`` saying so, with
     the end of Chromium's own output."""
     chromium = find_chromium()
-    server = _Server(pages, time.monotonic() + timeout, parallel)
+    server = _Server(pages, time.monotonic() + timeout, parallel, queries or {})
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
     profile = tempfile.mkdtemp(prefix="rtfgu-chromium-")

@@ -3,19 +3,26 @@
 // scene arrays at their numbers, group 1 the image sums. A frame adds one batch of samples
 // to every tile, one dispatch (and one submit) per tile, each after writing its Uniforms,
 // then draws the mean so far into the canvas (display.wgsl). Any GPU error ends the render
-// and is shown as text. With ?report=URL the result is posted there as JSON.
+// and is shown as text.
+//
+// The worksheet's controls: the camera constant (zoom; a new value renders again), gamma
+// (draws again) and, where the page holds several scenes, the shader menu. The query string
+// sets them at the start (?zoom=1.5&gamma=1&scene=NAME); with ?report=URL the finished
+// render is posted there as JSON.
 
-const scene = JSON.parse(document.getElementById("rtfgu-scene").textContent);
+const page = JSON.parse(document.getElementById("rtfgu-scene").textContent);
 const displayWGSL = document.getElementById("rtfgu-display").textContent;
 const statusLine = document.getElementById("status");
 const canvas = document.getElementById("canvas");
-const report = new URLSearchParams(location.search).get("report");
-const started = performance.now();
+const controls = document.getElementById("controls");
+const query = new URLSearchParams(location.search);
+const report = query.get("report");
 
 class PageError extends Error {}
 
+let scene = page.scenes[page.selected];
 let failed = null;
-let finished = false;
+let reported = false;
 
 function show(text, isError) {
     statusLine.textContent = text;
@@ -23,6 +30,10 @@ function show(text, isError) {
 }
 
 async function post(result) {
+    if (reported) {
+        return;
+    }
+    reported = true;
     if (report) {
         try {
             await fetch(report, {method: "POST", headers: {"Content-Type": "application/json"},
@@ -38,11 +49,12 @@ async function post(result) {
 
 // The first error wins; it replaces the image by its text.
 function fail(message) {
-    if (failed !== null || finished) {
+    if (failed !== null) {
         return;
     }
     failed = message;
     canvas.style.display = "none";
+    controls.style.display = "none";
     show(message, true);
     post({ok: false, name: scene.name, message: message});
 }
@@ -70,13 +82,13 @@ function base64Of(buffer) {
 
 // A compilation message at the file and line of rtfgu/wgsl it came from, as
 // rtfgu/wgsl/runner.py's WGSLCompileError names it.
-function describe(message) {
-    const lines = scene.wgsl.split("\n");
+function describe(data, message) {
+    const lines = data.wgsl.split("\n");
     const line = message.lineNum;
     let where = "line " + line + " of the assembled program";
-    if (line >= 1 && line <= scene.origins.lines.length) {
-        const [file, fileLine] = scene.origins.lines[line - 1];
-        where = scene.origins.files[file] + ":" + fileLine + ":" + message.linePos
+    if (line >= 1 && line <= data.origins.lines.length) {
+        const [file, fileLine] = data.origins.lines[line - 1];
+        where = data.origins.files[file] + ":" + fileLine + ":" + message.linePos
               + " (line " + line + " of the assembled program)";
     }
     const text = line >= 1 && line <= lines.length ? "\n    " + lines[line - 1].trim() : "";
@@ -93,7 +105,7 @@ async function checked(device, what, make) {
     return made;
 }
 
-async function start() {
+async function openDevice() {
     if (!navigator.gpu) {
         throw new PageError("WebGPU is not available in this browser (navigator.gpu is missing): "
                             + "use a browser with WebGPU enabled, served over http://localhost or https");
@@ -105,15 +117,92 @@ async function start() {
     const device = await adapter.requestDevice();
     device.lost.then((info) => fail("GPU device lost (" + info.reason + "): " + info.message));
     device.addEventListener("uncapturederror", (event) => fail("GPU error: " + event.error.message));
+    return device;
+}
 
+// The canvas and display.wgsl, which draws the mean of the sums in ``image`` with gamma.
+async function openCanvas(device, image) {
+    canvas.width = page.width;
+    canvas.height = page.height;
+    const scale = Math.max(1, Math.floor(512 / Math.max(page.width, page.height)));
+    canvas.style.width = page.width * scale + "px";
+    canvas.style.height = page.height * scale + "px";
+    const context = canvas.getContext("webgpu");
+    const format = navigator.gpu.getPreferredCanvasFormat();
+    context.configure({device: device, format: format, alphaMode: "opaque",
+                       usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC});
+    const module = device.createShaderModule({label: "display.wgsl", code: displayWGSL});
+    const layout = device.createBindGroupLayout({entries: [
+        {binding: 0, visibility: GPUShaderStage.FRAGMENT, buffer: {type: "read-only-storage"}},
+        {binding: 1, visibility: GPUShaderStage.FRAGMENT, buffer: {type: "uniform"}}]});
+    const pipeline = await checked(device, "The canvas's render pipeline", () => device.createRenderPipeline({
+        layout: device.createPipelineLayout({bindGroupLayouts: [layout]}),
+        vertex: {module: module, entryPoint: "main_vs"},
+        fragment: {module: module, entryPoint: "main_fs", targets: [{format: format}]},
+        primitive: {topology: "triangle-list"}}));
+    const uniforms = device.createBuffer({size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST});
+    const group = device.createBindGroup({layout: layout, entries: [
+        {binding: 0, resource: {buffer: image}}, {binding: 1, resource: {buffer: uniforms}}]});
+    const bytesPerRow = Math.ceil(4 * page.width / 256) * 256;
+
+    // Draws the mean of ``samples`` samples; with ``readBack``, also copies the canvas into
+    // a buffer, returned, that ``pixels`` reads.
+    function draw(samples, gamma, readBack) {
+        const values = new ArrayBuffer(16);
+        new Uint32Array(values, 0, 2).set([page.width, page.height]);
+        new Float32Array(values, 8, 2).set([samples, gamma]);
+        device.queue.writeBuffer(uniforms, 0, values);
+        const texture = context.getCurrentTexture();
+        const encoder = device.createCommandEncoder();
+        const pass = encoder.beginRenderPass({colorAttachments: [{view: texture.createView(),
+            loadOp: "clear", storeOp: "store", clearValue: [0, 0, 0, 1]}]});
+        pass.setPipeline(pipeline);
+        pass.setBindGroup(0, group);
+        pass.draw(3);
+        pass.end();
+        let copy = null;
+        if (readBack) {
+            copy = device.createBuffer({size: bytesPerRow * page.height,
+                                        usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ});
+            encoder.copyTextureToBuffer({texture: texture}, {buffer: copy, bytesPerRow: bytesPerRow},
+                                        [page.width, page.height]);
+        }
+        device.queue.submit([encoder.finish()]);
+        return copy;
+    }
+
+    // The canvas's pixels as RGBA8, row 0 at the top.
+    async function pixels(copy) {
+        await copy.mapAsync(GPUMapMode.READ);
+        const rows = new Uint8Array(copy.getMappedRange());
+        const rgba = new Uint8Array(4 * page.width * page.height);
+        const bgra = format.startsWith("bgra");
+        for (let y = 0; y < page.height; y++) {
+            for (let x = 0; x < page.width; x++) {
+                const from = y * bytesPerRow + 4 * x, to = 4 * (y * page.width + x);
+                rgba[to] = rows[from + (bgra ? 2 : 0)];
+                rgba[to + 1] = rows[from + 1];
+                rgba[to + 2] = rows[from + (bgra ? 0 : 2)];
+                rgba[to + 3] = rows[from + 3];
+            }
+        }
+        copy.unmap();
+        return rgba;
+    }
+    return {draw: draw, pixels: pixels};
+}
+
+// The compiled program of one scene of the page, its buffers and bind group.
+async function loadScene(device, data, imageLayout) {
     // The compilation messages name the line; the error scope keeps the same error from
     // also arriving, without a line, as an uncaptured error.
     device.pushErrorScope("validation");
-    const module = device.createShaderModule({label: scene.name, code: scene.wgsl});
+    const module = device.createShaderModule({label: data.name, code: data.wgsl});
     const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === "error");
     const invalid = await device.popErrorScope();
     if (errors.length) {
-        throw new PageError("The scene's WGSL did not compile:\n" + errors.map(describe).join("\n"));
+        throw new PageError("The scene's WGSL did not compile:\n"
+                            + errors.map((m) => describe(data, m)).join("\n"));
     }
     if (invalid) {
         throw new PageError("The scene's WGSL did not compile: " + invalid.message);
@@ -121,102 +210,78 @@ async function start() {
     const compute = GPUShaderStage.COMPUTE;
     const sceneLayout = device.createBindGroupLayout({entries: [
         {binding: 0, visibility: compute, buffer: {type: "uniform"}},
-        ...scene.bindings.map((b) => ({binding: b.number, visibility: compute,
-                                      buffer: {type: b.kind === "uniform" ? "uniform" : "read-only-storage"}}))]});
-    const imageLayout = device.createBindGroupLayout({entries: [
-        {binding: 0, visibility: compute | GPUShaderStage.FRAGMENT, buffer: {type: "storage"}}]});
+        ...data.bindings.map((b) => ({binding: b.number, visibility: compute,
+                                     buffer: {type: b.kind === "uniform" ? "uniform" : "read-only-storage"}}))]});
     const pipeline = await checked(device, "The scene's compute pipeline", () => device.createComputePipeline({
         layout: device.createPipelineLayout({bindGroupLayouts: [sceneLayout, imageLayout]}),
         compute: {module: module, entryPoint: "main"}}));
-
-    const uniforms = device.createBuffer({size: scene.uniforms_size,
+    const uniforms = device.createBuffer({size: data.uniforms_size,
                                           usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST});
     const buffers = {};
     const entries = [{binding: 0, resource: {buffer: uniforms}}];
-    for (const b of scene.bindings) {
-        const data = bytesOf(b.data);
+    for (const b of data.bindings) {
+        const bytes = bytesOf(b.data);
         const usage = b.kind === "uniform" ? GPUBufferUsage.UNIFORM : GPUBufferUsage.STORAGE;
-        buffers[b.name] = device.createBuffer({size: data.length, usage: usage | GPUBufferUsage.COPY_DST});
-        device.queue.writeBuffer(buffers[b.name], 0, data);
-        entries.push({binding: b.number, resource: {buffer: buffers[b.name]}});
+        buffers[b.number] = {buffer: device.createBuffer({size: bytes.length, usage: usage | GPUBufferUsage.COPY_DST}),
+                             bytes: bytes};
+        device.queue.writeBuffer(buffers[b.number].buffer, 0, bytes);
+        entries.push({binding: b.number, resource: {buffer: buffers[b.number].buffer}});
     }
-    const sceneGroup = device.createBindGroup({layout: sceneLayout, entries: entries});
-    const pixels = scene.width * scene.height;
+    const group = device.createBindGroup({layout: sceneLayout, entries: entries});
+
+    // The camera constant d (rtfgu.layout's camera record), written into the camera buffer.
+    function setZoom(d) {
+        if (!data.zoom) {
+            return;
+        }
+        const camera = buffers[data.zoom.binding];
+        const bytes = camera.bytes.slice();
+        new DataView(bytes.buffer).setFloat32(4 * data.zoom.index, d, true);
+        device.queue.writeBuffer(camera.buffer, 0, bytes);
+    }
+    return {data: data, pipeline: pipeline, group: group, uniforms: uniforms, setZoom: setZoom};
+}
+
+function addControl(label, element) {
+    const wrapper = document.createElement("label");
+    wrapper.append(label + " ", element);
+    controls.append(wrapper);
+    return element;
+}
+
+function numberInput(value, step, min) {
+    const input = document.createElement("input");
+    input.type = "number";
+    input.step = step;
+    input.min = min;
+    input.value = value;
+    input.style.width = "6em";
+    return input;
+}
+
+async function start() {
+    const device = await openDevice();
+    const pixels = page.width * page.height;
     const image = device.createBuffer({size: 16 * pixels, usage: GPUBufferUsage.STORAGE
                                        | GPUBufferUsage.COPY_SRC | GPUBufferUsage.COPY_DST});
+    const imageLayout = device.createBindGroupLayout({entries: [
+        {binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: {type: "storage"}}]});
     const imageGroup = device.createBindGroup({layout: imageLayout, entries: [
         {binding: 0, resource: {buffer: image}}]});
+    const display = await openCanvas(device, image);
 
-    // The canvas: display.wgsl draws the sums' mean with gamma.
-    canvas.width = scene.width;
-    canvas.height = scene.height;
-    const scale = Math.max(1, Math.floor(512 / Math.max(scene.width, scene.height)));
-    canvas.style.width = scene.width * scale + "px";
-    canvas.style.height = scene.height * scale + "px";
-    const context = canvas.getContext("webgpu");
-    const format = navigator.gpu.getPreferredCanvasFormat();
-    context.configure({device: device, format: format, alphaMode: "opaque",
-                       usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC});
-    const displayModule = device.createShaderModule({label: "display.wgsl", code: displayWGSL});
-    const displayLayout = device.createBindGroupLayout({entries: [
-        {binding: 0, visibility: GPUShaderStage.FRAGMENT, buffer: {type: "read-only-storage"}},
-        {binding: 1, visibility: GPUShaderStage.FRAGMENT, buffer: {type: "uniform"}}]});
-    const displayPipeline = await checked(device, "The canvas's render pipeline", () => device.createRenderPipeline({
-        layout: device.createPipelineLayout({bindGroupLayouts: [displayLayout]}),
-        vertex: {module: displayModule, entryPoint: "main_vs"},
-        fragment: {module: displayModule, entryPoint: "main_fs", targets: [{format: format}]},
-        primitive: {topology: "triangle-list"}}));
-    const displayUniforms = device.createBuffer({size: 16, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST});
-    const displayGroup = device.createBindGroup({layout: displayLayout, entries: [
-        {binding: 0, resource: {buffer: image}}, {binding: 1, resource: {buffer: displayUniforms}}]});
-
-    const view = {gamma: scene.gamma, samples: 0};
-
-    // Draws the mean of the sums into the canvas; with ``readBack``, also copies the
-    // canvas into a buffer mapped for reading (returned).
-    function draw(readBack) {
-        const values = new ArrayBuffer(16);
-        new Uint32Array(values, 0, 2).set([scene.width, scene.height]);
-        new Float32Array(values, 8, 2).set([view.samples, view.gamma]);
-        device.queue.writeBuffer(displayUniforms, 0, values);
-        const texture = context.getCurrentTexture();
-        const encoder = device.createCommandEncoder();
-        const pass = encoder.beginRenderPass({colorAttachments: [{view: texture.createView(),
-            loadOp: "clear", storeOp: "store", clearValue: [0, 0, 0, 1]}]});
-        pass.setPipeline(displayPipeline);
-        pass.setBindGroup(0, displayGroup);
-        pass.draw(3);
-        pass.end();
-        let copy = null;
-        const bytesPerRow = Math.ceil(4 * scene.width / 256) * 256;
-        if (readBack) {
-            copy = device.createBuffer({size: bytesPerRow * scene.height,
-                                        usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ});
-            encoder.copyTextureToBuffer({texture: texture}, {buffer: copy, bytesPerRow: bytesPerRow},
-                                        [scene.width, scene.height]);
+    const view = {gamma: parseFloat(query.get("gamma") || page.gamma), samples: 0,
+                  zoom: query.get("zoom") === null ? null : parseFloat(query.get("zoom"))};
+    if (query.get("scene") !== null) {
+        scene = page.scenes.find((s) => s.name === query.get("scene"));
+        if (!scene) {
+            throw new PageError("?scene=" + query.get("scene") + ": this page holds "
+                                + page.scenes.map((s) => s.name).join(", "));
         }
-        device.queue.submit([encoder.finish()]);
-        return {buffer: copy, bytesPerRow: bytesPerRow};
     }
-
-    // The canvas's pixels as RGBA8, row 0 at the top.
-    async function canvasPixels(copy) {
-        await copy.buffer.mapAsync(GPUMapMode.READ);
-        const rows = new Uint8Array(copy.buffer.getMappedRange());
-        const rgba = new Uint8Array(4 * pixels);
-        const bgra = format.startsWith("bgra");
-        for (let y = 0; y < scene.height; y++) {
-            for (let x = 0; x < scene.width; x++) {
-                const from = y * copy.bytesPerRow + 4 * x, to = 4 * (y * scene.width + x);
-                rgba[to] = rows[from + (bgra ? 2 : 0)];
-                rgba[to + 1] = rows[from + 1];
-                rgba[to + 2] = rows[from + (bgra ? 0 : 2)];
-                rgba[to + 3] = rows[from + 3];
-            }
-        }
-        copy.buffer.unmap();
-        return rgba;
-    }
+    const loaded = {};
+    let current = null;
+    let generation = 0;
 
     async function sums() {
         const copy = device.createBuffer({size: 16 * pixels, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ});
@@ -229,38 +294,88 @@ async function start() {
         return data;
     }
 
-    for (const frame of scene.frames) {
-        for (const dispatch of frame.dispatches) {
-            device.queue.writeBuffer(uniforms, 0, bytesOf(dispatch.uniforms));
-            const encoder = device.createCommandEncoder();
-            const pass = encoder.beginComputePass();
-            pass.setPipeline(pipeline);
-            pass.setBindGroup(0, sceneGroup);
-            pass.setBindGroup(1, imageGroup);
-            pass.dispatchWorkgroups(dispatch.workgroups[0], dispatch.workgroups[1], 1);
-            pass.end();
-            device.queue.submit([encoder.finish()]);
+    // Renders the current scene from its first sample; a later call ends an earlier one.
+    async function render() {
+        const mine = ++generation;
+        const started = performance.now();
+        if (!(scene.name in loaded)) {
+            show("compiling " + scene.name + "...", false);
+            loaded[scene.name] = await loadScene(device, scene, imageLayout);
         }
-        view.samples = frame.end_sample;
-        const last = frame === scene.frames[scene.frames.length - 1];
-        const copy = draw(last);
-        await device.queue.onSubmittedWorkDone();
-        if (failed !== null) {
-            return;
-        }
-        const seconds = (performance.now() - started) / 1000;
-        show(view.samples + " / " + scene.samples + " samples per pixel, " + seconds.toFixed(1) + " s", false);
-        if (last) {
-            const result = {ok: true, name: scene.name, width: scene.width, height: scene.height,
-                            samples: view.samples, sums: base64Of(await sums()),
-                            canvas: base64Of((await canvasPixels(copy)).buffer), seconds: seconds};
-            if (failed === null) {
-                finished = true;
-                await post(result);
+        current = loaded[scene.name];
+        current.setZoom(view.zoom === null ? scene.zoom?.value : view.zoom);
+        device.queue.writeBuffer(image, 0, new Uint8Array(16 * pixels));
+        view.samples = 0;
+        const frames = current.data.frames;
+        for (const frame of frames) {
+            if (mine !== generation || failed !== null) {
+                return;
             }
+            for (const dispatch of frame.dispatches) {
+                device.queue.writeBuffer(current.uniforms, 0, bytesOf(dispatch.uniforms));
+                const encoder = device.createCommandEncoder();
+                const pass = encoder.beginComputePass();
+                pass.setPipeline(current.pipeline);
+                pass.setBindGroup(0, current.group);
+                pass.setBindGroup(1, imageGroup);
+                pass.dispatchWorkgroups(dispatch.workgroups[0], dispatch.workgroups[1], 1);
+                pass.end();
+                device.queue.submit([encoder.finish()]);
+            }
+            view.samples = frame.end_sample;
+            const last = frame === frames[frames.length - 1];
+            const copy = display.draw(view.samples, view.gamma, last && !reported);
+            await device.queue.onSubmittedWorkDone();
+            if (failed !== null) {
+                return;
+            }
+            const seconds = (performance.now() - started) / 1000;
+            show(view.samples + " / " + current.data.samples + " samples per pixel, " + seconds.toFixed(1) + " s", false);
+            if (copy) {
+                const result = {ok: true, name: scene.name, width: page.width, height: page.height,
+                                samples: view.samples, gamma: view.gamma, sums: base64Of(await sums()),
+                                canvas: base64Of((await display.pixels(copy)).buffer), seconds: seconds};
+                if (failed === null) {
+                    await post(result);
+                }
+            }
+            await new Promise((resolve) => setTimeout(resolve, 0));  // let the page show the frame
         }
-        await new Promise((resolve) => setTimeout(resolve, 0));  // let the page show the frame
     }
+
+    const rerender = () => render().catch((error) => fail(error instanceof PageError ? error.message
+                                                                             : "JavaScript error: " + error));
+    if (page.scenes.length > 1) {
+        const menu = document.createElement("select");
+        for (const s of page.scenes) {
+            menu.add(new Option(s.name, s.name, false, s === scene));
+        }
+        menu.addEventListener("change", () => {
+            scene = page.scenes.find((s) => s.name === menu.value);
+            rerender();
+        });
+        addControl("shader", menu);
+    }
+    if (scene.zoom) {
+        const zoom = addControl("zoom (camera constant d)",
+                                numberInput(view.zoom === null ? scene.zoom.value : view.zoom, 0.1, 0.1));
+        zoom.addEventListener("change", () => {
+            const d = parseFloat(zoom.value);
+            if (d > 0) {
+                view.zoom = d;
+                rerender();
+            }
+        });
+    }
+    const gamma = addControl("gamma", numberInput(view.gamma, 0.1, 0.1));
+    gamma.addEventListener("change", () => {
+        const g = parseFloat(gamma.value);
+        if (g > 0) {
+            view.gamma = g;
+            display.draw(view.samples, view.gamma, false);
+        }
+    });
+    await render();
 }
 
 start().catch((error) => fail(error instanceof PageError ? error.message : "JavaScript error: " + error));
