@@ -38,7 +38,7 @@ venv: $(STAMP) $(SANDBOX_STAMP)
 render: $(STAMP) $(SANDBOX_STAMP)
 	$(if $(A),$(PY) -m rtfgu.grading render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H)),$(PY) -m rtfgu render-all --backend numba --out renders)
 
-# Every homework scene as a self-contained WebGPU page (rtfgu/browser): open html/NAME.html
+# Every homework scene as a self-contained WebGPU page (rtfgu/browser): open html/index.html
 # in a browser with WebGPU.
 html: $(STAMP)
 	$(PY) -m rtfgu export-html-all --out html

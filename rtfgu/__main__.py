@@ -179,7 +179,7 @@ def main(argv=None) -> int:
                    help="samples per pixel (default: the scene's sampler, else 1)")
     p.add_argument("--seed", type=int, default=0, help="the random stream's seed")
 
-    p = sub.add_parser("export-html-all", help="write every homework scene as a WebGPU page")
+    p = sub.add_parser("export-html-all", help="write every homework scene as a WebGPU page, and index.html")
     p.add_argument("--out", default="html")
 
     p = sub.add_parser("debug-pixel", help="trace one pixel through every path, bounce by bounce")
@@ -219,6 +219,10 @@ def main(argv=None) -> int:
             os.makedirs(args.out, exist_ok=True)
             for name in SCENES:
                 print(_export_html(name, os.path.join(args.out, name + ".html")), flush=True)
+            from .browser import index_html
+            with open(os.path.join(args.out, "index.html"), "w", encoding="utf-8") as f:
+                f.write(index_html(SCENES))
+            print(os.path.join(args.out, "index.html"))
         elif args.command == "debug-pixel":
             _debug_pixel(args)
         elif args.command == "export-wgsl":

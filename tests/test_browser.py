@@ -170,6 +170,13 @@ def test_a_page_of_the_shader_menu_offers_the_menu(tmp_path):
     assert len({s["wgsl"] for s in page["scenes"]}) == len(SHADER_MENU)   # each its own program
 
 
+def test_export_html_all_writes_a_page_per_scene_and_an_index(tmp_path, capsys):
+    assert main(["export-html-all", "--out", str(tmp_path)]) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted([n + ".html" for n in SCENES] + ["index.html"])
+    index = (tmp_path / "index.html").read_text(encoding="utf-8")
+    assert re.findall(r'href="(\w+)\.html"', index) == list(SCENES)
+
+
 def test_export_html_refuses_an_unknown_scene(tmp_path, capsys):
     with pytest.raises(SystemExit) as caught:
         main(["export-html", "no_such_scene", "-o", str(tmp_path / "x.html")])

@@ -135,3 +135,10 @@ def menu_page(scenes: dict, selected: str, width: int, height: int, spp: int | N
         raise ValueError("menu_page: %r is not among %s" % (selected, ", ".join(scenes)))
     data = [scene_data(scene, width, height, spp, seed, name) for name, scene in scenes.items()]
     return page_html(data, list(scenes).index(selected))
+
+
+def index_html(names) -> str:
+    """A page of links to the scene pages NAME.html beside it (make html's html/index.html)."""
+    links = "\n".join('<li><a href="%s.html">%s</a></li>' % (name, name) for name in names)
+    return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head><meta charset=\"utf-8\"><title>rtfgu scenes</title></head>\n"
+            "<body>\n<h1>The homework scenes, rendered with WebGPU</h1>\n<ul>\n%s\n</ul>\n</body>\n</html>\n" % links)
