@@ -141,6 +141,17 @@ def test_a_page_that_reports_nothing_fails_with_a_message(chromium):
         headless.result_images(result)
 
 
+def test_a_browser_that_exits_at_once_is_named_with_its_output(tmp_path, monkeypatch):
+    fake = tmp_path / "chromium"
+    fake.write_text("#!/bin/sh\necho cannot open display >&2\nexit 3\n")
+    fake.chmod(0o755)
+    monkeypatch.setenv("PATH", str(tmp_path))
+    result = headless.render_pages({"scene": "<html></html>"}, timeout=60)["scene"]
+    assert not result["ok"]
+    assert "Chromium exited (code 3) before the page reported a result" in result["message"]
+    assert "cannot open display" in result["message"]
+
+
 def test_export_html_holds_the_program_the_wgpu_path_runs(tmp_path):
     """The command line's page carries the very WGSL text and buffers the runner compiles."""
     out = tmp_path / "page.html"

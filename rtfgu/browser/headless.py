@@ -184,9 +184,11 @@ def render_pages(pages: dict, timeout: float = 300.0, parallel: int = PARALLEL_P
         except subprocess.TimeoutExpired:
             pass
         finally:
-            if process.poll() is None:
+            try:
                 os.killpg(process.pid, signal.SIGKILL)   # Chromium and the processes it started
-                process.wait()
+            except ProcessLookupError:
+                pass   # all gone already
+            process.wait()
     finally:
         server.shutdown()
         server.server_close()
@@ -197,10 +199,14 @@ def render_pages(pages: dict, timeout: float = 300.0, parallel: int = PARALLEL_P
               if "dbus" not in line.lower()]
     log.close()
     results = dict(server.results)
+    if time.monotonic() < server.deadline:
+        why = "Chromium exited (code %s) before the page reported a result" % process.returncode
+    else:
+        why = "the page reported no result within %.0f s" % timeout
     for name in pages:
         if name not in results:
-            results[name] = {"ok": False, "message": "%s: the page reported no result within %.0f s; "
-                             "Chromium's output ended with:\n%s" % (name, timeout, "\n".join(output[-15:]))}
+            results[name] = {"ok": False, "message": "%s: %s; Chromium's output ended with:\n%s"
+                             % (name, why, "\n".join(output[-15:]))}
     return results
 
 
