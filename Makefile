@@ -4,7 +4,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: render test venv clean bench montage assignments check grade grade-all autograder-zip release
+.PHONY: render html test venv clean bench montage assignments check grade grade-all autograder-zip release
 
 # Create the virtual environment and install the package (editable) with its test extras.
 # The stamp depends on setup.cfg, so a second run reinstalls nothing unless it changed.
@@ -38,6 +38,11 @@ venv: $(STAMP) $(SANDBOX_STAMP)
 render: $(STAMP) $(SANDBOX_STAMP)
 	$(if $(A),$(PY) -m rtfgu.grading render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H)),$(PY) -m rtfgu render-all --backend numba --out renders)
 
+# Every homework scene as a self-contained WebGPU page (rtfgu/browser): open html/index.html
+# in a browser with WebGPU.
+html: $(STAMP)
+	$(PY) -m rtfgu export-html-all --out html
+
 # The benchmark (not a test): prints the table and writes docs/bench.md and its plot.
 # The bench extra (matplotlib) is installed once, through its own stamp.
 BENCH_STAMP := $(VENV)/.installed-bench
@@ -58,7 +63,7 @@ test: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m pytest -n auto --dist loadfile
 
 clean:
-	rm -rf $(VENV) renders
+	rm -rf $(VENV) renders html
 
 # Assignments and the autograder (rtfgu/grading). A is an assignment id (a03 or
 # a03_intersections); `make render A=a03` renders that assignment's images with the

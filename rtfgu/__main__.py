@@ -1,4 +1,4 @@
-"""The command line: ``python -m rtfgu list | render NAME | render-all | info | export-wgsl NAME | debug-pixel NAME X Y``.
+"""The command line: ``python -m rtfgu list | render | render-all | info | export-wgsl | export-html | export-html-all | debug-pixel``.
 
 Errors in what the user typed (unknown scene, bad size, bad backend) exit with code 2 and a
 message naming the parameter, as argparse does for its own errors.
@@ -70,18 +70,25 @@ def _announce_compiling(backend: str, stream=None) -> None:
 PROGRESS_PASSES = 16
 
 
-def _render_one(name, width, height, backend, precision, out, show_progress, spp=None, seed=0):
+def scene_at(name, width=None, height=None):
+    """(the scene ``name``, width, height): its homework size unless given; at another size
+    a pinhole camera follows the aspect ratio, so that pixels stay square."""
     fn = get_scene(name)
     w, h = fn.size
     width = w if width is None else width
     height = h if height is None else height
+    render_module.check_size(width, height)
+    scene = fn()
+    if isinstance(scene.camera, PinholeCamera) and (width, height) != (w, h):
+        scene.camera.aspect = width / height
+    return scene, width, height
+
+
+def _render_one(name, width, height, backend, precision, out, show_progress, spp=None, seed=0):
+    scene, width, height = scene_at(name, width, height)
     if show_progress:
         _announce_compiling(backend or render_module.DEFAULT_BACKEND)
     progress = _progress_printer(name) if show_progress else None
-    scene = fn()
-    if isinstance(scene.camera, PinholeCamera) and (width, height) != (w, h):
-        # A size other than the homework's: keep square pixels by following its aspect ratio.
-        scene.camera.aspect = width / height
     start = time.perf_counter()
     samples = spp or (scene.sampler.num_samples if scene.sampler is not None else 1)
     passes = PROGRESS_PASSES if show_progress and samples > 1 else 1
@@ -95,13 +102,7 @@ def _debug_pixel(args) -> None:
     """Trace one pixel on every path and print them side by side (rtfgu/debug.py)."""
     from .debug import PATHS, TOLERANCES, PathNotInRelease, report, trace_pixel
 
-    fn = get_scene(args.name)
-    width = fn.size[0] if args.width is None else args.width
-    height = fn.size[1] if args.height is None else args.height
-    render_module.check_size(width, height)
-    scene = fn()
-    if isinstance(scene.camera, PinholeCamera) and (width, height) != tuple(fn.size):
-        scene.camera.aspect = width / height  # as render does for another size
+    scene, width, height = scene_at(args.name, args.width, args.height)
     traces, tolerances, notes = {}, {}, []
     for label, backend, precision in PATHS:
         formula = None if backend == "reference" else args.formula
@@ -118,6 +119,23 @@ def _debug_pixel(args) -> None:
                  % (args.name, args.x, args.y, width, height, formulas), traces, tolerances))
     for note in notes:
         print(note)
+
+
+def _export_html(name, out, width=None, height=None, spp=None, seed=0) -> str:
+    """Write the WebGPU page of scene ``name`` (rtfgu/browser/export.py) to ``out``; a scene
+    of the worksheet's shader menu offers the others of the menu."""
+    from .browser import menu_page, scene_page
+    from .scenes.default_scene import SHADER_MENU
+
+    scene, width, height = scene_at(name, width, height)
+    if name in SHADER_MENU:
+        menu = {other: scene_at(other, width, height)[0] for other in SHADER_MENU}
+        html = menu_page(menu, name, width, height, spp, seed)
+    else:
+        html = scene_page(scene, width, height, spp, seed, name)
+    with open(out, "w", encoding="utf-8") as f:
+        f.write(html)
+    return "%s  %dx%d  WebGPU page" % (out, width, height)
 
 
 def main(argv=None) -> int:
@@ -152,6 +170,18 @@ def main(argv=None) -> int:
     p.add_argument("name")
     p.add_argument("-o", "--output", default=None, help="file path (default: standard output)")
 
+    p = sub.add_parser("export-html", help="write a scene as a self-contained WebGPU page")
+    p.add_argument("name")
+    p.add_argument("-o", "--output", default=None, help="HTML path (default NAME.html)")
+    p.add_argument("--width", type=int, default=None)
+    p.add_argument("--height", type=int, default=None)
+    p.add_argument("--spp", type=int, default=None,
+                   help="samples per pixel (default: the scene's sampler, else 1)")
+    p.add_argument("--seed", type=int, default=0, help="the random stream's seed")
+
+    p = sub.add_parser("export-html-all", help="write every homework scene as a WebGPU page, and index.html")
+    p.add_argument("--out", default="html")
+
     p = sub.add_parser("debug-pixel", help="trace one pixel through every path, bounce by bounce")
     p.add_argument("name")
     p.add_argument("x", metavar="X", type=int, help="column, 0 at the left")
@@ -182,6 +212,17 @@ def main(argv=None) -> int:
             from .wgsl import adapter_description
             print("wgpu adapter: %s" % adapter_description())
             print("backends: %s" % ", ".join(render_module.BACKENDS))
+        elif args.command == "export-html":
+            print(_export_html(args.name, args.output or args.name + ".html", args.width, args.height,
+                               args.spp, args.seed))
+        elif args.command == "export-html-all":
+            os.makedirs(args.out, exist_ok=True)
+            for name in SCENES:
+                print(_export_html(name, os.path.join(args.out, name + ".html")), flush=True)
+            from .browser import index_html
+            with open(os.path.join(args.out, "index.html"), "w", encoding="utf-8") as f:
+                f.write(index_html(SCENES))
+            print(os.path.join(args.out, "index.html"))
         elif args.command == "debug-pixel":
             _debug_pixel(args)
         elif args.command == "export-wgsl":

@@ -114,3 +114,10 @@ for _name, _shader in (("mirror", MIRROR), ("refractive", TRANSPARENT), ("phong"
 def default_widescreen_800x450() -> Scene:
     """The Lambertian scene with shadows at 16:9: the camera's aspect ratio follows the image."""
     return default_scene(LAMBERTIAN, LAMBERTIAN, shadows=True, aspect=800 / 450)
+
+
+# The worksheets' shader menu (02562 weeks 2-3): the homework scenes of the default scene
+# that differ only in the sphere's shader (flat colours: every shape's base colour), in the
+# order the weeks add them; a web page of one of them offers the others (rtfgu/browser).
+SHADER_MENU = ("default_flat_colors", "default_lambertian_shadows", "default_phong_sphere",
+               "default_mirror_sphere", "default_refractive_sphere", "default_glossy_sphere")

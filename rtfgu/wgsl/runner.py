@@ -155,27 +155,42 @@ class CompiledProgram:
         queue = self.device.queue
         if samples[0] == 0:
             queue.write_buffer(buffer, 0, bytes(16 * width * height))
-        batch = PATH_SAMPLES_PER_DISPATCH if "path_trace" in self.program.features else samples[1] - samples[0]
-        for row0 in range(0, height, tile):
-            th = min(tile, height - row0)
-            for col0 in range(0, width, tile):
-                tw = min(tile, width - col0)
-                for first in range(samples[0], samples[1], max(batch, 1)):
-                    queue.write_buffer(self.uniforms, 0, structs.uniforms(
-                        self.background, seed, width, height, (col0, row0), (tw, th),
-                        (first, min(first + batch, samples[1]))))
-                    encoder = self.device.create_command_encoder()
-                    compute = encoder.begin_compute_pass()
-                    compute.set_pipeline(self.pipeline)
-                    compute.set_bind_group(0, self.scene_group)
-                    compute.set_bind_group(1, group)
-                    compute.dispatch_workgroups(-(-tw // WORKGROUP), -(-th // WORKGROUP), 1)
-                    compute.end()
-                    queue.submit([encoder.finish()])
-            if progress is not None:
-                progress(row0 + th, height)
+        for origin, size in tiles(width, height, tile):
+            for batch in sample_batches(self.program, samples):
+                queue.write_buffer(self.uniforms, 0, structs.uniforms(
+                    self.background, seed, width, height, origin, size, batch))
+                encoder = self.device.create_command_encoder()
+                compute = encoder.begin_compute_pass()
+                compute.set_pipeline(self.pipeline)
+                compute.set_bind_group(0, self.scene_group)
+                compute.set_bind_group(1, group)
+                compute.dispatch_workgroups(*workgroups(size), 1)
+                compute.end()
+                queue.submit([encoder.finish()])
+            if progress is not None and origin[0] + size[0] == width:
+                progress(origin[1] + size[1], height)
         data = np.frombuffer(queue.read_buffer(buffer, 0, 16 * width * height), dtype=np.float32)
         return data.reshape(height, width, 4)[:, :, :3].copy()
+
+
+def tiles(width: int, height: int, tile: int = TILE) -> list:
+    """((column, row) of the top-left pixel, (width, height)) of every tile of the image,
+    row by row from the top: one dispatch (per batch of samples) each."""
+    return [((col0, row0), (min(tile, width - col0), min(tile, height - row0)))
+            for row0 in range(0, height, tile) for col0 in range(0, width, tile)]
+
+
+def sample_batches(program, samples) -> list:
+    """The ranges (first, end) of samples that one dispatch adds, in order: all of
+    ``samples`` at once, or PATH_SAMPLES_PER_DISPATCH at a time for a path tracer."""
+    first, end = samples
+    batch = PATH_SAMPLES_PER_DISPATCH if "path_trace" in program.features else end - first
+    return [(s, min(s + batch, end)) for s in range(first, end, max(batch, 1))]
+
+
+def workgroups(size) -> tuple:
+    """The workgroups (x, y) that cover a tile of ``size`` pixels."""
+    return -(-size[0] // WORKGROUP), -(-size[1] // WORKGROUP)
 
 
 def compile_program(program) -> CompiledProgram:
@@ -193,12 +208,20 @@ def prepare(scene, scene_buffer: str = DEFAULT_SCENE_BUFFER, overrides=None,
     """Lay out ``scene`` in float32, assemble and compile (or reuse) its program, upload it.
     ``formula``: the sphere test, "slide" or "robust" (None: the assembler's default);
     ``sampler``: the render's Sampler, or None for one sample at each pixel's centre."""
+    flat, program = assemble_scene(scene, scene_buffer, overrides, formula, sampler)
+    compiled = compile_program(program)
+    compiled.upload(flat)
+    return compiled
+
+
+def assemble_scene(scene, scene_buffer: str = DEFAULT_SCENE_BUFFER, overrides=None,
+                   formula: str | None = None, sampler=None) -> tuple:
+    """(FlatScene in float32 with its sampler, the Program assembled for it): what
+    ``prepare`` compiles and rtfgu.browser puts in a web page."""
     check_formula(formula)  # a bad formula is refused before the scene is compiled
     flat = compile_scene(scene, "float32")
     flat.sampler = compile_sampler(sampler, "float32")
-    compiled = compile_program(assemble(flat, scene_buffer, overrides, formula))
-    compiled.upload(flat)
-    return compiled
+    return flat, assemble(flat, scene_buffer, overrides, formula)
 
 
 class WGPUAccumulator:
