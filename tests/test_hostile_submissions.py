@@ -15,6 +15,7 @@ runs it. tests/test_grader_fallback.py holds the attacks on the grader itself.
 from __future__ import annotations
 
 import csv
+import json
 import os
 import re
 import socket
@@ -677,6 +678,34 @@ def _uid_of(pid: str):
         return os.stat("/proc/" + pid).st_uid
     except OSError:
         return None
+
+
+def test_a_forged_traceback_dump_can_only_stop_the_students_own_functions(isolation, tmp_path):
+    """The dump that names where a looping test was (rtfgu.grading.timeouts) is written by the
+    student's process, which can find its descriptor in its own command line: a forged dump with
+    an overlong name, a frame outside the student's files and megabytes of junk only stops the
+    student's own Plane.intersect_p for the later tests; the grading ends, its texts stay short."""
+    honest = honest_scores(isolation)
+    attack = """
+        import json, os, sys
+        fd = json.loads(sys.argv[5])["dump"][0]
+        fake = ('File "/x/rtfgu/shapes/plane.py", line 5 in ' + "f" * 200 + "\\n"
+                'File "/x/rtfgu/../grading/grader.py", line 1 in grade\\n'
+                'File "/x/rtfgu/shapes/plane.py", line 27 in intersect_p\\n')
+        os.write(fd, fake.encode() + b"z" * (4 << 20))
+        while True:
+            pass
+        """
+    result = grade("a03", _submission(tmp_path / "sub", attack), tmp_path / "out", time_limit=2.0,
+                   only=ONLY + ("03_sphere_intersect_p_rays_that_miss",))
+    scores = _scores(result)
+    assert {k: v for k, v in scores.items() if k != "3.3"} == honest
+    tests = {t.number: t for t in result.tests}
+    assert tests["3.2"].cause == "time limit (2 s) at shapes/plane.py:27"
+    assert "f" * 101 not in json.dumps([t.output for t in result.tests])
+    assert all(len(t.output) < 20_000 for t in result.tests)
+    # 3.3 calls Sphere.intersect_p, which loops again: the forged frame did not stop it.
+    assert scores["3.3"] == 0 and "time limit of 2 s" in tests["3.3"].output
 
 
 def test_the_gradebook_error_column_names_why_tests_could_not_judge_the_code(tmp_path, isolation):

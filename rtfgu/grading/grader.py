@@ -167,7 +167,7 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
             test, stuck = _run_check(a, check, ws, tmp, refs, out_dir, isolation,
                                      time_limit, memory_mb, output_limit, log, rng, stopped)
             result.tests.append(test)
-            if stuck is not None:
+            if stuck is not None and all(e[:2] != [stuck[0], stuck[2]] for e in stopped):
                 stopped.append(stopped_entry(stuck, check.number))
     now = _digest({p: p.read_bytes() if p.exists() else b"" for p in ref_files})
     if now != digest:

@@ -123,7 +123,7 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
         data, output, failure, stuck = run_probe(
             root, stored_probe(c, reference), c.time_limit or (time_limit * 6 if c.kind == "image" else time_limit),
             stopped, a.files)
-        if stuck is not None:
+        if stuck is not None and all(e[:2] != [stuck[0], stuck[2]] for e in stopped):
             stopped.append(stopped_entry(stuck, c.number))
         image = None
         if failure is not None:

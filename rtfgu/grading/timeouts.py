@@ -20,7 +20,11 @@ import re
 # The message of a stopped function's call (probes/support.stop_functions), with the test whose
 # time limit stopped it.
 STOPPED = re.compile(r"was not run: it did not finish in test ([\d.]+)")
-FRAME = re.compile(r'^\s*File "(?P<path>[^"]+)", line (?P<line>\d+) in (?P<function>\S+)')
+# A frame of faulthandler's dump. The dump is the student's process's to write: a function is
+# a Python name (or <module>, <lambda>, ...) of at most 100 characters, a line at most 9 digits.
+FRAME = re.compile(r'^\s*File "(?P<path>[^"]{1,1000})", line (?P<line>\d{1,9}) in '
+                   r'(?P<function><?[A-Za-z_][A-Za-z0-9_]{0,99}>?)\s*$')
+MAX_STOPPED = 16       # functions stopped in one grading, at most
 MARKER = "/rtfgu/"
 
 
@@ -51,7 +55,7 @@ def where(stuck) -> str:
 def boot_options(dump_fd: int | None, time_limit: float, stopped=()) -> str:
     """probes/boot.py's OPTIONS: the dump's file descriptor and time, and the functions stopped
     by earlier tests ([file, function, line, test number], as stopped_entry gives them)."""
-    options = {"stopped": [list(s) for s in stopped]}
+    options = {"stopped": [list(s) for s in stopped][:MAX_STOPPED]}
     if dump_fd is not None:
         options["dump"] = [dump_fd, dump_after(time_limit)]
     return json.dumps(options)
