@@ -13,6 +13,7 @@ import time
 from . import renderer as render_module
 from .cameras import PinholeCamera
 from .image import write_png
+from .progress import TimeLeft
 from .scenes import SCENES, get_scene
 from .wgsl import NoAdapterError, WGSLCompileError
 
@@ -22,31 +23,20 @@ BAR = 30
 
 def _progress_printer(label: str, stream=None):
     """progress(done, total) drawing a bar on one line of standard error, at most twice a
-    second, with the time so far and the time left at the pace measured since the first
-    report: the first pass or row also holds compiling the kernels (numba, WGSL), which the
-    rest do not repeat, so it is left out of the estimate."""
-    start = time.perf_counter()
+    second, with the time so far and the time left (rtfgu.progress.TimeLeft: the pace since
+    the first report, which also holds compiling the kernels)."""
+    clock = TimeLeft()
     shown = [0.0]
-    first = []   # (elapsed, done) at the first report
 
     def progress(done: int, total: int) -> None:
-        elapsed = time.perf_counter() - start
-        if done and not first:
-            first.append((elapsed, done))
-        if done < total and elapsed - shown[0] < 0.5:
+        clock.update(done, total)
+        if done < total and clock.elapsed - shown[0] < 0.5:
             return  # a line every half second is enough to show it is alive
-        shown[0] = elapsed
+        shown[0] = clock.elapsed
         filled = BAR * done // total
-        if done == total:
-            left = "done"
-        elif first and done > first[0][1]:
-            pace = (elapsed - first[0][0]) / (done - first[0][1])
-            left = "%.1f s left" % (pace * (total - done))
-        else:
-            left = "estimating the time left"
         end = "\n" if done == total else ""
         print("\r%s [%s%s] %3d%%  %.1f s, %s" % (
-            label, "#" * filled, "." * (BAR - filled), 100 * done // total, elapsed, left),
+            label, "#" * filled, "." * (BAR - filled), 100 * done // total, clock.elapsed, clock.describe()),
             end=end, file=stream or sys.stderr, flush=True)
     return progress
 

@@ -378,6 +378,23 @@ def test_make_render_compares_with_the_full_size_reference_the_release_holds(rel
         assert held == sorted(a.images), a.id
 
 
+def test_rtfgu_show_in_a_release_renders_with_the_lecture_layer_and_says_where_the_image_is(release, tmp_path):
+    own = tmp_path / "release"
+    shutil.copytree(release, own)
+    write_files(solution_files("a05"), own / "rtfgu")          # a05's scene meets a03-a05's functions
+    write_files(solution_files("a04"), own / "rtfgu")
+    write_files(solution_files("a03"), own / "rtfgu")
+    done = subprocess.run([sys.executable, "-S", "-c", "import rtfgu\nfrom rtfgu.scenes import get_scene\n"
+                           "rtfgu.show(get_scene('default_phong_sphere')(), 12, 8)"],
+                          cwd=own, env=_env(own), capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "rtfgu.show: wrote rtfgu_show.png (12x8, 1 sample, reference backend" in done.stdout, done.stdout
+    assert (own / "rtfgu_show.png").is_file()
+    notebook = json.loads((release / "notebooks" / "first_render.ipynb").read_text())
+    assert notebook["cells"] and all(not c.get("outputs") for c in notebook["cells"] if c["cell_type"] == "code")
+    assert "notebook =" in (release / "setup.cfg").read_text() and "jupyter lab" in (release / "README.md").read_text()
+
+
 def test_make_release_names_the_visible_tests_students_cannot_pass_with_the_assignments_own_code():
     """Found by running them in the release: a09's furnace and Cornell box render with a03's
     shapes and a04's (and a05's) materials; in a release revealing nothing, a06's image needs

@@ -280,6 +280,10 @@ rtfgu_checker = reference/*/*, reference/*/full_size/*
 [options.extras_require]
 test =
     pytest>=7
+# Jupyter for notebooks/ and rtfgu.show: pip install -e '.[notebook]', then jupyter lab
+notebook =
+    ipykernel>=6
+    jupyterlab>=4
 
 [tool:pytest]
 testpaths = tests
@@ -365,6 +369,10 @@ def _student_readme(reveal, assignments) -> str:
         "make debug-pixel A=a03 T=3.8 X=16 Y=32    # test 3.8, column 16, row 32 (row 0 at the top)",
         "```",
         "",
+        "`notebooks/first_render.ipynb` renders a scene and shows it as it refines, traces a pixel",
+        "and changes a material: `.venv/bin/pip install -e '.[notebook]'`, then `.venv/bin/jupyter lab`.",
+        "Outside a notebook `rtfgu.show(scene, w, h)` writes the image to `rtfgu_show.png` and says so.",
+        "",
         "A file of the package is not a program: `python rtfgu/shapes/sphere.py` only tells you",
         "to run `make check`. To try your code yourself, `.venv/bin/python -c 'import rtfgu; ...'`",
         "from this folder; `rtfgu.render(scene, w, h)` renders with the lecture layer.",
@@ -383,6 +391,16 @@ def _student_readme(reveal, assignments) -> str:
         "so they are not part of this copy: `rtfgu.render(..., backend=\"numba\")` says so.",
     ]
     return "\n".join(lines) + "\n"
+
+
+def _notebook_without_outputs(path: Path) -> str:
+    """The notebook with its outputs cleared: the course tree's saved images come from paths a
+    release does not carry; the student's first run makes their own."""
+    notebook = json.loads(path.read_text())
+    for cell in notebook["cells"]:
+        if cell["cell_type"] == "code":
+            cell["outputs"], cell["execution_count"] = [], None
+    return json.dumps(notebook, indent=1) + "\n"
 
 
 def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
@@ -413,6 +431,8 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
         "tests/test_visible.py": STUDENT_TEST,
         "assignments/README.md": index_readme(release=True),
         ".gitignore": ".venv/\nrenders/\ncheck-results/\n__pycache__/\n*.pyc\n*.egg-info/\n",
+        "notebooks/first_render.ipynb": _notebook_without_outputs(Path(package_dir).parent / "notebooks"
+                                                                  / "first_render.ipynb"),
     }
     for a in ASSIGNMENTS.values():
         extra["assignments/%s/README.md" % a.id] = assignment_readme(a, release=True)
