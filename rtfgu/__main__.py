@@ -111,7 +111,7 @@ def _debug_pixel(args) -> None:
         print(note)
 
 
-def _export_html(name, out, width=None, height=None, spp=None, seed=0) -> str:
+def _export_html(name, out, width=None, height=None, spp=None, seed=0, formula=None) -> str:
     """Write the WebGPU page of scene ``name`` (rtfgu/browser/export.py) to ``out``; a scene
     of the worksheet's shader menu offers the others of the menu."""
     from .browser import menu_page, scene_page
@@ -120,9 +120,9 @@ def _export_html(name, out, width=None, height=None, spp=None, seed=0) -> str:
     scene, width, height = scene_at(name, width, height)
     if name in SHADER_MENU:
         menu = {other: scene_at(other, width, height)[0] for other in SHADER_MENU}
-        html = menu_page(menu, name, width, height, spp, seed)
+        html = menu_page(menu, name, width, height, spp, seed, formula)
     else:
-        html = scene_page(scene, width, height, spp, seed, name)
+        html = scene_page(scene, width, height, spp, seed, name, formula=formula)
     with open(out, "w", encoding="utf-8") as f:
         f.write(html)
     return "%s  %dx%d  WebGPU page" % (out, width, height)
@@ -168,6 +168,8 @@ def main(argv=None) -> int:
     p.add_argument("--spp", type=int, default=None,
                    help="samples per pixel (default: the scene's sampler, else 1)")
     p.add_argument("--seed", type=int, default=0, help="the random stream's seed")
+    p.add_argument("--formula", default=None, choices=render_module.FORMULAS,
+                   help="the sphere test (default: the wgpu backend's own)")
 
     p = sub.add_parser("export-html-all", help="write every homework scene as a WebGPU page, and index.html")
     p.add_argument("--out", default="html")
@@ -204,7 +206,7 @@ def main(argv=None) -> int:
             print("backends: %s" % ", ".join(render_module.BACKENDS))
         elif args.command == "export-html":
             print(_export_html(args.name, args.output or args.name + ".html", args.width, args.height,
-                               args.spp, args.seed))
+                               args.spp, args.seed, args.formula))
         elif args.command == "export-html-all":
             os.makedirs(args.out, exist_ok=True)
             for name in SCENES:

@@ -132,9 +132,7 @@ def test_a_shader_that_does_not_compile_is_shown_by_its_file_and_line(page_resul
 
 def test_a_page_that_reports_nothing_fails_with_a_message(chromium):
     silent = "<!DOCTYPE html><html><body><p>no WebGPU here</p></body></html>"
-    start = time.perf_counter()
     result = headless.render_pages({"silent": silent}, timeout=2)["silent"]
-    assert time.perf_counter() - start < 30
     assert not result["ok"]
     assert "silent: the page reported no result within 2 s" in result["message"]
     with pytest.raises(RuntimeError, match="no result"):

@@ -10,7 +10,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
+from PIL import Image
 
 from rtfgu.grading.assignments import ASSIGNMENTS, block_table
 from rtfgu.grading.checks import checks_for
@@ -393,6 +395,38 @@ def test_rtfgu_show_in_a_release_renders_with_the_lecture_layer_and_says_where_t
     notebook = json.loads((release / "notebooks" / "first_render.ipynb").read_text())
     assert notebook["cells"] and all(not c.get("outputs") for c in notebook["cells"] if c["cell_type"] == "code")
     assert "notebook =" in (release / "setup.cfg").read_text() and "jupyter lab" in (release / "README.md").read_text()
+
+
+def test_make_html_in_a_release_shows_the_students_own_wgsl_in_the_browser(release, tmp_path):
+    """`make html A=a06` writes a WebGPU page from the student's intersect_*.wgsl: in headless
+    Chromium the solution's page shows the reference image, a planted sphere bug a wrong one."""
+    from rtfgu.browser import headless
+    from rtfgu.grading.checks.images import image_differences
+
+    try:
+        headless.find_chromium()
+    except headless.BrowserNotFound as error:
+        pytest.skip(str(error))
+    pages, wrong = {}, [("wgsl/intersect_sphere.wgsl", "let disc = b * b - 4.0 * a * c;",
+                         "let disc = b * b + 4.0 * a * c;")]
+    for label, files in (("solution", solution_files("a06")),
+                         ("planted", apply_replacements(solution_files("a06"), wrong, "a06_disc_plus"))):
+        own = tmp_path / label
+        shutil.copytree(release, own)
+        write_files(files, own / "rtfgu")
+        done = _run(own, "html", "a06", "--width", "32", "--height", "32")   # the image test's size
+        assert done.returncode == 0, done.stdout + done.stderr
+        pages[label] = (own / "html" / "a06" / "default_flat_colors.html").read_text()
+    assert "b * b + 4.0 * a * c" in pages["planted"] and "b * b + 4.0 * a * c" not in pages["solution"]
+    results = headless.render_pages(pages, timeout=120)
+    (test,) = [c for c in checks_for("a06") if c.kind == "image"]
+    reference = np.asarray(Image.open(PACKAGE_DIR / "grading" / "reference" / test.assignment /
+                                      (test.slug + ".png")).convert("RGB"))
+    counts = {}
+    for label in pages:
+        _, canvas = headless.result_images(results[label])
+        counts[label] = int((np.maximum(*image_differences(canvas, reference)) > 8).sum())
+    assert counts["solution"] == 0 and counts["planted"] > 20, counts
 
 
 def test_make_release_names_the_visible_tests_students_cannot_pass_with_the_assignments_own_code():

@@ -23,7 +23,7 @@ from importlib import resources
 from .. import layout
 from ..options import pixel_sampler
 from ..wgsl import structs
-from ..wgsl.assemble import GENERATED
+from ..wgsl.assemble import GENERATED, PieceNotInRelease
 from ..wgsl.runner import DEFAULT_SCENE_BUFFER, TILE, assemble_scene, sample_batches, tiles, workgroups
 from ..image import GAMMA
 
@@ -65,14 +65,15 @@ def _zoom(flat, bindings):
 
 
 def scene_data(scene, width: int, height: int, spp: int | None = None, seed: int = 0,
-               name: str = "", overrides=None, tile: int = TILE) -> dict:
+               name: str = "", overrides=None, tile: int = TILE, formula: str | None = None) -> dict:
     """Everything page.js needs to render ``scene`` at ``width`` x ``height`` as the wgpu
-    path does (rtfgu.render(..., backend="wgpu", spp=spp, seed=seed)), as JSON-ready values.
-    ``overrides``: WGSL pieces put in place of the package's (rtfgu.wgsl.assemble)."""
+    path does (rtfgu.render(..., backend="wgpu", spp=spp, seed=seed, formula=formula)), as
+    JSON-ready values. ``overrides``: WGSL pieces put in place of the package's
+    (rtfgu.wgsl.assemble)."""
     scene.validate()
     sampler = pixel_sampler(scene, spp)
     total = 1 if sampler is None else sampler.num_samples
-    flat, program = assemble_scene(scene, DEFAULT_SCENE_BUFFER, overrides, None, sampler)
+    flat, program = assemble_scene(scene, DEFAULT_SCENE_BUFFER, overrides, formula, sampler)
     background = flat.background[:3]
     frames = []
     for batch in sample_batches(program, (0, total)):
@@ -122,19 +123,26 @@ def page_html(scenes: list, selected: int = 0) -> str:
 
 
 def scene_page(scene, width: int, height: int, spp: int | None = None, seed: int = 0,
-               name: str = "", overrides=None) -> str:
+               name: str = "", overrides=None, formula: str | None = None) -> str:
     """The self-contained HTML page that renders ``scene`` with WebGPU."""
-    return page_html([scene_data(scene, width, height, spp, seed, name, overrides)])
+    return page_html([scene_data(scene, width, height, spp, seed, name, overrides, formula=formula)])
 
 
 def menu_page(scenes: dict, selected: str, width: int, height: int, spp: int | None = None,
-              seed: int = 0) -> str:
+              seed: int = 0, formula: str | None = None) -> str:
     """One page for the scenes {name: Scene} (the worksheet's shader menu,
-    rtfgu.scenes.default_scene.SHADER_MENU), showing ``selected`` first."""
+    rtfgu.scenes.default_scene.SHADER_MENU), showing ``selected`` first. A scene whose WGSL
+    pieces this copy leaves out (a student release) is left out of the menu."""
     if selected not in scenes:
         raise ValueError("menu_page: %r is not among %s" % (selected, ", ".join(scenes)))
-    data = [scene_data(scene, width, height, spp, seed, name) for name, scene in scenes.items()]
-    return page_html(data, list(scenes).index(selected))
+    data = []
+    for name, scene in scenes.items():
+        try:
+            data.append(scene_data(scene, width, height, spp, seed, name, formula=formula))
+        except PieceNotInRelease:
+            if name == selected:
+                raise
+    return page_html(data, [d["name"] for d in data].index(selected))
 
 
 def index_html(names) -> str:

@@ -236,6 +236,35 @@ def debug_pixel(assignment, test, x: int, y: int, root=".", reference_dir: Path 
     return data["report"], bool(data["differs"])
 
 
+def html(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, log=print) -> int:
+    """Write the assignment's homework images as WebGPU pages made from the student's own
+    package (``python -m rtfgu export-html``: the WGSL the student wrote, assembled as the wgpu
+    path assembles it, with the slides' sphere test, intersect_sphere.wgsl, as a06's image test
+    renders) into ``out_dir`` (default html/<aNN>); 0 if every page was written."""
+    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
+    root = Path(root).resolve()
+    if not a.images:
+        log("%s has no images to make pages of: its tests are `make check A=%s`" % (a.id, a.short))
+        return 0
+    out = Path(out_dir) if out_dir is not None else root / "html" / a.short
+    out.mkdir(parents=True, exist_ok=True)
+    failed = 0
+    for name in a.images:
+        page = out / (name + ".html")
+        size = (["--width", str(width)] if width else []) + (["--height", str(height)] if height else [])
+        done = subprocess.run([sys.executable] + (["-S"] if sys.flags.no_site else []) +
+                              ["-m", "rtfgu", "export-html", name, "-o", str(page), "--formula", "slide"] + size,
+                              cwd=str(root), capture_output=True, text=True, timeout=600)
+        if done.returncode != 0:
+            failed += 1
+            log("%s: the page could not be made: %s" % (name, (done.stderr or done.stdout).strip()[-2000:]))
+            continue
+        log(str(page))
+    if failed < len(a.images):
+        log("open a page in a browser with WebGPU (Chrome or Edge; Firefox with dom.webgpu.enabled)")
+    return 1 if failed else 0
+
+
 def compare_full_size(a, name: str, path: Path, reference_dir: Path = REFERENCE_DIR) -> str:
     """What the render at ``path`` is beside the full-size reference a release holds for it
     (rtfgu.grading.release.full_size_references): a diff image next to it when they differ,
@@ -274,6 +303,12 @@ def main(argv=None) -> int:
     p.add_argument("--out", default=None, help="default renders/<aNN>")
     p.add_argument("--width", type=int, default=0)
     p.add_argument("--height", type=int, default=0)
+    p = sub.add_parser("html", help="the assignment's images as WebGPU pages of your code (make html A=a06)")
+    p.add_argument("assignment", nargs="?")
+    p.add_argument("--root", default=".")
+    p.add_argument("--out", default=None, help="default html/<aNN>")
+    p.add_argument("--width", type=int, default=0)
+    p.add_argument("--height", type=int, default=0)
     p = sub.add_parser("debug-pixel", help="one pixel of an image test, traced through your code beside the "
                                            "expected values (make debug-pixel A=a03 T=3.8 X=16 Y=32)")
     p.add_argument("assignment", nargs="?")
@@ -301,6 +336,8 @@ def main(argv=None) -> int:
         a = get_assignment(args.assignment)
         if args.command == "render":
             return render(a, args.root, args.out, args.width, args.height)
+        if args.command == "html":
+            return html(a, args.root, args.out, args.width, args.height)
         out = args.out or str(Path(args.root) / "check-results" / a.short)
         result = check(a, args.root, out, args.time_limit, log=lambda line: print(line, flush=True))
         print(result.summary())

@@ -204,6 +204,7 @@ STUDENT_MAKEFILE = """\
 #   make render A=a03   the assignment's images rendered with your code, into renders/a03/, each
 #                       compared with its full-size reference (renders/a03/<image>_diff.png where they differ)
 #                       (W=48 H=48: at the size of the image tests, whose pixels their messages name)
+#   make html A=a06     the assignment's images as WebGPU pages of your code (your WGSL), into html/a06/
 #   make debug-pixel A=a03 T=3.8 X=16 Y=32
 #                       one pixel of image test 3.8, traced through your code beside the expected values
 #   make test [A=a03]   every assignment's (or one's) visible tests, through pytest
@@ -212,7 +213,7 @@ VENV := .venv
 PY := $(VENV)/bin/python
 STAMP := $(VENV)/.installed
 
-.PHONY: check render debug-pixel test venv clean
+.PHONY: check render html debug-pixel test venv clean
 
 # pip's and setuptools' chatter goes to .venv/install.log, shown only if the install fails.
 $(STAMP): setup.cfg pyproject.toml
@@ -230,6 +231,9 @@ check: $(STAMP)
 render: $(STAMP)
 \t$(PY) -m rtfgu_checker render $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H))
 
+html: $(STAMP)
+\t$(PY) -m rtfgu_checker html $(A) $(if $(W),--width $(W)) $(if $(H),--height $(H))
+
 debug-pixel: $(STAMP)
 \t$(PY) -m rtfgu_checker debug-pixel $(A) $(T) $(X) $(Y)
 
@@ -237,7 +241,7 @@ test: $(STAMP)
 \t$(PY) -m pytest $(if $(A),-k $(A))
 
 clean:
-\trm -rf $(VENV) renders check-results
+\trm -rf $(VENV) renders check-results html
 """
 
 STUDENT_TEST = '''"""Every assignment's visible tests on your code, one pytest test each (make test)."""
@@ -369,6 +373,9 @@ def _student_readme(reveal, assignments) -> str:
         "make debug-pixel A=a03 T=3.8 X=16 Y=32    # test 3.8, column 16, row 32 (row 0 at the top)",
         "```",
         "",
+        "`make html A=a06` writes the assignment's images as web pages that render your WGSL with",
+        "WebGPU in the browser, as the 02562 worksheets do (`html/a06/`; Chrome or Edge).",
+        "",
         "`notebooks/first_render.ipynb` renders a scene and shows it as it refines, traces a pixel",
         "and changes a material: `.venv/bin/pip install -e '.[notebook]'`, then `.venv/bin/jupyter lab`.",
         "Outside a notebook `rtfgu.show(scene, w, h)` writes the image to `rtfgu_show.png` and says so.",
@@ -430,7 +437,7 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
         "pyproject.toml": (Path(package_dir).parent / "pyproject.toml").read_text(),
         "tests/test_visible.py": STUDENT_TEST,
         "assignments/README.md": index_readme(release=True),
-        ".gitignore": ".venv/\nrenders/\ncheck-results/\n__pycache__/\n*.pyc\n*.egg-info/\n",
+        ".gitignore": ".venv/\nrenders/\ncheck-results/\nhtml/\n__pycache__/\n*.pyc\n*.egg-info/\n",
         "notebooks/first_render.ipynb": _notebook_without_outputs(Path(package_dir).parent / "notebooks"
                                                                   / "first_render.ipynb"),
     }
