@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import re
-import time
 
 import numpy as np
 import pytest
@@ -63,7 +62,7 @@ def chromium():
 @pytest.fixture(scope="module")
 def page_results(chromium):
     """{name: the page's result} of every homework scene at WIDTH x HEIGHT and of BROKEN,
-    from one Chromium run; the run's seconds under "seconds"."""
+    from one Chromium run."""
     pages = {}
     for name in SCENES:
         scene, width, height = scene_at(name, WIDTH, HEIGHT)
@@ -73,10 +72,8 @@ def page_results(chromium):
     pages[BROKEN] = scene_page(scene, width, height, name=BROKEN, overrides=overrides)
     menu = {name: scene_at(name, WIDTH, HEIGHT)[0] for name in SHADER_MENU}
     pages[CONTROLS] = menu_page(menu, SHADER_MENU[0], WIDTH, HEIGHT)
-    start = time.perf_counter()
     results = headless.render_pages(pages, timeout=TIMEOUT, queries={
         CONTROLS: "scene=%s&zoom=%r&gamma=%r" % (CONTROLLED_SCENE, ZOOM, CONTROLLED_GAMMA)})
-    results["seconds"] = time.perf_counter() - start
     return results
 
 
