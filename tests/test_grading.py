@@ -111,6 +111,14 @@ PLANTED = [
     ("a09_exponent_off_by_one", "a09", {"9.1": "(1 - y)^(1 / (e + 1))", "9.2": "e = 10", "9.3": "g = cos",
                                         "9.6": "not where Suffern's map puts them",
                                         "9.7": "estimates the cell's solid angle", "9.9": "g = cos"}),
+    ("a10_mj_not_shuffled", "a10", {"10.2": "in the canonical arrangement's order"}),
+    ("a10_mj_y_like_x", "a10", {"10.1": "(jittered: one point per grid cell)", "10.2": "are not multi-jittered",
+                                "10.6": "(jittered: one point per grid cell)"}),
+    ("a10_mj_own_random", "a10", {"10.3": "made other points the second time"}),
+    # The polar map is uniform on the disk too: only the values (and the hint) tell it apart.
+    ("a10_concentric_polar", "a10", {"10.4": "this is the polar map", "10.7": "this is the polar map"}),
+    ("a10_concentric_no_pi_over_4", "a10", {"10.4": "multiply it by pi / 4", "10.5": "not uniform on the disk",
+                                            "10.7": "multiply it by pi / 4"}),
     # Each passes every test but the contract's: the distributions and means are right.
     ("a09_own_rng", "a09", {"9.6": "gave another direction the second time"}),
     ("a09_tuned_pdf", "a09", {"9.7": "pdf must be their density (n . w_i) / pi"}),

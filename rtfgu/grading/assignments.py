@@ -431,8 +431,53 @@ A09 = Assignment(
            "solutions). There is no image to hand in."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09)
-ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09)}
+A10 = Assignment(
+    id="a10_samplers",
+    title="Samplers: multi-jittered points and the concentric map to the disk",
+    blocks=(
+        Block("sampling/multi_jittered.py", "MultiJittered.generate_samples",
+              "Append num_sets sets of n^2 = num_samples points (Suffern ch. 5, \"Multi-Jittered Sampling\"):\n"
+              "start every set in the canonical arrangement, the point of grid cell (row i, column j) in\n"
+              "subcell (i n + j) of x and (j n + i) of y (a subcell is 1 / num_samples wide), jittered inside\n"
+              "its subcell with self.rand_float(); then shuffle x among the points of each grid column and y\n"
+              "among those of each grid row, with k = self.rand_int(j, n - 1) as the book does, so that the\n"
+              "points stay one per grid cell (jittered) and one per subcell column and row (n-rooks).\n"
+              "self.grid_cells() gives the cells (row, column), set after set; draw every random number from\n"
+              "the sampler's own stream (rand_float, rand_int), so that the seed decides the points."),
+        Block("sampling/maps.py", "concentric_map",
+              "Shirley and Chiu's concentric map (Suffern ch. 6, \"Mapping Samples to a Unit Disk\"): with\n"
+              "(sx, sy) = (2x - 1, 2y - 1) in [-1, 1]^2, find the region (of four, split by the diagonals)\n"
+              "the point is in; r is the coordinate of largest magnitude and phi/(pi/4) runs from 0 to 8\n"
+              "around the square (region 1: r = sx, phi = sy/sx; region 2: r = sy, phi = 2 - sx/sy;\n"
+              "region 3: r = -sx, phi = 4 + sy/sx; region 4: r = -sy, phi = 6 - sx/sy, and 0 at the centre).\n"
+              "Return (r cos(phi pi/4), r sin(phi pi/4))."),
+    ),
+    task=("Write the sampler that most of Suffern's figures use and the map that turns its points into\n"
+          "points of the unit disk, the lens of a thin-lens camera. `MultiJittered.generate_samples` makes\n"
+          "Chiu, Shirley and Wang's points: one in every cell of the n x n grid (jittered) and one in every\n"
+          "column and every row of the n^2 x n^2 subgrid (n-rooks), shuffled so that every set differs.\n"
+          "`concentric_map(x, y)` is Shirley and Chiu's map of the unit square onto the unit disk, which\n"
+          "keeps areas (uniform points stay uniform) and keeps strata together, unlike the polar map\n"
+          "r = sqrt(x), phi = 2 pi y. The tests check the points' structure in every set and that the\n"
+          "sets are shuffled and come from the sampler's own random stream, and the map at points whose\n"
+          "images are known exactly and by the distribution of many mapped points (chi-square)."),
+    formulas=("- Multi-jittered points (Suffern ch. 5): canonical x of cell (i, j) in subcell i n + j, y in\n"
+              "  subcell j n + i; shuffle x within columns, y within rows\n"
+              "- Concentric map (Suffern ch. 6; Shirley and Chiu 1997, \"A Low Distortion Map Between Disk and\n"
+              "  Square\"): (sx, sy) = (2x - 1, 2y - 1), regions by the diagonals, r and phi as in the TODO;\n"
+              "  the map preserves area, so uniform points of the square give density 1 / pi on the disk"),
+    slides=("Suffern ch. 5: Sampling (Multi-Jittered Sampling, Shuffling the x- and y-Coordinates)",
+            "Suffern ch. 6: Mapping Samples to a Unit Disk",
+            "Suffern ch. 10: the thin-lens camera samples its lens with the concentric map"),
+    extra=("There is no image test: a correct sampler whose random numbers are drawn in another order\n"
+           "makes another, equally good, noisy image. To see your sampler at work, render Suffern's\n"
+           "depth-of-field figure small: `rtfgu.show(rtfgu.scenes.get_scene(\"suffern_depth_of_field\")(), 128, 96,\n"
+           "spp=16)` (a thin lens whose lens samples go through your concentric map). There is no image to\n"
+           "hand in."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10)}
 
 
 def register(assignment: Assignment) -> None:

@@ -69,6 +69,28 @@ def triangle(inputs: dict) -> dict:
             "swapped_edges": inside(-gamma, -beta), "open_edge": inside(beta, gamma, closed=False)}
 
 
+def concentric(inputs: dict) -> dict:
+    """What concentric_map's classic slips give at (x, y): the polar map (r = sqrt(x),
+    phi = 2 pi y: uniform on the disk too, but not Shirley and Chiu's), the map without the
+    shift to [-1, 1]^2 (sx = x, sy = y), and phi left in eighths of a turn (no pi / 4)."""
+    x, y = inputs["x"], inputs["y"]
+    polar = [math.sqrt(x) * math.cos(2 * math.pi * y), math.sqrt(x) * math.sin(2 * math.pi * y)]
+
+    def regions(sx, sy, scale):
+        if sx > -sy:
+            r, phi = (sx, sy / sx) if sx > sy else (sy, 2.0 - sx / sy)
+        elif sx < sy:
+            r, phi = -sx, 4.0 + sy / sx
+        else:
+            r, phi = -sy, (6.0 - sx / sy) if sy != 0.0 else 0.0
+        return [r * math.cos(phi * scale), r * math.sin(phi * scale)]
+
+    out = {"polar": polar, "no_pi_over_4": regions(2 * x - 1, 2 * y - 1, 1.0)}
+    if x > 0.0 and y > 0.0:
+        out["unshifted"] = regions(x, y, math.pi / 4)
+    return out
+
+
 def lambert(inputs: dict) -> dict:
     """n . w_i for every light of a lambertian case (n the unit normal, w_i toward the light)."""
     normal, position = inputs["normal"], inputs["position"]

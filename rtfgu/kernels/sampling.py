@@ -1,4 +1,4 @@
-# release: solves a09
+# release: solves a09 a10
 """The random stream, the pixel samples and the maps for the kernels, operation for
 operation as rtfgu/sampling/ (random.py, sampler.py, maps.py).
 

@@ -15,6 +15,7 @@ def concentric_map(x: float, y: float) -> tuple:
     """Shirley and Chiu's concentric map of [0, 1]^2 onto the unit disk, as Suffern's
     Sampler::map_samples_to_unit_disk: squares about the centre go to circles, so
     stratification survives and area is preserved (density 1 / pi)."""
+    ### BEGIN SOLUTION
     sx = 2.0 * x - 1.0
     sy = 2.0 * y - 1.0
     if sx > -sy:                # regions 1 and 2
@@ -36,6 +37,7 @@ def concentric_map(x: float, y: float) -> tuple:
                 phi = 0.0
     phi *= math.pi / 4.0
     return r * math.cos(phi), r * math.sin(phi)
+    ### END SOLUTION
 
 
 def hemisphere_map(x: float, y: float, e: float) -> Float3:

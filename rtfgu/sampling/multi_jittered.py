@@ -13,6 +13,7 @@ class MultiJittered(Sampler):
     needs_square = True
 
     def generate_samples(self) -> None:
+        ### BEGIN SOLUTION
         n = math.isqrt(self.num_samples)
         subcell = 1.0 / self.num_samples
         for i, j in self.grid_cells():
@@ -27,6 +28,7 @@ class MultiJittered(Sampler):
                     for j in range(n):
                         k = self.rand_int(j, n - 1)
                         self._swap(base + cell(i, j), base + cell(i, k), axis)
+        ### END SOLUTION
 
     def _swap(self, a: int, b: int, axis: int) -> None:
         pa, pb = list(self.samples[a]), list(self.samples[b])

@@ -1,3 +1,4 @@
+// release: solves a10
 // Shirley and Chiu's concentric map of [0, 1]^2 onto the unit disk, as Suffern's
 // Sampler::map_samples_to_unit_disk (rtfgu/sampling/maps.py).
 fn concentric_map(p: vec2f) -> vec2f

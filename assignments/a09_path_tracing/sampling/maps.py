@@ -15,27 +15,14 @@ def concentric_map(x: float, y: float) -> tuple:
     """Shirley and Chiu's concentric map of [0, 1]^2 onto the unit disk, as Suffern's
     Sampler::map_samples_to_unit_disk: squares about the centre go to circles, so
     stratification survives and area is preserved (density 1 / pi)."""
-    sx = 2.0 * x - 1.0
-    sy = 2.0 * y - 1.0
-    if sx > -sy:                # regions 1 and 2
-        if sx > sy:             # region 1
-            r = sx
-            phi = sy / sx
-        else:                   # region 2
-            r = sy
-            phi = 2.0 - sx / sy
-    else:                       # regions 3 and 4
-        if sx < sy:             # region 3
-            r = -sx
-            phi = 4.0 + sy / sx
-        else:                   # region 4
-            r = -sy
-            if sy != 0.0:       # the centre: no division by zero
-                phi = 6.0 - sx / sy
-            else:
-                phi = 0.0
-    phi *= math.pi / 4.0
-    return r * math.cos(phi), r * math.sin(phi)
+    # TODO a10: concentric_map
+    #   Shirley and Chiu's concentric map (Suffern ch. 6, "Mapping Samples to a Unit Disk"): with
+    #   (sx, sy) = (2x - 1, 2y - 1) in [-1, 1]^2, find the region (of four, split by the diagonals)
+    #   the point is in; r is the coordinate of largest magnitude and phi/(pi/4) runs from 0 to 8
+    #   around the square (region 1: r = sx, phi = sy/sx; region 2: r = sy, phi = 2 - sx/sy;
+    #   region 3: r = -sx, phi = 4 + sy/sx; region 4: r = -sy, phi = 6 - sx/sy, and 0 at the centre).
+    #   Return (r cos(phi pi/4), r sin(phi pi/4)).
+    raise NotImplementedError('a10: concentric_map')
 
 
 def hemisphere_map(x: float, y: float, e: float) -> Float3:
