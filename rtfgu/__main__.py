@@ -113,14 +113,17 @@ def _debug_pixel(args) -> None:
 
 def _export_html(name, out, width=None, height=None, spp=None, seed=0, formula=None) -> str:
     """Write the WebGPU page of scene ``name`` (rtfgu/browser/export.py) to ``out``; a scene
-    of the worksheet's shader menu offers the others of the menu."""
+    of a worksheet's menu (the shaders, the subdivision levels) offers the others of it."""
     from .browser import menu_page, scene_page
     from .scenes.default_scene import SHADER_MENU
+    from .scenes.sampling import SUBDIVISION_MENU
 
     scene, width, height = scene_at(name, width, height)
-    if name in SHADER_MENU:
-        menu = {other: scene_at(other, width, height)[0] for other in SHADER_MENU}
-        html = menu_page(menu, name, width, height, spp, seed, formula)
+    menus = {"shader": SHADER_MENU, "subdivision level": SUBDIVISION_MENU}
+    label = next((label for label, names in menus.items() if name in names), None)
+    if label is not None:
+        menu = {other: scene_at(other, width, height)[0] for other in menus[label]}
+        html = menu_page(menu, name, width, height, spp, seed, formula, label)
     else:
         html = scene_page(scene, width, height, spp, seed, name, formula=formula)
     with open(out, "w", encoding="utf-8") as f:

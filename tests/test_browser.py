@@ -21,6 +21,7 @@ from rtfgu.image import to_8bit, write_png
 from rtfgu.options import pixel_sampler
 from rtfgu.scenes import SCENES
 from rtfgu.scenes.default_scene import SHADER_MENU
+from rtfgu.scenes.sampling import SUBDIVISION_MENU
 from rtfgu.wgsl.assemble import read_piece
 from rtfgu.wgsl.runner import assemble_scene
 
@@ -36,6 +37,8 @@ BROKEN = "broken_lambertian"
 # The shader menu's page with its controls set by the query string.
 CONTROLS = "shader_menu"
 CONTROLLED_SCENE, ZOOM, CONTROLLED_GAMMA = "default_mirror_sphere", 1.5, 1.0
+# Worksheet 3's subdivision level: the page of level 1, set to level 4 by the query string.
+SUBDIVISION = "subdivision_menu"
 
 
 def spp_of(name):
@@ -60,9 +63,10 @@ def chromium():
 
 
 @pytest.fixture(scope="module")
-def page_results(chromium):
-    """{name: the page's result} of every homework scene at WIDTH x HEIGHT and of BROKEN,
-    from one Chromium run."""
+def page_results(chromium, tmp_path_factory):
+    """{name: the page's result} of every homework scene at WIDTH x HEIGHT, of BROKEN, of the
+    shader menu's page (CONTROLS) and of the subdivision level's (SUBDIVISION, written by
+    the command line), from one Chromium run."""
     pages = {}
     for name in SCENES:
         scene, width, height = scene_at(name, WIDTH, HEIGHT)
@@ -72,8 +76,14 @@ def page_results(chromium):
     pages[BROKEN] = scene_page(scene, width, height, name=BROKEN, overrides=overrides)
     menu = {name: scene_at(name, WIDTH, HEIGHT)[0] for name in SHADER_MENU}
     pages[CONTROLS] = menu_page(menu, SHADER_MENU[0], WIDTH, HEIGHT)
+    out = tmp_path_factory.mktemp("pages") / "subdivision.html"
+    assert main(["export-html", SUBDIVISION_MENU[0], "-o", str(out), "--width", str(WIDTH),
+                 "--height", str(HEIGHT)]) in (0, None)
+    pages[SUBDIVISION] = out.read_text()
     results = headless.render_pages(pages, timeout=TIMEOUT, queries={
-        CONTROLS: "scene=%s&zoom=%r&gamma=%r" % (CONTROLLED_SCENE, ZOOM, CONTROLLED_GAMMA)})
+        CONTROLS: "scene=%s&zoom=%r&gamma=%r" % (CONTROLLED_SCENE, ZOOM, CONTROLLED_GAMMA),
+        SUBDIVISION: "scene=%s" % SUBDIVISION_MENU[2]})
+    results["pages"] = pages
     return results
 
 
@@ -115,6 +125,22 @@ def test_the_shader_menu_zoom_and_gamma_render_what_they_say(page_results, wgpu_
     assert (np.abs(ours - to_8bit(unzoomed).astype(int)).max(axis=2) > 1).mean() > 0.1
     shown = np.abs(canvas.astype(int) - to_8bit(page, gamma=CONTROLLED_GAMMA).astype(int))
     assert shown.max() <= 1, "the canvas is not the image with gamma %r" % CONTROLLED_GAMMA
+
+
+def test_the_subdivision_level_menu_renders_the_level_chosen(page_results, wgpu_device):
+    """The page export-html writes for worksheet 3's anti-aliasing offers its subdivision levels;
+    set to level 4 (16 jittered samples per pixel) it renders what the wgpu path renders."""
+    result = page_results[SUBDIVISION]
+    assert result.get("ok"), result.get("message")
+    assert result["name"] == SUBDIVISION_MENU[2] and result["samples"] == 16
+    assert '"menu":"subdivision level"' in page_results["pages"][SUBDIVISION]
+    page, _ = headless.result_images(result)
+    scene, width, height = scene_at(SUBDIVISION_MENU[2], WIDTH, HEIGHT)
+    wgpu = renderer.render(scene, width, height, backend="wgpu")
+    level_1 = renderer.render(scene_at(SUBDIVISION_MENU[0], WIDTH, HEIGHT)[0], width, height, backend="wgpu")
+    ours = to_8bit(page).astype(int)
+    assert (np.abs(ours - to_8bit(wgpu).astype(int)).max(axis=2) <= 1).mean() >= MIN_AGREEING
+    assert (np.abs(ours - to_8bit(level_1).astype(int)).max(axis=2) > 1).mean() > 0.005
 
 
 def test_a_shader_that_does_not_compile_is_shown_by_its_file_and_line(page_results):

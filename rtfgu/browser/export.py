@@ -98,9 +98,10 @@ def _script_text(text: str) -> str:
     return text.replace("</", "<\\/")
 
 
-def page_html(scenes: list, selected: int = 0) -> str:
+def page_html(scenes: list, selected: int = 0, menu: str = "shader") -> str:
     """The page of ``scene_data`` results of one size: page.html with them, display.wgsl and
-    page.js put in; it renders ``scenes[selected]`` and offers the others in a menu."""
+    page.js put in; it renders ``scenes[selected]`` and offers the others in a menu labelled
+    ``menu``."""
     first = scenes[selected]
     for data in scenes:
         if (data["width"], data["height"]) != (first["width"], first["height"]):
@@ -108,7 +109,7 @@ def page_html(scenes: list, selected: int = 0) -> str:
                              % (data["name"], data["width"], data["height"], first["name"],
                                 first["width"], first["height"]))
     page = {"width": first["width"], "height": first["height"], "gamma": GAMMA,
-            "scenes": scenes, "selected": selected}
+            "scenes": scenes, "selected": selected, "menu": menu}
     title = first["name"] or "rtfgu scene"
     scene_json = json.dumps(page, separators=(",", ":")).replace("<", "\\u003c")
     html = _read("page.html")
@@ -129,10 +130,11 @@ def scene_page(scene, width: int, height: int, spp: int | None = None, seed: int
 
 
 def menu_page(scenes: dict, selected: str, width: int, height: int, spp: int | None = None,
-              seed: int = 0, formula: str | None = None) -> str:
-    """One page for the scenes {name: Scene} (the worksheet's shader menu,
-    rtfgu.scenes.default_scene.SHADER_MENU), showing ``selected`` first. A scene whose WGSL
-    pieces this copy leaves out (a student release) is left out of the menu."""
+              seed: int = 0, formula: str | None = None, menu: str = "shader") -> str:
+    """One page for the scenes {name: Scene}, showing ``selected`` first and the others in a
+    menu labelled ``menu``: the worksheets' shader menu (rtfgu.scenes.default_scene.SHADER_MENU)
+    or subdivision level (rtfgu.scenes.sampling.SUBDIVISION_MENU). A scene whose WGSL pieces
+    this copy leaves out (a student release) is left out of the menu."""
     if selected not in scenes:
         raise ValueError("menu_page: %r is not among %s" % (selected, ", ".join(scenes)))
     data = []
@@ -142,7 +144,7 @@ def menu_page(scenes: dict, selected: str, width: int, height: int, spp: int | N
         except PieceNotInRelease:
             if name == selected:
                 raise
-    return page_html(data, [d["name"] for d in data].index(selected))
+    return page_html(data, [d["name"] for d in data].index(selected), menu)
 
 
 def index_html(names) -> str:

@@ -354,7 +354,7 @@ async function start() {
             scene = page.scenes.find((s) => s.name === menu.value);
             rerender();
         });
-        addControl("shader", menu);
+        addControl(page.menu, menu);
     }
     if (scene.zoom) {
         const zoom = addControl("zoom (camera constant d)",

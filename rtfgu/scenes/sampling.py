@@ -41,6 +41,10 @@ for _level in (1, 2, 4, 8):
     homework(512, 512)(_scene)
 
 
+# Worksheet 3's subdivision level, offered as a menu on these scenes' web pages (rtfgu/browser).
+SUBDIVISION_MENU = tuple("default_antialiasing_%d" % level for level in (1, 2, 4, 8))
+
+
 def star(sampler) -> Scene:
     """48 alternating black and white wedges meeting near the centre, seen head on: near the
     centre they are thinner than a pixel. The star is turned by 0.1 rad and its centre moved
