@@ -60,7 +60,7 @@ montage: $(STAMP)
 # One pytest worker per core (pytest-xdist): most of a cold run is numba compiling kernels,
 # one process at a time; a test file stays on one worker, in its order.
 test: $(STAMP) $(SANDBOX_STAMP)
-	$(PY) -m pytest -n auto --dist loadfile
+	$(PY) -m pytest -n auto --dist loadfile --durations=15
 
 clean:
 	rm -rf $(VENV) renders html

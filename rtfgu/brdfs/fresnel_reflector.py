@@ -25,6 +25,7 @@ from .perfect_specular import reflect
 
 def fresnel_reflectance(cos_i: float, eta: float) -> float:
     """R for unpolarised light arriving at cos_i (> 0) with relative index eta = n1 / n2."""
+    ### BEGIN SOLUTION
     sin2_t = eta * eta * (1.0 - cos_i * cos_i)
     if sin2_t >= 1.0:
         return 1.0
@@ -32,6 +33,7 @@ def fresnel_reflectance(cos_i: float, eta: float) -> float:
     r_perp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t)
     r_par = (cos_i - eta * cos_t) / (cos_i + eta * cos_t)
     return 0.5 * (r_perp * r_perp + r_par * r_par)
+    ### END SOLUTION
 
 
 def incidence(d: Float3, n: Float3, ior: float) -> tuple:

@@ -476,8 +476,52 @@ A10 = Assignment(
            "hand in."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10)
-ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10)}
+A11 = Assignment(
+    id="a11_realistic_transparency",
+    title="Realistic transparency: Fresnel's reflectance and Bouguer's absorption",
+    blocks=(
+        Block("brdfs/fresnel_reflector.py", "fresnel_reflectance",
+              "Fresnel's reflectance for unpolarised light (Suffern ch. 28; 02562 worksheet 8), arriving at\n"
+              "cos_i > 0 with relative index eta = n1 / n2 (the side the light comes from over the other):\n"
+              "sin^2(theta_t) = eta^2 (1 - cos_i^2); at or beyond 1 the light is totally reflected, return 1.\n"
+              "Else cos_t = sqrt(1 - sin^2(theta_t)), r_perp = (eta cos_i - cos_t) / (eta cos_i + cos_t),\n"
+              "r_par = (cos_i - eta cos_t) / (cos_i + eta cos_t); return the mean of r_perp^2 and r_par^2."),
+        Block("materials/dielectric.py", "transmittance",
+              "Bouguer's (Beer-Lambert) law: the fraction exp(-sigma_a s) of the radiance that survives a\n"
+              "distance s through the medium, per channel (absorption is sigma_a, a Float3). Return a Float3."),
+        Block("materials/dielectric.py", "Dielectric.shade",
+              "Whitted's dielectric (Suffern ch. 28, Dielectric::shade): L = Phong.shade(self, sr), then the\n"
+              "mirror ray from self.fresnel_brdf.sample_f(sr, wo) (its f is R) traced by sr.scene.tracer at\n"
+              "sr.depth + 1 from sr.position (tmin SPAWN_EPSILON); under total internal reflection\n"
+              "(self.fresnel_btdf.tir(sr)) return L + L_r. Else also the refracted ray of\n"
+              "self.fresnel_btdf.sample_f(sr, wo) (its f is 1 - R): return L + R L_r + (1 - R) L_t. A ray that runs\n"
+              "inside (against the outward normal) loses light by Bouguer's law over the distance its trace\n"
+              "found (its tmax after tracing): self._through(ray, L, sr.normal) applies it."),
+    ),
+    task=("Write what makes glass look like glass (Suffern ch. 28, \"Realistic Transparency\"; 02562 worksheet\n"
+          "8): Fresnel's reflectance, the share of light a dielectric reflects at each angle (a few per cent\n"
+          "head on, all of it at grazing angles and beyond the critical angle inside), Bouguer's law of\n"
+          "absorption inside the medium, and the Dielectric material that sends both the reflected and the\n"
+          "refracted ray and weighs them by R and 1 - R. The tests check the reflectance against Fresnel's\n"
+          "equations at angles whose values are known exactly (head on, Brewster's angle, the critical\n"
+          "angle), the absorption, the rays shade sends and what it returns, and a glass sphere rendered by\n"
+          "Whitted's tracer."),
+    formulas=("- Fresnel's equations for unpolarised light (Suffern ch. 28; 02562 worksheet 8): with eta = n1 / n2,\n"
+              "  cos_t = sqrt(1 - eta^2 (1 - cos_i^2)), r_perp = (eta cos_i - cos_t) / (eta cos_i + cos_t),\n"
+              "  r_par = (cos_i - eta cos_t) / (cos_i + eta cos_t), R = (r_perp^2 + r_par^2) / 2, T = 1 - R;\n"
+              "  head on R = ((1 - eta) / (1 + eta))^2, at Brewster's angle tan(theta_i) = 1 / eta r_par = 0\n"
+              "- Bouguer's law (Suffern ch. 28; 02562 worksheet 8): T(s) = exp(-sigma_a s)\n"
+              "- Whitted's dielectric: L = R L(w_r) + (1 - R) L(w_t), each ray attenuated inside the medium"),
+    slides=("Suffern ch. 28: Realistic Transparency (FresnelReflector, FresnelTransmitter, Dielectric)",
+            "02562 worksheet 8: Fresnel reflectance, Bouguer's law"),
+    time_limit=20.0,
+    extra=("Dielectric.shade sends two rays per hit; the numba and WGSL paths render a Dielectric with the\n"
+           "path tracer only, so the image test renders with the lecture layer. The tests need assignments\n"
+           "1-5 (your own or the revealed solutions). There is no image to hand in."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10, A11)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10, A11)}
 
 
 def register(assignment: Assignment) -> None:

@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from .assignments import ASSIGNMENTS, get_assignment
-from .checks import IMAGE_LEVELS, REFERENCE_DIR, checks_for, judge_cases, stored_probe
+from .checks import IMAGE_LEVELS, REFERENCE_DIR, checks_for, judge_cases, stored_probe, traces_a_scene
 from .checks.images import DIFF_LEGEND, image_differences, judge_image, load_png, write_diff_image, write_png
 from .pixels import SUFFIX as PIXELS_SUFFIX, pixel_bounces
 from .results import Result, TestResult
@@ -211,6 +211,9 @@ def debug_pixel(assignment, test, x: int, y: int, root=".", reference_dir: Path 
     if c.kind != "image":
         raise ValueError("test %s (%s) is not an image test: `make check A=%s` shows its cases"
                          % (c.number, c.name, a.short))
+    if not traces_a_scene(c):
+        raise ValueError("test %s (%s) renders an image of its own, whose pixels debug-pixel does not trace; "
+                         "its diff image shows where it differs" % (c.number, c.name))
     module, function, kwargs = c.probe
     width, height = kwargs["width"], kwargs["height"]
     for name, value, limit in (("X", x, width), ("Y", y, height)):

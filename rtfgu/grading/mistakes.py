@@ -91,6 +91,36 @@ def concentric(inputs: dict) -> dict:
     return out
 
 
+def fresnel(inputs: dict) -> dict:
+    """Fresnel's R at (cos_i, eta) with the classic slips: the two polarisations summed, not
+    averaged; r_perp alone; eta turned over (n2 / n1); Schlick's approximation
+    R0 + (1 - R0)(1 - cos_i)^5 instead of the equations."""
+    cos_i, eta = inputs["cos_i"], inputs["eta"]
+
+    def terms(eta):
+        sin2_t = eta * eta * (1.0 - cos_i * cos_i)
+        if sin2_t >= 1.0:
+            return None
+        cos_t = math.sqrt(1.0 - sin2_t)
+        return ((eta * cos_i - cos_t) / (eta * cos_i + cos_t)) ** 2, ((cos_i - eta * cos_t) / (cos_i + eta * cos_t)) ** 2
+
+    out = {}
+    right = terms(eta)
+    if right is not None:
+        out["summed"], out["perp_only"] = right[0] + right[1], right[0]
+    turned = terms(1.0 / eta)
+    out["inverted_eta"] = 1.0 if turned is None else 0.5 * (turned[0] + turned[1])
+    r0 = ((1.0 - eta) / (1.0 + eta)) ** 2
+    out["schlick"] = r0 + (1.0 - r0) * (1.0 - cos_i) ** 5
+    return out
+
+
+def bouguer(inputs: dict) -> dict:
+    """Bouguer's law with the sign of the exponent lost, and its first-order line 1 - sigma s."""
+    a, s = inputs["absorption"], inputs["distance"]
+    return {"plus": [math.exp(c * s) for c in a], "linear": [1.0 - c * s for c in a]}
+
+
 def lambert(inputs: dict) -> dict:
     """n . w_i for every light of a lambertian case (n the unit normal, w_i toward the light)."""
     normal, position = inputs["normal"], inputs["position"]

@@ -7,10 +7,20 @@ from .checks.images import DIFF_LEGEND
 from .checks.statistics import CHI_SQUARE_ALPHA, PIXEL_FRACTION, Z_LIMIT, Z_PIXEL
 
 
-def assignment_readme(a, release: bool = False) -> str:
+def later(absent: dict, f: str) -> str:
+    """" (...)" after a student file a release leaves out until other assignments are revealed
+    (``absent``: file -> those assignments' short ids, rtfgu.grading.release), else ""."""
+    if f not in absent:
+        return ""
+    return " (not in this copy yet: it comes with the release that reveals %s)" % ", ".join(absent[f])
+
+
+def assignment_readme(a, release: bool = False, absent=None) -> str:
     """The README of assignment ``a``: for the course's tree, whose assignments/<id>/ holds the
     student files, or (``release``) for a student repository, where they are edited in place
-    in rtfgu/ and assignments/<id>/ holds only this README."""
+    in rtfgu/ and assignments/<id>/ holds only this README; ``absent``: the student files that
+    release leaves out, and the assignments that bring them (later)."""
+    absent = absent or {}
     checks = checks_for(a.id)
     visible = [c for c in checks if c.visibility == "visible"]
     hidden = [c for c in checks if c.visibility != "visible"]
@@ -19,7 +29,7 @@ def assignment_readme(a, release: bool = False) -> str:
              "## Files to edit", ""]
     for f in a.files:
         names = ", ".join("`%s`" % b.qualname for b in a.blocks if b.file == f)
-        lines.append("- `rtfgu/%s`: %s" % (f, names) if release else
+        lines.append("- `rtfgu/%s`%s: %s" % (f, later(absent, f), names) if release else
                      "- `%s` (in the package: `rtfgu/%s`): %s" % (f, f, names))
     lines += ["", "Each place to fill in raises `NotImplementedError(\"%s: ...\")` and says above it what to "
               "write. Replace the `raise` and the TODO comment with your code; change nothing else." % a.short,
@@ -39,8 +49,9 @@ def assignment_readme(a, release: bool = False) -> str:
                   % IMAGE_LEVELS,
                   "and up to %.1f%% of the pixels may differ. Every image test writes a diff image" % (100 * IMAGE_FRACTION),
                   "(%s). A failing one names a pixel of its test image" % DIFF_LEGEND,
-                  "(%s) and the `make render A=%s W=.. H=..` that renders the images at that size."
-                  % (" or ".join(sorted({"%d x %d" % c.size for c in checks if c.kind == "image"})), a.short)]
+                  "(%s)%s." % (" or ".join(sorted({"%d x %d" % c.size for c in checks if c.kind == "image"})),
+                               " and the `make render A=%s W=.. H=..` that renders the images at that size" % a.short
+                               if a.images else "")]
     if any(c.kind == "statistic" for c in checks):
         lines += ["Statistical tests judge random samples: a chi-square test of where your directions fall (it",
                   "fails a correct sampler once in %d gradings), and means of many samples against the truth or" % round(1 / CHI_SQUARE_ALPHA),
@@ -52,7 +63,7 @@ def assignment_readme(a, release: bool = False) -> str:
             lines += ["The tests that say \"drawn for each grading\" are the exception: the grader draws their inputs",
                       "(points, normals) afresh every time, and `make check` runs them on one stored draw."]
     lines += ["", "## Hand in", "", "The file%s" % ("s" if len(a.files) > 1 else ""), ""]
-    lines += ["- `%s%s`" % ("rtfgu/" if release else "", f) for f in a.files]
+    lines += ["- `%s%s`%s" % ("rtfgu/" if release else "", f, later(absent, f) if release else "") for f in a.files]
     if a.images:
         lines += ["", "and these images, rendered with `make render A=%s` (PNG, the size the scene registers):" % a.short, ""]
         lines += ["- `%s.png`" % name for name in a.images]
@@ -69,9 +80,10 @@ def assignment_readme(a, release: bool = False) -> str:
     return "\n".join(lines)
 
 
-def index_readme(release: bool = False) -> str:
+def index_readme(release: bool = False, absent=None) -> str:
     """The index of the assignments (``release``: as a student repository has them, see
-    assignment_readme)."""
+    assignment_readme; ``absent`` as there)."""
+    absent = absent or {}
     if release:
         lines = ["# Assignments", "",
                  "Each folder holds an assignment's README. You edit its files where they are, in `rtfgu/`",
@@ -79,8 +91,8 @@ def index_readme(release: bool = False) -> str:
                  "`make render A=a03` renders the assignment's images with them.", "",
                  "| id | title | files |", "|---|---|---|"]
         for a in ASSIGNMENTS.values():
-            lines.append("| [%s](%s/README.md) | %s | %s |" % (a.id, a.id, a.title,
-                                                              ", ".join("`rtfgu/%s`" % f for f in a.files)))
+            lines.append("| [%s](%s/README.md) | %s | %s |" % (a.id, a.id, a.title, ", ".join(
+                "`rtfgu/%s`%s" % (f, later(absent, f)) for f in a.files)))
         return "\n".join(lines + [""])
     lines = ["# Assignments", "",
              "Generated by `make assignments` from the solutions marked `### BEGIN SOLUTION` /",

@@ -63,13 +63,11 @@ def _owners(relpath: str) -> list:
 def how_to_run(assignments) -> str:
     """What a student runs instead of a file of ``assignments``: their tests, and their
     images when they have any."""
-    from .checks import checks_for
-
     def command(target, shorts):
         return "`make %s A=%s`" % (target, shorts[0]) + "".join(" (or A=%s)" % s for s in shorts[1:])
 
     text = "test it with " + command("check", [a.short for a in assignments])
-    rendered = [a.short for a in assignments if any(c.kind == "image" for c in checks_for(a.id))]
+    rendered = [a.short for a in assignments if a.images]
     if rendered:
         text += ", render it with " + command("render", rendered)
     return text
@@ -167,7 +165,7 @@ def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:
     tests only: their checks and hints (rtfgu/grading/checks without the HIDDEN regions),
     their probes (no ``*_hidden.py``), their reference observations, known mistakes and
     images; rtfgu.grading.local runs them."""
-    from .checks import checks_for
+    from .checks import checks_for, traces_a_scene
 
     grading = Path(package_dir) / "grading"
     files = {
@@ -194,7 +192,8 @@ def checker_files(package_dir: Path = PACKAGE_DIR) -> dict:
             png = folder / (c.slug + ".png")
             if c.kind == "image" and png.is_file():
                 files["reference/%s/%s" % (a.id, png.name)] = png.read_bytes()
-                files["reference/%s/%s%s" % (a.id, c.slug, PIXELS_SUFFIX)] = expected_pixels(c)
+                if traces_a_scene(c):
+                    files["reference/%s/%s%s" % (a.id, c.slug, PIXELS_SUFFIX)] = expected_pixels(c)
     return files
 
 
@@ -426,6 +425,11 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
         target.parent.mkdir(parents=True, exist_ok=True)
         target.write_bytes(data)
         written.append(target)
+    # A student file that computes an unrevealed assignment's function again (it carries a
+    # marker) is left out with the rest: its README says which reveal brings it.
+    revealed = revealed_numbers(reveal)
+    absent = {f: sorted("a%02d" % n for n in solves((Path(package_dir) / f).read_text()) - revealed)
+              for a in ASSIGNMENTS.values() for f in a.files if not (package / f).is_file()}
     requires, package_data = _staff_requirements(package_dir)
     if not (package / "kernels").is_dir():
         requires = [r for r in requires if not r.startswith("numba")]
@@ -436,12 +440,12 @@ def write_release(out, reveal=(), package_dir: Path = PACKAGE_DIR) -> list:
                                       "package_data": package_data},
         "pyproject.toml": (Path(package_dir).parent / "pyproject.toml").read_text(),
         "tests/test_visible.py": STUDENT_TEST,
-        "assignments/README.md": index_readme(release=True),
+        "assignments/README.md": index_readme(release=True, absent=absent),
         ".gitignore": ".venv/\nrenders/\ncheck-results/\nhtml/\n__pycache__/\n*.pyc\n*.egg-info/\n",
         "notebooks/first_render.ipynb": _notebook_without_outputs(Path(package_dir).parent / "notebooks"
                                                                   / "first_render.ipynb"),
     }
     for a in ASSIGNMENTS.values():
-        extra["assignments/%s/README.md" % a.id] = assignment_readme(a, release=True)
+        extra["assignments/%s/README.md" % a.id] = assignment_readme(a, release=True, absent=absent)
     written += write_files(extra, out)
     return written

@@ -1,4 +1,4 @@
-# release: solves a04 a05 a09
+# release: solves a04 a05 a09 a11
 """PathTrace on the numba path: rtfgu.tracers.PathTrace.trace_ray, operation for operation, over the
 flat layout (the same random numbers, so the same paths as the lecture layer).
 

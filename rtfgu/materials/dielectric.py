@@ -35,8 +35,10 @@ from .phong import Phong
 
 def transmittance(absorption: Float3, distance: float) -> Float3:
     """Bouguer's law: exp(-sigma_a s) per channel."""
+    ### BEGIN SOLUTION
     return Float3(math.exp(-absorption.x * distance), math.exp(-absorption.y * distance),
                   math.exp(-absorption.z * distance))
+    ### END SOLUTION
 
 
 class Dielectric(Phong):
@@ -78,8 +80,9 @@ class Dielectric(Phong):
         return L
 
     def shade(self, sr) -> Float3:
+        ### BEGIN SOLUTION
         wo = -sr.ray.direction
-        L = Phong.shade(self, sr)
+        L = super().shade(sr)           # the Phong part (none by default)
         tracer = sr.scene.tracer
         fr, wi, _ = self.fresnel_brdf.sample_f(sr, wo)
         reflected = Ray(sr.position, wi, SPAWN_EPSILON)
@@ -90,6 +93,7 @@ class Dielectric(Phong):
         transmitted = Ray(sr.position, wt, SPAWN_EPSILON)
         L_t = self._through(transmitted, tracer.trace_ray(transmitted, sr.depth + 1), sr.normal)
         return L + fr * L_r + ft * L_t
+        ### END SOLUTION
 
     def path_shade(self, sr) -> PathVertex:
         d, n = sr.ray.direction, sr.normal

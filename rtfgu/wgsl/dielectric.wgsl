@@ -1,4 +1,4 @@
-// release: solves a05
+// release: solves a05 a11
 // A dielectric in the ray-cast loop (rtfgu.materials.Dielectric): it refracts as transparent does;
 // the path tracer's Fresnel choice is in path_trace.wgsl.
 fn dielectric(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> vec3f

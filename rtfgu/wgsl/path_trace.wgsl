@@ -1,4 +1,4 @@
-// release: solves a04 a05 a09
+// release: solves a04 a05 a09 a11
 // PathTrace (rtfgu/tracers/path_trace.py; Suffern ch. 26, 02562 worksheet 7): one path per sample,
 // next-event estimation at every diffuse vertex (an area light through a point of it drawn
 // from the random stream), a cosine-weighted bounce with Russian roulette, emission counted

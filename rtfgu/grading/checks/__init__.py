@@ -102,7 +102,7 @@ def checks_for(assignment_id: str):
 
 
 def _load():
-    from . import a01, a02, a03, a04, a05, a07, a08, a09, a10  # noqa: F401  (each registers its checks)
+    from . import a01, a02, a03, a04, a05, a07, a08, a09, a10, a11  # noqa: F401  (each registers its checks)
     try:
         from . import a06  # noqa: F401
     except ImportError:
@@ -223,6 +223,13 @@ def image_check(name: str, weight: float, scene: str, size=(48, 48), visibility:
         kwargs["shadows"] = bool(shadows)
     return Check(name, weight, ("images", "render_scene", kwargs), visibility=visibility, kind="image",
                  size=size, **options)
+
+
+def traces_a_scene(check: Check) -> bool:
+    """Whether ``check`` is an image test of a scene rendered by images.render_scene (made by
+    image_check), whose pixels ``make debug-pixel`` can trace; an image test with a probe of
+    its own (a11's glass sphere) is not."""
+    return check.kind == "image" and tuple(check.probe[:2]) == ("images", "render_scene")
 
 
 def drawn_inputs(check: Check, rng) -> tuple:

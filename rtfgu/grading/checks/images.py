@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from ..assignments import get_assignment
-from . import IMAGE_FRACTION, IMAGE_LEVELS, fmt
+from . import IMAGE_FRACTION, IMAGE_LEVELS, fmt, traces_a_scene
 
 GAMMA = 2.2   # rtfgu.image.GAMMA: references are stored as the renderer writes its images
 
@@ -110,11 +110,12 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
     short = get_assignment(check.assignment).short
     kinds = "%d unlike every reference pixel near them, %d more are details of the reference missing from yours" % (
         int((wrong > IMAGE_LEVELS).sum()), int(((missing > IMAGE_LEVELS) & (wrong <= IMAGE_LEVELS)).sum()))
+    render = (" (`make render A=%s W=%d H=%d` renders the assignment's images at that size)" % (short, w, h)
+              if traces_a_scene(check) else "")
     lines = ["%d of %d pixels (%.1f%%) differ from the reference by more than %d of 255 levels, even "
              "allowing a one-pixel shift (at most %d may): %s. The largest difference is at column %d, "
-             "row %d (row 0 at the top) of the %dx%d test image (`make render A=%s W=%d H=%d` renders "
-             "the assignment's images at that size): the reference pixel is %s, yours is %s%s"
-             % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, kinds, col, row, w, h, short, w, h,
+             "row %d (row 0 at the top) of the %dx%d test image%s: the reference pixel is %s, yours is %s%s"
+             % (n_bad, h * w, 100.0 * n_bad / (h * w), IMAGE_LEVELS, allowed, kinds, col, row, w, h, render,
                 fmt([int(v) for v in reference[row, col]]), fmt([int(v) for v in mine[row, col]]), where)]
     return 0.0, lines + debug_hint(check, col, row), diff_path
 
@@ -122,7 +123,7 @@ def judge_image(check, data, reference: np.ndarray, diff_path: Path | None):
 def debug_hint(check, x: int, y: int) -> list:
     """The command that traces pixel (x, y) of a visible image test through the student's code
     beside the expected values (rtfgu.grading.local.debug_pixel); none for a hidden test."""
-    if check.visibility != "visible":
+    if check.visibility != "visible" or not traces_a_scene(check):
         return []
     return ["`make debug-pixel A=%s T=%s X=%d Y=%d` traces that pixel through your code beside what the "
             "solution computes there (the shape hit, t, the normal, the colour)"
