@@ -32,6 +32,7 @@ from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSS
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
+from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
 from .textures import Checker, ImageTexture
@@ -127,6 +128,7 @@ SHAPES = (
     ShapeKind("sphere", Sphere, (("center", 3), ("radius", 1)), formulas=("slide", "robust"),
               from_eye=True),
     ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
+    ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3))),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
 )
@@ -155,9 +157,9 @@ SHADERS = (
 LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
     LightKind("directional", Directional, (("direction", 3), ("intensity", 3))),
-    # rtfgu/lights/area_light.py: one emitting triangle or sphere.
-    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3),
-                                        ("light_sampler", 3)), area=True),
+    # rtfgu/lights/area_light.py: one emitting triangle, rectangle or sphere.
+    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("rectangle", 1), ("e1", 3),
+                                        ("emission", 3), ("light_sampler", 3)), area=True),
     # rtfgu/lights/ambient_occluder.py: ambient light seen through the unoccluded directions.
     LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3), ("light_sampler", 3)), area=True),
 )

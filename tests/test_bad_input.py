@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 import rtfgu
-from rtfgu import (Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
-                   Scene, Sphere, Triangle)
+from rtfgu import (AreaLight, Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
+                   Rectangle, Scene, Sphere, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
 
@@ -91,6 +91,24 @@ def test_plane_zero_or_non_finite_normal():
         Plane(Float3(0, 0, 0), Float3(0, NAN, 1), RED)
     with raises_naming("point"):
         Plane(Float3(INF, 0, 0), Float3(0, 1, 0), RED)
+
+
+@pytest.mark.parametrize("p0, a, b, names", [
+    ((0, 0, 0), (0, 0, 0), (0, 1, 0), ("Rectangle.a",)),                   # zero-length edge
+    ((0, 0, 0), (1, 0, 0), (0, 0, 0), ("Rectangle.b",)),
+    ((0, 0, 0), (1, 0, 0), (2, 0, 0), ("Rectangle.a", "Rectangle.b", "perpendicular")),  # parallel
+    ((0, 0, 0), (1, 0, 0), (1, 1, 0), ("Rectangle.a", "Rectangle.b", "perpendicular")),  # skew
+    ((0, NAN, 0), (1, 0, 0), (0, 1, 0), ("Rectangle.p0",)),
+    ((0, 0, 0), (1, INF, 0), (0, 1, 0), ("Rectangle.a",)),
+], ids=["a_zero", "b_zero", "parallel", "not_perpendicular", "p0_nan", "a_inf"])
+def test_rectangle_edges(p0, a, b, names):
+    with raises_naming(*names):
+        Rectangle(Float3(*p0), Float3(*a), Float3(*b), RED)
+
+
+def test_area_light_names_the_shapes_it_takes():
+    with raises_naming("AreaLight.shape", "Rectangle"):
+        AreaLight(Plane(Float3(0, 0, 0), Float3(0, 1, 0), RED))
 
 
 def test_shape_colour_non_finite():

@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from rtfgu import (Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OrthographicCamera, Phong,
-                   Plane, Ray, Reflective, Scene, Sphere, Transparent, Triangle, trace)
+                   Plane, Ray, Rectangle, Reflective, Scene, Sphere, Transparent, Triangle, trace)
 from rtfgu.lights import PointLight
 from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
 from rtfgu.ray import SPAWN_EPSILON
@@ -98,6 +98,22 @@ def exact_disk(shape, case):
     to_hit = sub(tuple(o + hit[0] * d for o, d in zip(F(case.origin), F(case.direction))),
                  F(shape.center))
     return hit if dot(to_hit, to_hit) <= Fraction(shape.radius) ** 2 else None
+
+
+def exact_rectangle(shape, case):
+    """Suffern's Rectangle::hit in fractions: the plane through p0 with normal a x b, then
+    0 <= d . a <= |a|^2 and 0 <= d . b <= |b|^2 (the edges belong to it)."""
+    o, d, p0, a, b = F(case.origin), F(case.direction), F(shape.p0), F(shape.a), F(shape.b)
+    n = cross(a, b)
+    if dot(d, n) == 0:
+        return None
+    t = dot(sub(p0, o), n) / dot(d, n)
+    if not in_range(t, case):
+        return None
+    to_hit = sub(tuple(oc + t * dc for oc, dc in zip(o, d)), p0)
+    if 0 <= dot(to_hit, a) <= dot(a, a) and 0 <= dot(to_hit, b) <= dot(b, b):
+        return t, unit(n)
+    return None
 
 
 def exact_triangle(shape, case):
@@ -199,6 +215,21 @@ SHAPE_CASES = {
          Case("hit at tmax", (0.5, 0.0, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
         exact_disk,
         lambda m: Disk((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 1.0, GREY, m)),
+    "rectangle": KindCases(
+        lambda m: Rectangle((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m),
+        (Case("hit", (0.5, 0.5, 2.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 2.0), (0.5, 0.25, -1.0)),
+         Case("hit from behind", (1.5, 0.25, -1.0), (0.0, 0.0, 1.0)),
+         Case("hit on the edge d . a = |a|^2", (2.0, 0.5, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the edge d . b = 0", (1.0, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the corner p0 + a + b", (2.0, 1.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("miss beyond the edge", (2.25, 0.5, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beside the edge d . b = 0", (1.0, -0.25, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the rectangle", (0.5, 0.5, 1.0), (1.0, 0.0, 0.0), hits=False),
+         Case("grazing ray in its plane", (-1.0, 0.5, 0.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.5, 0.5, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_rectangle,
+        lambda m: Rectangle((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m)),
     "mesh": KindCases(
         lambda m: mesh_face((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), m),
         (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),

@@ -1,6 +1,7 @@
 """Hard cases: every family on every available path against its exact truth, and the claims
 the robust formulas make (watertight edges, parallel planes, spawned rays, far, small and
-tangent spheres in float32); disks through the rim and nearly parallel to them."""
+tangent spheres in float32); disks through the rim and nearly parallel to them; rectangles
+through their edges and corners."""
 from __future__ import annotations
 
 import math
@@ -11,6 +12,7 @@ import pytest
 from rtfgu import robust
 from rtfgu.float3 import Float3
 from rtfgu.hardcases import FAMILIES, NumbaPath, ReferencePath, build, evaluate, exact, runs
+from rtfgu.hardcases.kinds import KINDS
 from rtfgu.hardcases.wgsl_path import WgslPath, wgsl_unavailable_reason
 from rtfgu.ray import Ray
 
@@ -109,7 +111,7 @@ def test_families_are_seeded_and_precision_specific():
 def test_family_runs_on_every_path(results, name):
     family64 = build(name, "float64")
     ran = [pid for pid in PATH_IDS[:len(_paths())] if (name, pid) in results]
-    assert len(ran) == len(_paths()) or family64.kind == "disk", (name, ran)
+    assert len(ran) == len(_paths()) or KINDS[family64.kind].robust is None, (name, ran)
     for pid in ran:
         r = results[name, pid]
         if pid.startswith("reference") and (family64.invalid or (name == "tri_zero_area" and pid.endswith("slide"))):
@@ -211,6 +213,24 @@ def test_disk_rim_belongs_to_the_disk_and_float32_misses_it(results):
     for name in ("disk_rim", "disk_nearly_parallel", "disk_grazing_edge"):
         assert results[name, "reference-slide"].wrong == 0
         assert results[name, "numba32-slide"].wrong > 0, name
+
+
+# --- rectangles -----------------------------------------------------------------------
+
+def test_rectangle_edges_belong_to_it_and_the_exact_truth_sees_one_ulp(results):
+    square = ((0, 0, 0), (2, 0, 0), (0, 1, 0))
+    assert exact.rectangle((2, 1, 3), (0, 0, -1), 0.0, math.inf, *square) == (3.0, 0.0)   # a corner
+    assert exact.rectangle((0, 0.5, 3), (0, 0, -1), 0.0, math.inf, *square) == (3.0, 0.0)  # the edge at p0
+    outside = math.nextafter(2.0, 3.0)
+    assert exact.rectangle((outside, 0.5, 3), (0, 0, -1), 0.0, math.inf, *square) == exact.MISS
+    assert exact.rectangle((1, 0.5, 0), (1, 0, 0), 0.0, math.inf, *square) == exact.MISS   # in its plane
+    for name in ("rectangle_edge", "rectangle_nearly_parallel"):
+        assert results[name, "reference-slide"].wrong == 0, name
+        assert results[name, "numba64-slide"].wrong == 0, name
+        assert results[name, "numba64-slide"].rays > 0 and results[name, "reference-slide"].rays > 0
+    edge = build("rectangle_edge", "float64")
+    # the exact edge and corner rows all hit; the family has rays that miss by 1e-8 too
+    assert edge.truth_hit[::2].all() and not edge.truth_hit.all()
 
 
 # --- numba generic over float32 -------------------------------------------------------

@@ -175,3 +175,25 @@ def disk(o, d, tmin, tmax, center, normal, radius):
     to_hit = sub(p, q3(center))
     r = Q(float(radius))
     return t if dot(to_hit, to_hit) <= r * r else MISS
+
+
+# --- rectangle ------------------------------------------------------------------------
+
+def rectangle(o, d, tmin, tmax, p0, a, b):
+    """Suffern's Rectangle::hit in rationals: the plane through p0 with normal a x b, then
+    0 <= (p - p0) . a <= |a|^2 and 0 <= (p - p0) . b <= |b|^2 at p = o + t d; the edges
+    belong to the rectangle (Suffern ch. 19; rtfgu.shapes.rectangle)."""
+    if not (finite(*o, *d, *p0, *a, *b, tmin) and not math.isnan(tmax)):
+        return MISS
+    aq, bq = q3(a), q3(b)
+    n = cross(aq, bq)
+    den = dot(q3(d), n)
+    if den == 0:
+        return MISS
+    t = dot(sub(q3(p0), q3(o)), n) / den
+    if not _in_range_rational(t, tmin, tmax):
+        return MISS
+    to_hit = sub(tuple(oi + t * di for oi, di in zip(q3(o), q3(d))), q3(p0))
+    if 0 <= dot(to_hit, aq) <= dot(aq, aq) and 0 <= dot(to_hit, bq) <= dot(bq, bq):
+        return dd_from_fraction(t)
+    return MISS

@@ -407,6 +407,51 @@ def _disk_grazing_edge(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, nrm, r])])
 
 
+# --- rectangles (Suffern ch. 19) ------------------------------------------------------
+
+def _axis_rectangles(rng, n):
+    """Axis-aligned rectangles with dyadic corners and edges (exact in either precision):
+    p0, a along axis + 1, b along axis + 2, normal along ``axis``."""
+    rows = np.arange(n)
+    axis = rng.integers(0, 3, n)
+    p0 = rng.integers(-8, 9, (n, 3)) * 0.5
+    a = np.zeros((n, 3))
+    b = np.zeros((n, 3))
+    a[rows, (axis + 1) % 3] = rng.integers(1, 9, n) * 0.25 * rng.choice([-1.0, 1.0], n)
+    b[rows, (axis + 2) % 3] = rng.integers(1, 9, n) * 0.25 * rng.choice([-1.0, 1.0], n)
+    return rows, axis, p0, a, b
+
+
+@family("rectangle_edge", "rectangle", "rectangle",
+        "rays through an edge or a corner: exactly (even rows) or 1e-8..1e-5 of an edge off it")
+def _rectangle_edge(rng, n):
+    rows, axis, p0, a, b = _axis_rectangles(rng, n)
+    # a point of an edge or a corner: s, t in {0, 1} for one of them at least
+    s = rng.choice([0.0, 0.25, 0.5, 1.0], n)
+    t = np.where(np.isin(s, (0.0, 1.0)), rng.choice([0.0, 0.5, 1.0], n), rng.choice([0.0, 1.0], n))
+    odd = rows % 2 == 1
+    nudge = np.where(odd, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -5, n), 0.0)
+    target = p0 + a * (s + nudge)[:, None] + b * (t + nudge)[:, None]
+    o = target + rng.integers(-6, 7, (n, 3))
+    o[rows, axis] = target[rows, axis] + rng.choice([-1.0, 1.0], n) * rng.integers(1, 7, n)
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([p0, a, b])])
+
+
+@family("rectangle_nearly_parallel", "rectangle", "rectangle",
+        "angle to the rectangle's plane 1e-8..1e-1, aimed within -0.3..1.3 of its edges")
+def _rectangle_nearly_parallel(rng, n):
+    p0 = rng.uniform(-2, 2, (n, 3))
+    nrm = _random_unit(rng, n)
+    ua = _perpendicular(rng, nrm)
+    ub = np.cross(nrm, ua)
+    a = ua * rng.uniform(0.5, 2.0, n)[:, None]
+    b = ub * rng.uniform(0.5, 2.0, n)[:, None]
+    target = p0 + a * rng.uniform(-0.3, 1.3, n)[:, None] + b * rng.uniform(-0.3, 1.3, n)[:, None]
+    d = _nearly_in_plane(rng, nrm, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -1, n))
+    o = target - d * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([p0, a, b])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
 @family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")

@@ -1,6 +1,6 @@
 # release: solves a03
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
-"Ray-triangle intersection", Suffern ch. 19 "Disks"), operation for operation as in
+"Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles"), operation for operation as in
 rtfgu/shapes/.
 
 For every shape kind of rtfgu.registry: ``intersect_<kind>(origin, direction, tmin, tmax,
@@ -162,6 +162,27 @@ def intersect_disk(origin, direction, tmin, tmax, center, normal, radius):
 
 
 @njit(cache=True, error_model="numpy")
+def intersect_rectangle(origin, direction, tmin, tmax, p0, a, b, normal):
+    # Suffern's Rectangle::hit: the plane through p0, then 0 <= d . a <= |a|^2 and
+    # 0 <= d . b <= |b|^2 for d = o + t w - p0.
+    denom = dot(direction, normal)
+    if denom == lit(0, denom):
+        return lit(math.inf, denom)
+    t = dot(sub(p0, origin), normal) / denom
+    if not (t >= tmin and t <= tmax):
+        return lit(math.inf, denom)
+    d = sub(add(origin, scale(direction, t)), p0)
+    zero = lit(0, denom)
+    ddota = dot(d, a)
+    if ddota < zero or ddota > dot(a, a):
+        return lit(math.inf, denom)
+    ddotb = dot(d, b)
+    if ddotb < zero or ddotb > dot(b, b):
+        return lit(math.inf, denom)
+    return t
+
+
+@njit(cache=True, error_model="numpy")
 def normal_plane(position, point, normal):
     return normalize(normal)
 
@@ -179,3 +200,8 @@ def normal_sphere(position, center, radius):
 @njit(cache=True, error_model="numpy")
 def normal_disk(position, center, normal, radius):
     return normalize(normal)
+
+
+@njit(cache=True, error_model="numpy")
+def normal_rectangle(position, p0, a, b, normal):
+    return normal

@@ -50,6 +50,13 @@ def texcoord_disk(position, center, normal, radius):
 
 
 @njit(cache=True, error_model="numpy")
+def texcoord_rectangle(position, p0, a, b, normal):
+    """Rectangle.texcoord: the projections onto a and b over |a|^2 and |b|^2."""
+    d = sub(position, p0)
+    return dot(d, a) / dot(a, a), dot(d, b) / dot(b, b)
+
+
+@njit(cache=True, error_model="numpy")
 def texcoord_sphere(position, center, radius):
     """Sphere.texcoord: Suffern's SphericalMap."""
     one = lit(1.0, radius)

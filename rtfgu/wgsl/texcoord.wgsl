@@ -1,6 +1,7 @@
 // Texture coordinates (u, v) of a point on each shape kind, as Shape.texcoord in the
-// lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap and
-// the triangle's barycentrics. shape_texcoord picks the function of the kind hit.
+// lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap, the
+// triangle's barycentrics and the rectangle's edge projections. shape_texcoord picks the
+// function of the kind hit.
 // #if plane|disk
 fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
 {
@@ -19,6 +20,13 @@ fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
 fn texcoord_disk(p: vec3f, center: vec3f, normal: vec3f, radius: f32) -> vec2f
 {
     return texcoord_plane(p, center, normal);
+}
+// #endif
+// #if rectangle
+fn texcoord_rectangle(p: vec3f, p0: vec3f, a: vec3f, b: vec3f, normal: vec3f) -> vec2f
+{
+    let d = p - p0;
+    return vec2f(dot(d, a) / dot(a, a), dot(d, b) / dot(b, b));
 }
 // #endif
 // #if sphere
