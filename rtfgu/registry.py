@@ -29,6 +29,7 @@ from dataclasses import dataclass
 from .lights import AmbientOccluder, AreaLight, Directional, PointLight
 from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR,
                                  PHONG, REFLECTIVE, TRANSPARENT)
+from .shapes.box import Box
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.plane import Plane
@@ -129,6 +130,7 @@ SHAPES = (
               from_eye=True),
     ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
     ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3))),
+    ShapeKind("box", Box, (("p0", 3), ("p1", 3))),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
 )

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import rtfgu
-from rtfgu import (AreaLight, Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
+from rtfgu import (AreaLight, Box, Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
                    Rectangle, Scene, Sphere, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
@@ -104,6 +104,17 @@ def test_plane_zero_or_non_finite_normal():
 def test_rectangle_edges(p0, a, b, names):
     with raises_naming(*names):
         Rectangle(Float3(*p0), Float3(*a), Float3(*b), RED)
+
+
+@pytest.mark.parametrize("p0, p1, names", [
+    ((0, 0, 0), (1, 1, 0), ("Box.p0", "Box.p1", "axis z")),      # flat
+    ((0, 2, 0), (1, 1, 1), ("Box.p0", "Box.p1", "axis y")),      # corners swapped in y
+    ((0, 0, NAN), (1, 1, 1), ("Box.p0",)),
+    ((0, 0, 0), (INF, 1, 1), ("Box.p1",)),
+], ids=["flat", "swapped", "p0_nan", "p1_inf"])
+def test_box_corners(p0, p1, names):
+    with raises_naming(*names):
+        Box(Float3(*p0), Float3(*p1), RED)
 
 
 def test_area_light_names_the_shapes_it_takes():

@@ -18,8 +18,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from rtfgu import (Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OrthographicCamera, Phong,
+from rtfgu import (Box, Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OrthographicCamera, Phong,
                    Plane, Ray, Rectangle, Reflective, Scene, Sphere, Transparent, Triangle, trace)
+from rtfgu.hardcases.exact import box_t
 from rtfgu.lights import PointLight
 from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
 from rtfgu.ray import SPAWN_EPSILON
@@ -114,6 +115,20 @@ def exact_rectangle(shape, case):
     if 0 <= dot(to_hit, a) <= dot(a, a) and 0 <= dot(to_hit, b) <= dot(b, b):
         return t, unit(n)
     return None
+
+
+def exact_box(shape, case):
+    """Suffern's slab test in fractions (an axis the ray does not move along bounds nothing
+    within its slab); the normal is the outward one of the face nearest to the hit, the
+    first of -x, -y, -z, +x, +y, +z (rtfgu.shapes.box)."""
+    o, d, p0, p1 = F(case.origin), F(case.direction), F(shape.p0), F(shape.p1)
+    t = box_t(o, d, p0, p1, Fraction(case.tmin))
+    if t is None or not in_range(t, case):
+        return None
+    p = tuple(oc + t * dc for oc, dc in zip(o, d))
+    distances = [abs(p[k] - p0[k]) for k in range(3)] + [abs(p[k] - p1[k]) for k in range(3)]
+    face = distances.index(min(distances))
+    return t, tuple(Fraction(-1 if face < 3 else 1) if k == face % 3 else Fraction(0) for k in range(3))
 
 
 def exact_triangle(shape, case):
@@ -230,6 +245,20 @@ SHAPE_CASES = {
          Case("hit at tmax", (0.5, 0.5, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
         exact_rectangle,
         lambda m: Rectangle((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m)),
+    "box": KindCases(
+        lambda m: Box((0.0, 0.0, 0.0), (2.0, 1.0, 1.0), GREY, m),
+        (Case("hit", (0.5, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 3.0), (0.5, 0.25, -1.0)),
+         Case("hit on the face -y", (1.5, -2.0, 0.25), (0.0, 1.0, 0.0)),
+         Case("hit from inside (the leaving face)", (1.0, 0.5, 0.5), (1.0, 0.0, 0.0)),
+         Case("hit on the edge of +x and +z", (2.0, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("grazing ray touching an edge only (t0 = t1)", (3.0, 0.5, 0.0), (-1.0, 0.0, 1.0), hits=False),
+         Case("miss beside the box", (2.25, 0.5, 3.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to a face, outside its slab", (0.5, 0.5, 2.0), (1.0, 0.0, 0.0), hits=False),
+         Case("miss behind the ray", (0.5, 0.5, -3.0), (0.0, 0.0, -1.0), hits=False),
+         Case("hit at tmax", (0.5, 0.5, 3.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_box,
+        lambda m: Box((-1.0, -1.0, -2.0), (1.0, 1.0, 0.0), GREY, m)),
     "mesh": KindCases(
         lambda m: mesh_face((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), m),
         (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),

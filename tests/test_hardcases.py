@@ -233,6 +233,28 @@ def test_rectangle_edges_belong_to_it_and_the_exact_truth_sees_one_ulp(results):
     assert edge.truth_hit[::2].all() and not edge.truth_hit.all()
 
 
+# --- boxes ----------------------------------------------------------------------------
+
+def test_box_edges_and_parallel_rays_against_the_exact_truth(results):
+    box = ((0, 0, 0), (2, 1, 1))
+    assert exact.box((2, 0.5, 3), (0, 0, -1), 0.0, math.inf, *box) == (2.0, 0.0)          # along the face x = 2
+    assert exact.box((3, 0.5, 0), (-1, 0, 1), 0.0, math.inf, *box) == exact.MISS           # touches an edge only
+    assert exact.box((1, 0.5, 0.5), (1, 0, 0), 0.0, math.inf, *box) == (1.0, 0.0)          # from inside
+    outside = math.nextafter(2.0, 3.0)
+    assert exact.box((outside, 0.5, 3), (0, 0, -1), 0.0, math.inf, *box) == exact.MISS
+    for name in ("box_edge", "box_parallel"):
+        family = build(name, "float64")
+        reference = results[name, "reference-slide"]
+        # float64 numba is the lecture layer operation for operation: the same t, to the bit
+        assert np.array_equal(results[name, "numba64-slide"].t, reference.t), name
+        # in float64 only the rays exactly through an edge or a corner (even rows, where
+        # the slab test compares t0 < t1 of rounded quotients) can be decided wrongly
+        wrong = np.isfinite(reference.t) != family.truth_hit
+        assert not wrong[1::2].any(), (name, np.flatnonzero(wrong))
+    parallel = build("box_parallel", "float64")
+    assert parallel.truth_hit[::2].any() and not parallel.truth_hit[::2].all()
+
+
 # --- numba generic over float32 -------------------------------------------------------
 
 def test_numba_float32_kernels_stay_float32():

@@ -197,3 +197,32 @@ def rectangle(o, d, tmin, tmax, p0, a, b):
     if 0 <= dot(to_hit, aq) <= dot(aq, aq) and 0 <= dot(to_hit, bq) <= dot(bq, bq):
         return dd_from_fraction(t)
     return MISS
+
+
+# --- box ------------------------------------------------------------------------------
+
+def box_t(o, d, p0, p1, tmin):
+    """The slab test on rationals (3-tuples of Fractions; ``tmin`` a Fraction): t0 if
+    t0 >= tmin, else t1, where t0 < t1; None when the ray misses the box."""
+    t0 = t1 = None
+    for axis in range(3):
+        if d[axis] == 0:
+            if not p0[axis] <= o[axis] <= p1[axis]:
+                return None
+            continue
+        near, far = sorted(((p0[axis] - o[axis]) / d[axis], (p1[axis] - o[axis]) / d[axis]))
+        t0 = near if t0 is None else max(t0, near)
+        t1 = far if t1 is None else min(t1, far)
+    if t0 is None or not t0 < t1:
+        return None
+    return t0 if t0 >= tmin else t1
+
+
+def box(o, d, tmin, tmax, p0, p1):
+    """Suffern's slab test in rationals: the largest entering t0 and the smallest leaving t1,
+    a hit when t0 < t1, at t0 or (from inside) at t1; an axis the ray does not move along
+    bounds nothing when o is within its slab, and misses otherwise (rtfgu.shapes.box)."""
+    if not (finite(*o, *d, *p0, *p1, tmin) and not math.isnan(tmax)):
+        return MISS
+    t = box_t(q3(o), q3(d), q3(p0), q3(p1), Q(float(tmin)))
+    return dd_from_fraction(t) if t is not None and _in_range_rational(t, tmin, tmax) else MISS

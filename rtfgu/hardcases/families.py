@@ -452,6 +452,49 @@ def _rectangle_nearly_parallel(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([p0, a, b])])
 
 
+# --- boxes (Suffern ch. 19) -----------------------------------------------------------
+
+def _boxes(rng, n):
+    """Boxes with dyadic corners (exact in either precision)."""
+    p0 = rng.integers(-8, 9, (n, 3)) * 0.5
+    return p0, p0 + rng.integers(1, 9, (n, 3)) * 0.25
+
+
+@family("box_edge", "box", "box",
+        "rays through an edge or a corner: exactly (even rows) or 1e-8..1e-5 of the size off it")
+def _box_edge(rng, n):
+    p0, p1 = _boxes(rng, n)
+    # a point with two (an edge) or three (a corner) coordinates on the box's bounds
+    s = rng.choice([0.0, 1.0], (n, 3))
+    rows = np.arange(n)
+    free = rng.integers(0, 3, n)
+    s[rows, free] = np.where(rng.random(n) < 0.5, rng.uniform(0.1, 0.9, n), s[rows, free])
+    odd = rows % 2 == 1
+    s = s + np.where(odd, 1.0, 0.0)[:, None] * rng.choice([-1.0, 1.0], (n, 3)) * _log_uniform(rng, -8, -5, n)[:, None]
+    target = p0 + (p1 - p0) * s
+    o = target + _random_unit(rng, n) * rng.uniform(1, 6, n)[:, None]
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([p0, p1])])
+
+
+@family("box_parallel", "box", "box",
+        "rays parallel to a face (a direction component exactly 0) in its plane, or nearly parallel "
+        "(1e-8..1e-1)")
+def _box_parallel(rng, n):
+    p0, p1 = _boxes(rng, n)
+    rows = np.arange(n)
+    axis = rng.integers(0, 3, n)
+    target = p0 + (p1 - p0) * rng.uniform(-0.2, 1.2, (n, 3))
+    # the target on the face plane of ``axis`` (p0's or p1's), or just off it
+    on = np.where(rng.random(n) < 0.5, p0[rows, axis], p1[rows, axis])
+    target[rows, axis] = on
+    d = rng.normal(size=(n, 3))
+    odd = rows % 2 == 1
+    d[rows, axis] = np.where(odd, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -1, n), 0.0)
+    d = _unit(d)
+    o = target - d * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([p0, p1])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
 @family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")

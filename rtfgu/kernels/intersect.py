@@ -1,6 +1,7 @@
 # release: solves a03
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
-"Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles"), operation for operation as in
+"Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles", "Axis-aligned boxes"),
+operation for operation as in
 rtfgu/shapes/.
 
 For every shape kind of rtfgu.registry: ``intersect_<kind>(origin, direction, tmin, tmax,
@@ -183,6 +184,55 @@ def intersect_rectangle(origin, direction, tmin, tmax, p0, a, b, normal):
 
 
 @njit(cache=True, error_model="numpy")
+def intersect_box(origin, direction, tmin, tmax, p0, p1):
+    # Suffern's Box::hit, the slab test: t0 the largest entering t, t1 the smallest leaving
+    # t, a hit when t0 < t1; an axis the ray does not move along bounds nothing when o is
+    # within the slab (rtfgu.shapes.box).
+    t0 = lit(-math.inf, tmin)
+    t1 = lit(math.inf, tmin)
+    zero = lit(0, tmin)
+    for axis in range(3):
+        o = origin[axis]
+        d = direction[axis]
+        lo = p0[axis]
+        hi = p1[axis]
+        if d == zero:
+            if o < lo or o > hi:
+                return lit(math.inf, tmin)
+            continue
+        a = lit(1, d) / d
+        if a >= zero:
+            t_near = (lo - o) * a
+            t_far = (hi - o) * a
+        else:
+            t_near = (hi - o) * a
+            t_far = (lo - o) * a
+        if t_near > t0:
+            t0 = t_near
+        if t_far < t1:
+            t1 = t_far
+    if not t0 < t1:
+        return lit(math.inf, tmin)
+    t = t0 if t0 >= tmin else t1
+    if t >= tmin and t <= tmax:
+        return t
+    return lit(math.inf, tmin)
+
+
+@njit(cache=True, error_model="numpy")
+def box_face(position, p0, p1):
+    """The face (0-5: -x, -y, -z, +x, +y, +z) nearest to the point, the first at equal distances."""
+    face = 0
+    best = abs(position[0] - p0[0])
+    for k in range(1, 6):
+        distance = abs(position[k % 3] - (p0[k] if k < 3 else p1[k - 3]))
+        if distance < best:
+            face = k
+            best = distance
+    return face
+
+
+@njit(cache=True, error_model="numpy")
 def normal_plane(position, point, normal):
     return normalize(normal)
 
@@ -205,3 +255,13 @@ def normal_disk(position, center, normal, radius):
 @njit(cache=True, error_model="numpy")
 def normal_rectangle(position, p0, a, b, normal):
     return normal
+
+
+@njit(cache=True, error_model="numpy")
+def normal_box(position, p0, p1):
+    # Box.normal_at: the outward normal of the face nearest to the point.
+    face = box_face(position, p0, p1)
+    zero = lit(0, position[0])
+    sign = lit(-1, zero) if face < 3 else lit(1, zero)
+    axis = face % 3
+    return (sign if axis == 0 else zero, sign if axis == 1 else zero, sign if axis == 2 else zero)

@@ -23,7 +23,7 @@ Float3 tuples, as in the rest of rtfgu.kernels.
 The batch evaluators take one shape per ray as a row of the lecture constructor's
 arguments (rtfgu.hardcases.kinds): sphere (center, radius), plane (point, normal),
 triangle (v0, v1, v2: the vertices themselves, as watertightness needs the same floats in
-every triangle that shares them), disk (center, normal, radius), rectangle (p0, a, b).
+every triangle that shares them), disk (center, normal, radius), rectangle (p0, a, b), box (p0, p1).
 """
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit
 
 from .float3 import cross, lit, lit_per_precision, normalize, row3, sub
-from .intersect import (intersect_disk, intersect_plane, intersect_rectangle, intersect_sphere,
+from .intersect import (intersect_box, intersect_disk, intersect_plane, intersect_rectangle, intersect_sphere,
                         intersect_sphere_robust, intersect_triangle)
 
 
@@ -325,6 +325,11 @@ def rectangle_slide(o, d, tmin, tmax, shapes, i):
 
 
 @njit(cache=True, error_model="numpy")
+def box_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_box(o, d, tmin, tmax, row3(shapes, i, 0), row3(shapes, i, 3))
+
+
+@njit(cache=True, error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
     where ``finite`` says the input is not finite."""
@@ -375,5 +380,6 @@ ADAPTERS = {("sphere", "slide"): (sphere_slide, _any), ("sphere", "robust"): (sp
             ("plane", "slide"): (plane_slide, _any), ("plane", "robust"): (plane_robust_row, _any),
             ("triangle", "slide"): (triangle_slide, _any),
             ("triangle", "robust"): (triangle_robust_row, triangle_finite),
-            ("disk", "slide"): (disk_slide, _any), ("rectangle", "slide"): (rectangle_slide, _any)}
+            ("disk", "slide"): (disk_slide, _any), ("rectangle", "slide"): (rectangle_slide, _any),
+            ("box", "slide"): (box_slide, _any)}
 POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}

@@ -57,6 +57,15 @@ def texcoord_rectangle(position, p0, a, b, normal):
 
 
 @njit(cache=True, error_model="numpy")
+def texcoord_box(position, p0, p1):
+    """Box.texcoord: the two other coordinates of the face hit, from p0, over the box's size."""
+    axis = box_face(position, p0, p1) % 3
+    i = (axis + 1) % 3
+    j = (axis + 2) % 3
+    return (position[i] - p0[i]) / (p1[i] - p0[i]), (position[j] - p0[j]) / (p1[j] - p0[j])
+
+
+@njit(cache=True, error_model="numpy")
 def texcoord_sphere(position, center, radius):
     """Sphere.texcoord: Suffern's SphericalMap."""
     one = lit(1.0, radius)

@@ -1,6 +1,6 @@
 // Texture coordinates (u, v) of a point on each shape kind, as Shape.texcoord in the
 // lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap, the
-// triangle's barycentrics and the rectangle's edge projections. shape_texcoord picks the
+// triangle's barycentrics, the rectangle's edge projections and the box's face frame. shape_texcoord picks the
 // function of the kind hit.
 // #if plane|disk
 fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
@@ -27,6 +27,15 @@ fn texcoord_rectangle(p: vec3f, p0: vec3f, a: vec3f, b: vec3f, normal: vec3f) ->
 {
     let d = p - p0;
     return vec2f(dot(d, a) / dot(a, a), dot(d, b) / dot(b, b));
+}
+// #endif
+// #if box
+fn texcoord_box(p: vec3f, p0: vec3f, p1: vec3f) -> vec2f
+{
+    let axis = box_face(p, p0, p1) % 3u;
+    let i = (axis + 1u) % 3u;
+    let j = (axis + 2u) % 3u;
+    return vec2f((p[i] - p0[i]) / (p1[i] - p0[i]), (p[j] - p0[j]) / (p1[j] - p0[j]));
 }
 // #endif
 // #if sphere
