@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import rtfgu
-from rtfgu import (AreaLight, Box, Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
+from rtfgu import (AreaLight, Box, Float3, Material, OpenCylinder, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
                    Rectangle, Scene, Sphere, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
@@ -115,6 +115,22 @@ def test_rectangle_edges(p0, a, b, names):
 def test_box_corners(p0, p1, names):
     with raises_naming(*names):
         Box(Float3(*p0), Float3(*p1), RED)
+
+
+@pytest.mark.parametrize("y0, y1, radius, names", [
+    (0.0, 1.0, -1.0, ("OpenCylinder.radius",)),
+    (0.0, 1.0, 0.0, ("OpenCylinder.radius",)),
+    (1.0, 1.0, 1.0, ("OpenCylinder.y0", "OpenCylinder.y1")),     # y0 = y1: no height
+    (2.0, 1.0, 1.0, ("OpenCylinder.y0", "OpenCylinder.y1")),     # y0 > y1
+    (NAN, 1.0, 1.0, ("OpenCylinder.y0",)),
+    (0.0, INF, 1.0, ("OpenCylinder.y1",)),
+    (0.0, 1.0, NAN, ("OpenCylinder.radius",)),
+    ("0", 1.0, 1.0, ("OpenCylinder.y0",)),
+], ids=["radius_negative", "radius_zero", "y0_equals_y1", "y0_above_y1", "y0_nan", "y1_inf", "radius_nan",
+        "y0_string"])
+def test_open_cylinder_heights_and_radius(y0, y1, radius, names):
+    with raises_naming(*names):
+        OpenCylinder(y0, y1, radius, RED)
 
 
 def test_area_light_names_the_shapes_it_takes():

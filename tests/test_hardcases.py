@@ -255,6 +255,28 @@ def test_box_edges_and_parallel_rays_against_the_exact_truth(results):
     assert parallel.truth_hit[::2].any() and not parallel.truth_hit[::2].all()
 
 
+# --- open cylinders -------------------------------------------------------------------
+
+def test_open_cylinder_rims_and_tangents_against_the_exact_truth(results):
+    cylinder = (-1.0, 1.0, 5.0)
+    assert exact.open_cylinder((3, 1, 9), (0, 0, -1), 0.0, math.inf, *cylinder) == (5.0, 0.0)     # the rim y1
+    above = math.nextafter(1.0, 2.0)
+    assert exact.open_cylinder((3, above, 9), (0, 0, -1), 0.0, math.inf, *cylinder) == exact.MISS
+    assert exact.open_cylinder((5, 0, 9), (0, 0, -1), 0.0, math.inf, *cylinder) == (9.0, 0.0)     # tangent
+    assert exact.open_cylinder((0, 0, 0), (0, 0, 1), 0.0, math.inf, *cylinder) == (5.0, 0.0)      # from inside
+    assert exact.open_cylinder((5, -9, 0), (0, 1, 0), 0.0, math.inf, *cylinder) == exact.MISS    # along the axis
+    hi, lo = exact.open_cylinder((0.5, 0, -9), (0, 0, 1), 0.0, math.inf, *cylinder)
+    assert hi == 9 - math.sqrt(24.75) and abs(lo) < 1e-15
+    for name in ("open_cylinder_rim", "open_cylinder_grazing"):
+        reference = results[name, "reference-slide"]
+        assert np.array_equal(results[name, "numba64-slide"].t, reference.t), name
+        assert reference.rays > 0 and build(name, "float64").truth_hit.any(), name
+    # the odd rows miss or hit the rim by 1e-8 r or more: float64 decides all of them
+    family = build("open_cylinder_rim", "float64")
+    wrong = np.isfinite(results["open_cylinder_rim", "reference-slide"].t) != family.truth_hit
+    assert not wrong[1::2].any(), np.flatnonzero(wrong)
+
+
 # --- numba generic over float32 -------------------------------------------------------
 
 def test_numba_float32_kernels_stay_float32():

@@ -495,6 +495,44 @@ def _box_parallel(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([p0, p1])])
 
 
+# --- open cylinders (Suffern ch. 19) --------------------------------------------------
+
+@family("open_cylinder_rim", "open_cylinder", "open_cylinder",
+        "rays through a rim: exactly (Pythagorean rim points, even rows) or 1e-8..1e-5 r off it, "
+        "from outside or through the open end")
+def _open_cylinder_rim(rng, n):
+    rows = np.arange(n)
+    scale = 2.0 ** rng.integers(-3, 2, n)
+    abc = _TRIPLES[rng.integers(0, len(_TRIPLES), n)] * scale[:, None]
+    r = abc[:, 2]
+    y0 = rng.integers(-8, 1, n) * 0.5
+    y1 = y0 + rng.integers(1, 9, n) * 0.5
+    target = np.column_stack([abc[:, 0] * rng.choice([-1.0, 1.0], n), np.where(rng.random(n) < 0.5, y0, y1),
+                              abc[:, 1] * rng.choice([-1.0, 1.0], n)])
+    odd = rows % 2 == 1
+    target[:, 1] += np.where(odd, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -5, n) * r, 0.0)
+    o = target + np.round(_random_unit(rng, n) * (r * rng.uniform(1, 4, n))[:, None] * 4) / 4
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([y0, y1, r])])
+
+
+@family("open_cylinder_grazing", "open_cylinder", "open_cylinder",
+        "rays in a plane of constant y at r (1 +- 2e-4) from the axis, 2..20 r away, within the "
+        "heights or on a rim")
+def _open_cylinder_grazing(rng, n):
+    r = rng.uniform(0.5, 2.0, n)
+    y0 = rng.uniform(-2, 0, n)
+    y1 = y0 + rng.uniform(0.5, 3, n)
+    phi = rng.uniform(0, 2 * np.pi, n)
+    radial = np.column_stack([np.cos(phi), np.zeros(n), np.sin(phi)])
+    along = np.column_stack([-np.sin(phi), np.zeros(n), np.cos(phi)])
+    impact = r * (1.0 + rng.uniform(-2e-4, 2e-4, n))
+    height = np.where(rng.random(n) < 0.25, y1, rng.uniform(y0, y1))
+    d = along + np.column_stack([np.zeros(n), rng.uniform(-1e-3, 1e-3, n), np.zeros(n)])
+    o = radial * impact[:, None] - along * (r * rng.uniform(2, 20, n))[:, None]
+    o[:, 1] = height
+    return dict(origins=o, directions=d, shapes=[np.column_stack([y0, y1, r])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
 @family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")

@@ -1,7 +1,7 @@
 # release: solves a03
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
-"Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles", "Axis-aligned boxes"),
-operation for operation as in
+"Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles", "Axis-aligned boxes",
+"Open cylinders"), operation for operation as in
 rtfgu/shapes/.
 
 For every shape kind of rtfgu.registry: ``intersect_<kind>(origin, direction, tmin, tmax,
@@ -24,7 +24,7 @@ import math
 from numba import njit
 
 from ..layout import SPHERE_CENTER, SPHERE_RADIUS
-from .float3 import add, cross, dot, lit, normalize, row3, scale, sub
+from .float3 import add, cross, dot, lit, neg, normalize, row3, scale, sub
 
 # Formula ids of a render (rtfgu.kernels.dispatch.FORMULAS): the slide's and the robust one.
 SPHERE_SLIDE = 0
@@ -233,6 +233,34 @@ def box_face(position, p0, p1):
 
 
 @njit(cache=True, error_model="numpy")
+def intersect_open_cylinder(origin, direction, tmin, tmax, y0, y1, radius):
+    # Suffern's OpenCylinder::hit: a t^2 + b t + c = 0 in x and z, the near root then the far
+    # one, each when o_y + t d_y is within [y0, y1]; a ray parallel to the axis misses.
+    a = direction[0] * direction[0] + direction[2] * direction[2]
+    zero = lit(0, a)
+    if a == zero:
+        return lit(math.inf, a)
+    b = lit(2, a) * (origin[0] * direction[0] + origin[2] * direction[2])
+    c = origin[0] * origin[0] + origin[2] * origin[2] - radius * radius
+    disc = b * b - lit(4, a) * a * c
+    if disc < zero:
+        return lit(math.inf, a)
+    e = math.sqrt(disc)
+    denom = lit(2, a) * a
+    t = (-b - e) / denom
+    if t >= tmin and t <= tmax:
+        y_hit = origin[1] + t * direction[1]
+        if y_hit >= y0 and y_hit <= y1:
+            return t
+    t = (-b + e) / denom
+    if t >= tmin and t <= tmax:
+        y_hit = origin[1] + t * direction[1]
+        if y_hit >= y0 and y_hit <= y1:
+            return t
+    return lit(math.inf, a)
+
+
+@njit(cache=True, error_model="numpy")
 def normal_plane(position, point, normal):
     return normalize(normal)
 
@@ -265,3 +293,12 @@ def normal_box(position, p0, p1):
     sign = lit(-1, zero) if face < 3 else lit(1, zero)
     axis = face % 3
     return (sign if axis == 0 else zero, sign if axis == 1 else zero, sign if axis == 2 else zero)
+
+
+@njit(cache=True, error_model="numpy")
+def normal_open_cylinder(position, direction, y0, y1, radius):
+    # OpenCylinder.hit_normal: (x, 0, z) normalised, flipped toward the ray (-d . n < 0).
+    n = normalize((position[0], lit(0, radius), position[2]))
+    if dot(direction, n) > lit(0, radius):
+        return neg(n)
+    return n

@@ -66,6 +66,16 @@ def texcoord_box(position, p0, p1):
 
 
 @njit(cache=True, error_model="numpy")
+def texcoord_open_cylinder(position, y0, y1, radius):
+    """OpenCylinder.texcoord: Suffern's CylindricalMap."""
+    two_pi = lit(2.0 * math.pi, radius)
+    phi = math.atan2(position[0], position[2])
+    if phi < lit(0.0, radius):
+        phi += two_pi
+    return phi / two_pi, (position[1] - y0) / (y1 - y0)
+
+
+@njit(cache=True, error_model="numpy")
 def texcoord_sphere(position, center, radius):
     """Sphere.texcoord: Suffern's SphericalMap."""
     one = lit(1.0, radius)
