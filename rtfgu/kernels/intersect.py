@@ -1,4 +1,4 @@
-# release: solves a03
+# release: solves a03 a08
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
 "Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles", "Axis-aligned boxes",
 "Open cylinders"), operation for operation as in

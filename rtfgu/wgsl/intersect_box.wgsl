@@ -1,3 +1,4 @@
+// release: solves a08
 // Ray-box intersection (Suffern ch. 19, "Axis-aligned boxes"; rtfgu.shapes.box): the slab
 // test. t0 is the largest entering t, t1 the smallest leaving t; a hit when t0 < t1, at t0,
 // or at t1 for a ray from inside. An axis the ray does not move along bounds nothing when
