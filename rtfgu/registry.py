@@ -133,10 +133,11 @@ SHAPES = (
     ShapeKind("sphere", Sphere, (("center", 3), ("radius", 1)), formulas=("slide", "robust"),
               from_eye=True),
     ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
-    ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3))),
+    ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3)), uses=("plane",)),
     ShapeKind("box", Box, (("p0", 3), ("p1", 3))),
     # Both sides of the open cylinder are seen: its normal turns toward the ray.
-    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), faces_ray=True),
+    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere",),
+              faces_ray=True),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
 )

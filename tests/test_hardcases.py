@@ -226,7 +226,8 @@ def test_rectangle_edges_belong_to_it_and_the_exact_truth_sees_one_ulp(results):
     assert exact.rectangle((1, 0.5, 0), (1, 0, 0), 0.0, math.inf, *square) == exact.MISS   # in its plane
     for name in ("rectangle_edge", "rectangle_nearly_parallel"):
         assert results[name, "reference-slide"].wrong == 0, name
-        assert results[name, "numba64-slide"].wrong == 0, name
+        # float64 numba is the lecture layer operation for operation: the same t, to the bit
+        assert np.array_equal(results[name, "numba64-slide"].t, results[name, "reference-slide"].t), name
         assert results[name, "numba64-slide"].rays > 0 and results[name, "reference-slide"].rays > 0
     edge = build("rectangle_edge", "float64")
     # the exact edge and corner rows all hit; the family has rays that miss by 1e-8 too

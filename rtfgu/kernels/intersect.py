@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from ..layout import SPHERE_CENTER, SPHERE_RADIUS
@@ -164,22 +165,19 @@ def intersect_disk(origin, direction, tmin, tmax, center, normal, radius):
 
 @njit(cache=True, error_model="numpy")
 def intersect_rectangle(origin, direction, tmin, tmax, p0, a, b, normal):
-    # Suffern's Rectangle::hit: the plane through p0, then 0 <= d . a <= |a|^2 and
-    # 0 <= d . b <= |b|^2 for d = o + t w - p0.
-    denom = dot(direction, normal)
-    if denom == lit(0, denom):
-        return lit(math.inf, denom)
-    t = dot(sub(p0, origin), normal) / denom
-    if not (t >= tmin and t <= tmax):
-        return lit(math.inf, denom)
+    # Suffern's Rectangle::hit: the plane through p0 (intersect_plane), then
+    # 0 <= d . a <= |a|^2 and 0 <= d . b <= |b|^2 for d = o + t w - p0.
+    t = intersect_plane(origin, direction, tmin, tmax, p0, normal)
+    if t == lit(math.inf, t):
+        return t
     d = sub(add(origin, scale(direction, t)), p0)
-    zero = lit(0, denom)
+    zero = lit(0, t)
     ddota = dot(d, a)
     if ddota < zero or ddota > dot(a, a):
-        return lit(math.inf, denom)
+        return lit(math.inf, t)
     ddotb = dot(d, b)
     if ddotb < zero or ddotb > dot(b, b):
-        return lit(math.inf, denom)
+        return lit(math.inf, t)
     return t
 
 
@@ -234,30 +232,26 @@ def box_face(position, p0, p1):
 
 @njit(cache=True, error_model="numpy")
 def intersect_open_cylinder(origin, direction, tmin, tmax, y0, y1, radius):
-    # Suffern's OpenCylinder::hit: a t^2 + b t + c = 0 in x and z, the near root then the far
-    # one, each when o_y + t d_y is within [y0, y1]; a ray parallel to the axis misses.
-    a = direction[0] * direction[0] + direction[2] * direction[2]
-    zero = lit(0, a)
-    if a == zero:
-        return lit(math.inf, a)
-    b = lit(2, a) * (origin[0] * direction[0] + origin[2] * direction[2])
-    c = origin[0] * origin[0] + origin[2] * origin[2] - radius * radius
-    disc = b * b - lit(4, a) * a * c
-    if disc < zero:
-        return lit(math.inf, a)
-    e = math.sqrt(disc)
-    denom = lit(2, a) * a
-    t = (-b - e) / denom
-    if t >= tmin and t <= tmax:
+    # Suffern's OpenCylinder::hit: the ray projected onto the xz plane meets the sphere of
+    # radius r about the origin (intersect_sphere: the same quadratic) where the ray meets the
+    # infinite cylinder; the near root, then the far one, counts when o_y + t d_y is within
+    # [y0, y1]. A ray parallel to the axis misses.
+    zero = lit(0, radius)
+    if direction[0] == zero and direction[2] == zero:
+        return lit(math.inf, radius)
+    flat_origin = (origin[0], zero, origin[2])
+    flat_direction = (direction[0], zero, direction[2])
+    center = (zero, zero, zero)
+    t = intersect_sphere(flat_origin, flat_direction, tmin, tmax, center, radius)
+    for _ in range(2):
+        if t == lit(math.inf, radius):
+            return t
         y_hit = origin[1] + t * direction[1]
         if y_hit >= y0 and y_hit <= y1:
             return t
-    t = (-b + e) / denom
-    if t >= tmin and t <= tmax:
-        y_hit = origin[1] + t * direction[1]
-        if y_hit >= y0 and y_hit <= y1:
-            return t
-    return lit(math.inf, a)
+        t = intersect_sphere(flat_origin, flat_direction, np.nextafter(t, lit(math.inf, radius)), tmax,
+                             center, radius)
+    return lit(math.inf, radius)
 
 
 @njit(cache=True, error_model="numpy")

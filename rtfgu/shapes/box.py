@@ -60,9 +60,9 @@ class Box(Shape):
                 t1 = t_far    # the smallest leaving t
         if not t0 < t1:
             return False
-        t = t0 if t0 >= ray.tmin else t1
-        if t >= ray.tmin and t < ray.tmax:
-            ray.tmax = t
+        t_hit = t0 if t0 >= ray.tmin else t1   # from inside the box: where it leaves
+        if ray.tmin <= t_hit < ray.tmax:
+            ray.tmax = t_hit
             return True
         return False
 

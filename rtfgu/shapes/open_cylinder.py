@@ -5,9 +5,11 @@ The book's ``OpenCylinder::hit``: the ray meets the infinite cylinder x^2 + z^2 
 
     a t^2 + b t + c = 0,  a = d_x^2 + d_z^2,  b = 2 (o_x d_x + o_z d_z),  c = o_x^2 + o_z^2 - r^2,
 
-written as the sphere's quadratic (lecture 01), and a root counts when its height o_y + t d_y
-lies within [y0, y1]: the near root first, then the far one, so that a ray sees the inside
-through the open end. The rims belong to the cylinder (the book's test is y0 < y < y1; rtfgu's
+which is the sphere's quadratic (lecture 01) for the ray projected onto the xz plane,
+(o_x, 0, o_z) + t (d_x, 0, d_z), and the sphere of radius r about the origin: the class asks
+``Sphere.intersect_p`` for the near root, then (from just beyond it) for the far one, and a
+root counts when its height o_y + t d_y lies within [y0, y1], so that a ray sees the inside
+through an open end. The rims belong to the cylinder (the book's test is y0 < y < y1; rtfgu's
 closed shapes keep their edges, as the disk its rim). A ray parallel to the axis (a = 0, where
 the book divides by zero) misses it.
 
@@ -23,6 +25,7 @@ import math
 from ..float3 import Float3, dot, normalize
 from ..ray import Ray
 from .shape import Shape, positive
+from .sphere import Sphere
 
 
 class OpenCylinder(Shape):
@@ -34,26 +37,21 @@ class OpenCylinder(Shape):
             raise ValueError("OpenCylinder.y0 must be below OpenCylinder.y1, got y0 = %r, y1 = %r"
                              % (self.y0, self.y1))
         self.radius = positive(radius, "OpenCylinder.radius")
+        self._circle = Sphere(Float3(0.0, 0.0, 0.0), self.radius, color)
 
     def intersect_p(self, ray: Ray) -> bool:
         o, d = ray.origin, ray.direction
-        a = d.x * d.x + d.z * d.z
-        if a == 0.0:
+        if d.x == 0.0 and d.z == 0.0:
             return False  # parallel to the axis
-        b = 2.0 * (o.x * d.x + o.z * d.z)
-        c = o.x * o.x + o.z * o.z - self.radius * self.radius
-        disc = b * b - 4.0 * a * c
-        if disc < 0.0:
-            return False
-        e = math.sqrt(disc)
-        denom = 2.0 * a
-        # The near root, then the far one (the inside, seen through an open end).
-        for t in ((-b - e) / denom, (-b + e) / denom):
-            if t >= ray.tmin and t < ray.tmax:
-                y_hit = o.y + t * d.y
-                if y_hit >= self.y0 and y_hit <= self.y1:
-                    ray.tmax = t
-                    return True
+        flat = Ray(Float3(o.x, 0.0, o.z), Float3(d.x, 0.0, d.z), ray.tmin, ray.tmax)
+        for _ in range(2):   # the near root, then the far one
+            if not self._circle.intersect_p(flat):
+                return False
+            y_hit = o.y + flat.tmax * d.y
+            if self.y0 <= y_hit <= self.y1:
+                ray.tmax = flat.tmax
+                return True
+            flat = Ray(flat.origin, flat.direction, math.nextafter(flat.tmax, math.inf), ray.tmax)
         return False
 
     def normal_at(self, position: Float3) -> Float3:

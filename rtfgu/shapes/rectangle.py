@@ -4,9 +4,9 @@
 The book's ``Rectangle::hit``: the ray meets the rectangle's plane (normal n = a x b,
 normalised) at
 
-    t = ((p0 - o) . n) / (d . n),
+    t = ((p0 - o) . n) / (d . n)
 
-and the hit counts when d' = o + t d - p0 projects onto a and b within the edges:
+(``Plane.intersect_p``, lecture 01, as the disk does), and the hit counts when d' = o + t d - p0 projects onto a and b within the edges:
 
     0 <= d' . a <= |a|^2   and   0 <= d' . b <= |b|^2
 
@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from ..float3 import Float3, as_float3, cross, dot, normalize
 from ..ray import Ray
+from .plane import Plane
 from .shape import Shape, nonzero_vector
 
 # How far from perpendicular a and b may be: |a . b| <= PERPENDICULAR |a| |b|. The
@@ -41,22 +42,20 @@ class Rectangle(Shape):
         self.normal = normalize(cross(self.a, self.b))
         self.a_len_squared = dot(self.a, self.a)
         self.b_len_squared = dot(self.b, self.b)
+        self._plane = Plane(self.p0, self.normal, color)
 
     def intersect_p(self, ray: Ray) -> bool:
-        denom = dot(ray.direction, self.normal)
-        if denom == 0.0:
-            return False  # parallel to the rectangle's plane
-        t = dot(self.p0 - ray.origin, self.normal) / denom
-        if not (t >= ray.tmin and t < ray.tmax):
+        probe = Ray(ray.origin, ray.direction, ray.tmin, ray.tmax)
+        if not self._plane.intersect_p(probe):
             return False
-        d = ray(t) - self.p0
+        d = ray(probe.tmax) - self.p0
         ddota = dot(d, self.a)
         if ddota < 0.0 or ddota > self.a_len_squared:
             return False
         ddotb = dot(d, self.b)
         if ddotb < 0.0 or ddotb > self.b_len_squared:
             return False
-        ray.tmax = t
+        ray.tmax = probe.tmax
         return True
 
     def normal_at(self, position: Float3) -> Float3:

@@ -1,39 +1,41 @@
 // Ray-open-cylinder intersection (Suffern ch. 19, "Open cylinders"; rtfgu.shapes.open_cylinder):
-// a t^2 + b t + c = 0 with a = w_x^2 + w_z^2, b = 2 (o_x w_x + o_z w_z), c = o_x^2 + o_z^2 - r^2,
-// the near root then the far one, each when its height is within [y0, y1]. The normal
-// (x, 0, z) / r is turned toward the ray, as the book's: the inside is seen too.
+// the ray projected onto the xz plane meets the sphere of radius r about the origin
+// (intersect_sphere: the same quadratic) where the ray meets the infinite cylinder; the near
+// root, then the far one, counts when its height is within [y0, y1]. The normal (x, 0, z) / r
+// is turned toward the ray, as the book's: the inside is seen too.
 fn intersect_open_cylinder(r: Ray, hit: ptr<function, HitInfo>, y0: f32, y1: f32, radius: f32) -> bool
 {
-    let a = r.direction.x * r.direction.x + r.direction.z * r.direction.z;
-    if (a == 0.0) {
+    if (r.direction.x == 0.0 && r.direction.z == 0.0) {
         return false;  // parallel to the axis
     }
-    let b = 2.0 * (r.origin.x * r.direction.x + r.origin.z * r.direction.z);
-    let c = r.origin.x * r.origin.x + r.origin.z * r.origin.z - radius * radius;
-    let disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) {
-        return false;
-    }
-    // The near root, then the far one (the inside, seen through an open end).
-    let roots = vec2f(-b - sqrt(disc), -b + sqrt(disc)) / (2.0 * a);
-    var k = 0u;
-    for (; k < 2u; k++) {
-        let y_hit = r.origin.y + roots[k] * r.direction.y;
-        if (roots[k] >= r.tmin && roots[k] < r.tmax && y_hit >= y0 && y_hit <= y1) {
-            break;
+    var flat = Ray(vec3f(r.origin.x, 0.0, r.origin.z), vec3f(r.direction.x, 0.0, r.direction.z), r.tmin, r.tmax);
+    for (var k = 0; k < 2; k++) {
+        var on_circle = *hit;
+        if (!intersect_sphere(flat, &on_circle, vec3f(0.0), radius)) {
+            return false;
         }
+        let y_hit = r.origin.y + on_circle.dist * r.direction.y;
+        if (y_hit >= y0 && y_hit <= y1) {
+            on_circle.position = r.origin + r.direction * on_circle.dist;
+            var n = normalize(vec3f(on_circle.position.x, 0.0, on_circle.position.z));
+            if (dot(r.direction, n) > 0.0) {
+                n = -n;
+            }
+            on_circle.normal = n;
+            *hit = on_circle;
+            return true;
+        }
+        flat.tmin = next_after(on_circle.dist);
     }
-    if (k == 2u) {
-        return false;
+    return false;
+}
+
+// The least f32 above t (t finite): the far root is looked for beyond the near one.
+fn next_after(t: f32) -> f32
+{
+    if (t == 0.0) {
+        return bitcast<f32>(1u);
     }
-    let t = roots[k];
-    (*hit).has_hit = true;
-    (*hit).dist = t;
-    (*hit).position = r.origin + r.direction * t;
-    var n = normalize(vec3f((*hit).position.x, 0.0, (*hit).position.z));
-    if (dot(r.direction, n) > 0.0) {
-        n = -n;
-    }
-    (*hit).normal = n;
-    return true;
+    let bits = bitcast<u32>(t);
+    return bitcast<f32>(select(bits - 1u, bits + 1u, t > 0.0));
 }
