@@ -14,6 +14,7 @@ from numba import njit
 
 from ..layout import TEXTURE_ADDRESSES, TEXTURE_FILTERS, offset
 from .float3 import add, cross, dot, lit, normalize, scale, sub
+from .intersect import box_face
 
 IMAGE_WIDTH = offset("ImageTexture", "width")
 IMAGE_HEIGHT = offset("ImageTexture", "height")
