@@ -12,7 +12,9 @@ A shape kind named ``disk`` (``ShapeKind("disk", Disk, fields)``) promises:
 * ``fields``: the layout record, in the order in which both intersection functions take
   them after the ray; 3 components is a vector, 1 a scalar;
 * numba: ``intersect_disk(origin, direction, tmin, tmax, *fields)`` returning t in
-  [tmin, tmax] or inf, and ``normal_disk(position, *fields)``, in ``numba_module``;
+  [tmin, tmax] or inf, and ``normal_disk(position, *fields)``, in ``numba_module``
+  (``normal_<kind>(position, direction, *fields)`` for a kind marked ``faces_ray``, whose
+  normal turns toward the ray: the lecture class's ``hit_normal``);
   a formula other than "slide" is ``intersect_disk_<formula>`` with the same arguments;
 * WGSL: the file ``intersect_disk.wgsl`` with
   ``fn intersect_disk(r: Ray, hit: ptr<function, HitInfo>, <fields>) -> bool`` filling
@@ -29,9 +31,12 @@ from dataclasses import dataclass
 from .lights import AmbientOccluder, AreaLight, Directional, PointLight
 from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR,
                                  PHONG, REFLECTIVE, TRANSPARENT)
+from .shapes.box import Box
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
+from .shapes.open_cylinder import OpenCylinder
 from .shapes.plane import Plane
+from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
 from .textures import Checker, ImageTexture
@@ -60,6 +65,7 @@ class ShapeKind(_Rows):
     numba_module: str = "rtfgu.kernels.intersect"
     from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
     uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
+    faces_ray: bool = False             # the normal depends on the ray's direction (Shape.hit_normal)
     # A mesh kind: its rows are the faces of meshes, found through the scene's BVH (which
     # may hold the spheres too, rtfgu.layout.FlatMesh) and not by a loop over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
     # ``numba_module``, WGSL ``mesh.wgsl``); its arrays are rtfgu.layout.FlatMesh's.
@@ -127,6 +133,11 @@ SHAPES = (
     ShapeKind("sphere", Sphere, (("center", 3), ("radius", 1)), formulas=("slide", "robust"),
               from_eye=True),
     ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
+    ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3)), uses=("plane",)),
+    ShapeKind("box", Box, (("p0", 3), ("p1", 3))),
+    # Both sides of the open cylinder are seen: its normal turns toward the ray.
+    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere",),
+              faces_ray=True),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
 )
@@ -155,9 +166,9 @@ SHADERS = (
 LIGHTS = (
     LightKind("point_light", PointLight, (("position", 3), ("intensity", 3))),
     LightKind("directional", Directional, (("direction", 3), ("intensity", 3))),
-    # rtfgu/lights/area_light.py: one emitting triangle or sphere.
-    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("e1", 3), ("emission", 3),
-                                        ("light_sampler", 3)), area=True),
+    # rtfgu/lights/area_light.py: one emitting triangle, rectangle or sphere.
+    LightKind("area_light", AreaLight, (("v0", 3), ("radius", 1), ("e0", 3), ("rectangle", 1), ("e1", 3),
+                                        ("emission", 3), ("light_sampler", 3)), area=True),
     # rtfgu/lights/ambient_occluder.py: ambient light seen through the unoccluded directions.
     LightKind("ambient_occluder", AmbientOccluder, (("radiance", 3), ("light_sampler", 3)), area=True),
 )

@@ -51,7 +51,7 @@ class Scene:
             hit.has_hit = True
             hit.dist = ray.tmax
             hit.position = ray(ray.tmax)
-            hit.normal = hit_shape.normal_at(hit.position)
+            hit.normal = hit_shape.hit_normal(hit.position, ray.direction)
             hit.material = hit_shape.material
             hit.color = hit_shape.material.color_at(hit_shape, hit.position)
         return hit.has_hit

@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 import rtfgu
-from rtfgu import (Float3, Material, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
-                   Scene, Sphere, Triangle)
+from rtfgu import (AreaLight, Box, Float3, Material, OpenCylinder, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
+                   Rectangle, Scene, Sphere, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
 
@@ -91,6 +91,51 @@ def test_plane_zero_or_non_finite_normal():
         Plane(Float3(0, 0, 0), Float3(0, NAN, 1), RED)
     with raises_naming("point"):
         Plane(Float3(INF, 0, 0), Float3(0, 1, 0), RED)
+
+
+@pytest.mark.parametrize("p0, a, b, names", [
+    ((0, 0, 0), (0, 0, 0), (0, 1, 0), ("Rectangle.a",)),                   # zero-length edge
+    ((0, 0, 0), (1, 0, 0), (0, 0, 0), ("Rectangle.b",)),
+    ((0, 0, 0), (1, 0, 0), (2, 0, 0), ("Rectangle.a", "Rectangle.b", "perpendicular")),  # parallel
+    ((0, 0, 0), (1, 0, 0), (1, 1, 0), ("Rectangle.a", "Rectangle.b", "perpendicular")),  # skew
+    ((0, NAN, 0), (1, 0, 0), (0, 1, 0), ("Rectangle.p0",)),
+    ((0, 0, 0), (1, INF, 0), (0, 1, 0), ("Rectangle.a",)),
+], ids=["a_zero", "b_zero", "parallel", "not_perpendicular", "p0_nan", "a_inf"])
+def test_rectangle_edges(p0, a, b, names):
+    with raises_naming(*names):
+        Rectangle(Float3(*p0), Float3(*a), Float3(*b), RED)
+
+
+@pytest.mark.parametrize("p0, p1, names", [
+    ((0, 0, 0), (1, 1, 0), ("Box.p0", "Box.p1", "axis z")),      # flat
+    ((0, 2, 0), (1, 1, 1), ("Box.p0", "Box.p1", "axis y")),      # corners swapped in y
+    ((0, 0, NAN), (1, 1, 1), ("Box.p0",)),
+    ((0, 0, 0), (INF, 1, 1), ("Box.p1",)),
+], ids=["flat", "swapped", "p0_nan", "p1_inf"])
+def test_box_corners(p0, p1, names):
+    with raises_naming(*names):
+        Box(Float3(*p0), Float3(*p1), RED)
+
+
+@pytest.mark.parametrize("y0, y1, radius, names", [
+    (0.0, 1.0, -1.0, ("OpenCylinder.radius",)),
+    (0.0, 1.0, 0.0, ("OpenCylinder.radius",)),
+    (1.0, 1.0, 1.0, ("OpenCylinder.y0", "OpenCylinder.y1")),     # y0 = y1: no height
+    (2.0, 1.0, 1.0, ("OpenCylinder.y0", "OpenCylinder.y1")),     # y0 > y1
+    (NAN, 1.0, 1.0, ("OpenCylinder.y0",)),
+    (0.0, INF, 1.0, ("OpenCylinder.y1",)),
+    (0.0, 1.0, NAN, ("OpenCylinder.radius",)),
+    ("0", 1.0, 1.0, ("OpenCylinder.y0",)),
+], ids=["radius_negative", "radius_zero", "y0_equals_y1", "y0_above_y1", "y0_nan", "y1_inf", "radius_nan",
+        "y0_string"])
+def test_open_cylinder_heights_and_radius(y0, y1, radius, names):
+    with raises_naming(*names):
+        OpenCylinder(y0, y1, radius, RED)
+
+
+def test_area_light_names_the_shapes_it_takes():
+    with raises_naming("AreaLight.shape", "Rectangle"):
+        AreaLight(Plane(Float3(0, 0, 0), Float3(0, 1, 0), RED))
 
 
 def test_shape_colour_non_finite():

@@ -18,8 +18,9 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from rtfgu import (Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OrthographicCamera, Phong,
-                   Plane, Ray, Reflective, Scene, Sphere, Transparent, Triangle, trace)
+from rtfgu import (Box, Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OpenCylinder,
+                   OrthographicCamera, Phong, Plane, Ray, Rectangle, Reflective, Scene, Sphere, Transparent, Triangle, trace)
+from rtfgu.hardcases.exact import box_t
 from rtfgu.lights import PointLight
 from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
 from rtfgu.ray import SPAWN_EPSILON
@@ -98,6 +99,57 @@ def exact_disk(shape, case):
     to_hit = sub(tuple(o + hit[0] * d for o, d in zip(F(case.origin), F(case.direction))),
                  F(shape.center))
     return hit if dot(to_hit, to_hit) <= Fraction(shape.radius) ** 2 else None
+
+
+def exact_rectangle(shape, case):
+    """Suffern's Rectangle::hit in fractions: the plane through p0 with normal a x b, then
+    0 <= d . a <= |a|^2 and 0 <= d . b <= |b|^2 (the edges belong to it)."""
+    o, d, p0, a, b = F(case.origin), F(case.direction), F(shape.p0), F(shape.a), F(shape.b)
+    n = cross(a, b)
+    if dot(d, n) == 0:
+        return None
+    t = dot(sub(p0, o), n) / dot(d, n)
+    if not in_range(t, case):
+        return None
+    to_hit = sub(tuple(oc + t * dc for oc, dc in zip(o, d)), p0)
+    if 0 <= dot(to_hit, a) <= dot(a, a) and 0 <= dot(to_hit, b) <= dot(b, b):
+        return t, unit(n)
+    return None
+
+
+def exact_box(shape, case):
+    """Suffern's slab test in fractions (an axis the ray does not move along bounds nothing
+    within its slab); the normal is the outward one of the face nearest to the hit, the
+    first of -x, -y, -z, +x, +y, +z (rtfgu.shapes.box)."""
+    o, d, p0, p1 = F(case.origin), F(case.direction), F(shape.p0), F(shape.p1)
+    t = box_t(o, d, p0, p1, Fraction(case.tmin))
+    if t is None or not in_range(t, case):
+        return None
+    p = tuple(oc + t * dc for oc, dc in zip(o, d))
+    distances = [abs(p[k] - p0[k]) for k in range(3)] + [abs(p[k] - p1[k]) for k in range(3)]
+    face = distances.index(min(distances))
+    return t, tuple(Fraction(-1 if face < 3 else 1) if k == face % 3 else Fraction(0) for k in range(3))
+
+
+def exact_open_cylinder(shape, case):
+    """Suffern's OpenCylinder::hit in fractions: the near root, then the far one, each with
+    its height in [y0, y1]; a ray parallel to the axis misses; the normal (x, 0, z) / r
+    turned toward the ray (-d . n < 0: flipped)."""
+    o, d, r = F(case.origin), F(case.direction), Fraction(shape.radius)
+    a = d[0] * d[0] + d[2] * d[2]
+    if a == 0:
+        return None
+    b = 2 * (o[0] * d[0] + o[2] * d[2])
+    c = o[0] * o[0] + o[2] * o[2] - r * r
+    disc = b * b - 4 * a * c
+    if disc < 0:
+        return None
+    for t in sorted(((-b - exact_sqrt(disc)) / (2 * a), (-b + exact_sqrt(disc)) / (2 * a))):
+        p = tuple(oc + t * dc for oc, dc in zip(o, d))
+        if in_range(t, case) and Fraction(shape.y0) <= p[1] <= Fraction(shape.y1):
+            n = (p[0] / r, Fraction(0), p[2] / r)
+            return t, (tuple(-c for c in n) if dot(d, n) > 0 else n)
+    return None
 
 
 def exact_triangle(shape, case):
@@ -199,6 +251,50 @@ SHAPE_CASES = {
          Case("hit at tmax", (0.5, 0.0, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
         exact_disk,
         lambda m: Disk((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 1.0, GREY, m)),
+    "rectangle": KindCases(
+        lambda m: Rectangle((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m),
+        (Case("hit", (0.5, 0.5, 2.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 2.0), (0.5, 0.25, -1.0)),
+         Case("hit from behind", (1.5, 0.25, -1.0), (0.0, 0.0, 1.0)),
+         Case("hit on the edge d . a = |a|^2", (2.0, 0.5, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the edge d . b = 0", (1.0, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the corner p0 + a + b", (2.0, 1.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("miss beyond the edge", (2.25, 0.5, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beside the edge d . b = 0", (1.0, -0.25, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the rectangle", (0.5, 0.5, 1.0), (1.0, 0.0, 0.0), hits=False),
+         Case("grazing ray in its plane", (-1.0, 0.5, 0.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.5, 0.5, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_rectangle,
+        lambda m: Rectangle((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m)),
+    "box": KindCases(
+        lambda m: Box((0.0, 0.0, 0.0), (2.0, 1.0, 1.0), GREY, m),
+        (Case("hit", (0.5, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 3.0), (0.5, 0.25, -1.0)),
+         Case("hit on the face -y", (1.5, -2.0, 0.25), (0.0, 1.0, 0.0)),
+         Case("hit from inside (the leaving face)", (1.0, 0.5, 0.5), (1.0, 0.0, 0.0)),
+         Case("hit on the edge of +x and +z", (2.0, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("grazing ray touching an edge only (t0 = t1)", (3.0, 0.5, 0.0), (-1.0, 0.0, 1.0), hits=False),
+         Case("miss beside the box", (2.25, 0.5, 3.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to a face, outside its slab", (0.5, 0.5, 2.0), (1.0, 0.0, 0.0), hits=False),
+         Case("miss behind the ray", (0.5, 0.5, -3.0), (0.0, 0.0, -1.0), hits=False),
+         Case("hit at tmax", (0.5, 0.5, 3.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_box,
+        lambda m: Box((-1.0, -1.0, -2.0), (1.0, 1.0, 0.0), GREY, m)),
+    "open_cylinder": KindCases(
+        lambda m: OpenCylinder(-1.0, 1.0, 1.0, GREY, m),
+        (Case("hit", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.5, 3.0), (0.0, 0.125, -1.0)),
+         Case("hit from inside (the normal turned toward the ray)", (0.0, 0.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("inside seen through the open end (the far root)", (-3.0, 2.0, 0.0), (1.0, -0.375, 0.0)),
+         Case("hit on the rim y = y1", (0.0, 1.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("tangent ray (grazing)", (1.0, 0.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("miss above the rim", (0.0, 1.25, 5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beside the cylinder", (1.25, 0.0, 5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the axis", (1.0, -5.0, 0.0), (0.0, 1.0, 0.0), hits=False),
+         Case("hit at tmax (the far root beyond it)", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0), tmax=4.0,
+              hits=False)),
+        exact_open_cylinder,
+        lambda m: OpenCylinder(-1.0, 1.0, 0.25, GREY, m)),
     "mesh": KindCases(
         lambda m: mesh_face((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), m),
         (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),

@@ -1,6 +1,7 @@
 """Hard cases: every family on every available path against its exact truth, and the claims
 the robust formulas make (watertight edges, parallel planes, spawned rays, far, small and
-tangent spheres in float32); disks through the rim and nearly parallel to them."""
+tangent spheres in float32); disks through the rim and nearly parallel to them; rectangles
+through their edges and corners."""
 from __future__ import annotations
 
 import math
@@ -11,6 +12,7 @@ import pytest
 from rtfgu import robust
 from rtfgu.float3 import Float3
 from rtfgu.hardcases import FAMILIES, NumbaPath, ReferencePath, build, evaluate, exact, runs
+from rtfgu.hardcases.kinds import KINDS
 from rtfgu.hardcases.wgsl_path import WgslPath, wgsl_unavailable_reason
 from rtfgu.ray import Ray
 
@@ -109,7 +111,7 @@ def test_families_are_seeded_and_precision_specific():
 def test_family_runs_on_every_path(results, name):
     family64 = build(name, "float64")
     ran = [pid for pid in PATH_IDS[:len(_paths())] if (name, pid) in results]
-    assert len(ran) == len(_paths()) or family64.kind == "disk", (name, ran)
+    assert len(ran) == len(_paths()) or KINDS[family64.kind].robust is None, (name, ran)
     for pid in ran:
         r = results[name, pid]
         if pid.startswith("reference") and (family64.invalid or (name == "tri_zero_area" and pid.endswith("slide"))):
@@ -211,6 +213,69 @@ def test_disk_rim_belongs_to_the_disk_and_float32_misses_it(results):
     for name in ("disk_rim", "disk_nearly_parallel", "disk_grazing_edge"):
         assert results[name, "reference-slide"].wrong == 0
         assert results[name, "numba32-slide"].wrong > 0, name
+
+
+# --- rectangles -----------------------------------------------------------------------
+
+def test_rectangle_edges_belong_to_it_and_the_exact_truth_sees_one_ulp(results):
+    square = ((0, 0, 0), (2, 0, 0), (0, 1, 0))
+    assert exact.rectangle((2, 1, 3), (0, 0, -1), 0.0, math.inf, *square) == (3.0, 0.0)   # a corner
+    assert exact.rectangle((0, 0.5, 3), (0, 0, -1), 0.0, math.inf, *square) == (3.0, 0.0)  # the edge at p0
+    outside = math.nextafter(2.0, 3.0)
+    assert exact.rectangle((outside, 0.5, 3), (0, 0, -1), 0.0, math.inf, *square) == exact.MISS
+    assert exact.rectangle((1, 0.5, 0), (1, 0, 0), 0.0, math.inf, *square) == exact.MISS   # in its plane
+    for name in ("rectangle_edge", "rectangle_nearly_parallel"):
+        assert results[name, "reference-slide"].wrong == 0, name
+        # float64 numba is the lecture layer operation for operation: the same t, to the bit
+        assert np.array_equal(results[name, "numba64-slide"].t, results[name, "reference-slide"].t), name
+        assert results[name, "numba64-slide"].rays > 0 and results[name, "reference-slide"].rays > 0
+    edge = build("rectangle_edge", "float64")
+    # the exact edge and corner rows all hit; the family has rays that miss by 1e-8 too
+    assert edge.truth_hit[::2].all() and not edge.truth_hit.all()
+
+
+# --- boxes ----------------------------------------------------------------------------
+
+def test_box_edges_and_parallel_rays_against_the_exact_truth(results):
+    box = ((0, 0, 0), (2, 1, 1))
+    assert exact.box((2, 0.5, 3), (0, 0, -1), 0.0, math.inf, *box) == (2.0, 0.0)          # along the face x = 2
+    assert exact.box((3, 0.5, 0), (-1, 0, 1), 0.0, math.inf, *box) == exact.MISS           # touches an edge only
+    assert exact.box((1, 0.5, 0.5), (1, 0, 0), 0.0, math.inf, *box) == (1.0, 0.0)          # from inside
+    outside = math.nextafter(2.0, 3.0)
+    assert exact.box((outside, 0.5, 3), (0, 0, -1), 0.0, math.inf, *box) == exact.MISS
+    for name in ("box_edge", "box_parallel"):
+        family = build(name, "float64")
+        reference = results[name, "reference-slide"]
+        # float64 numba is the lecture layer operation for operation: the same t, to the bit
+        assert np.array_equal(results[name, "numba64-slide"].t, reference.t), name
+        # in float64 only the rays exactly through an edge or a corner (even rows, where
+        # the slab test compares t0 < t1 of rounded quotients) can be decided wrongly
+        wrong = np.isfinite(reference.t) != family.truth_hit
+        assert not wrong[1::2].any(), (name, np.flatnonzero(wrong))
+    parallel = build("box_parallel", "float64")
+    assert parallel.truth_hit[::2].any() and not parallel.truth_hit[::2].all()
+
+
+# --- open cylinders -------------------------------------------------------------------
+
+def test_open_cylinder_rims_and_tangents_against_the_exact_truth(results):
+    cylinder = (-1.0, 1.0, 5.0)
+    assert exact.open_cylinder((3, 1, 9), (0, 0, -1), 0.0, math.inf, *cylinder) == (5.0, 0.0)     # the rim y1
+    above = math.nextafter(1.0, 2.0)
+    assert exact.open_cylinder((3, above, 9), (0, 0, -1), 0.0, math.inf, *cylinder) == exact.MISS
+    assert exact.open_cylinder((5, 0, 9), (0, 0, -1), 0.0, math.inf, *cylinder) == (9.0, 0.0)     # tangent
+    assert exact.open_cylinder((0, 0, 0), (0, 0, 1), 0.0, math.inf, *cylinder) == (5.0, 0.0)      # from inside
+    assert exact.open_cylinder((5, -9, 0), (0, 1, 0), 0.0, math.inf, *cylinder) == exact.MISS    # along the axis
+    hi, lo = exact.open_cylinder((0.5, 0, -9), (0, 0, 1), 0.0, math.inf, *cylinder)
+    assert hi == 9 - math.sqrt(24.75) and abs(lo) < 1e-15
+    for name in ("open_cylinder_rim", "open_cylinder_grazing"):
+        reference = results[name, "reference-slide"]
+        assert np.array_equal(results[name, "numba64-slide"].t, reference.t), name
+        assert reference.rays > 0 and build(name, "float64").truth_hit.any(), name
+    # the odd rows miss or hit the rim by 1e-8 r or more: float64 decides all of them
+    family = build("open_cylinder_rim", "float64")
+    wrong = np.isfinite(results["open_cylinder_rim", "reference-slide"].t) != family.truth_hit
+    assert not wrong[1::2].any(), np.flatnonzero(wrong)
 
 
 # --- numba generic over float32 -------------------------------------------------------

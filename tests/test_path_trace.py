@@ -43,8 +43,8 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from rtfgu import (AreaLight, Emissive, Float3, GlossySpecular, Lambertian, Mesh, PathTrace, PinholeCamera, Plane,
-                   Reflective, Regular, Scene, Sphere, Transparent, Triangle, render)
+from rtfgu import (AreaLight, AreaLighting, Emissive, Float3, GlossySpecular, Lambertian, Mesh, PathTrace,
+                   PinholeCamera, Plane, Rectangle, Reflective, Regular, Scene, Sphere, Transparent, Triangle, render)
 from rtfgu.brdfs.perfect_specular import reflect
 from rtfgu.hit_info import HitInfo
 from rtfgu.image import to_8bit
@@ -934,3 +934,44 @@ def test_the_same_seed_gives_the_same_image_and_another_seed_another(path, parit
     first = render_on(path, scene, 8, 4, seed=9)
     assert np.array_equal(first, render_on(path, scene, 8, 4, seed=9))
     assert not np.array_equal(first, render_on(path, scene, 8, 4, seed=10))
+
+
+# --- a rectangle as an area light (Suffern ch. 18.6) ---------------------------------------
+
+def rectangle_lamp_scene(tracer):
+    """A Matte floor and sphere under a rectangular lamp facing down (a x b = -y)."""
+    scene = Scene(PinholeCamera((0.0, 2.0, 5.0), (0.0, 0.5, 0.0), (0.0, 1.0, 0.0), d=1.5))
+    scene.shapes.append(Plane((0.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.8, 0.8, 0.8), Matte()))
+    lamp = Rectangle((-0.5, 2.0, -0.5), (1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (1.0, 1.0, 1.0), Emissive(3.0))
+    scene.shapes.append(lamp)
+    scene.shapes.append(Sphere((0.0, 0.5, 0.0), 0.5, (0.2, 0.4, 0.8), Matte()))
+    scene.lights.append(AreaLight(lamp))
+    scene.tracer = AreaLighting() if tracer == "area_lighting" else PathTrace()
+    return scene
+
+
+def test_a_rectangle_samples_uniformly_with_pdf_one_over_its_area():
+    lamp = Rectangle((1.0, 2.0, 3.0), (0.0, 0.0, 2.0), (0.5, 0.0, 0.0), (1.0, 1.0, 1.0), Emissive(1.0))
+    assert lamp.area == 1.0 and lamp.pdf() == 1.0 and lamp.get_normal() == Float3(0.0, 1.0, 0.0)
+    rng = np.random.default_rng(3)
+    points = np.array([tuple(lamp.sample(u, v)) for u, v in rng.random((4000, 2))])
+    assert np.all(points[:, 1] == 2.0)
+    assert points[:, 0].min() >= 1.0 and points[:, 0].max() <= 1.5
+    assert points[:, 2].min() >= 3.0 and points[:, 2].max() <= 5.0
+    # uniform by area: the mean is the centre, each half holds half the points
+    assert np.abs(points.mean(axis=0) - (1.25, 2.0, 4.0)).max() < 0.03
+    assert abs(np.mean(points[:, 2] < 4.0) - 0.5) < 0.03
+
+
+@pytest.mark.parametrize("tracer", ["area_lighting", "path_trace"])
+def test_a_rectangle_area_light_on_every_path(path, tracer):
+    """The lamp lights the floor and the sphere on every path as in the lecture layer: float64
+    numba to the bit, float32 within 1/255."""
+    scene = rectangle_lamp_scene(tracer)
+    reference = render_on(PATHS[0], scene, 16, 4, seed=2)
+    assert reference.max() > 0.1   # the lamp is seen and lights what is below it
+    image = render_on(path, scene, 16, 4, seed=2)
+    if path[2] == "float64":
+        assert np.array_equal(image, reference)
+    else:
+        assert np.abs(image - reference).max() < 1 / 255

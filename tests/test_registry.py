@@ -53,7 +53,9 @@ def test_a_shape_kind_brings_its_numba_functions_and_wgsl_piece(kind):
         names = re.findall(r"(\w+)\s*:", m.group(1))
         assert len(names) == 2 + len(fields), names
     normal = getattr(module, "normal_" + kind.name).py_func
-    assert list(inspect.signature(normal).parameters) == ["position"] + fields
+    # a kind whose normal turns toward the ray takes its direction, as the class's hit_normal
+    assert list(inspect.signature(normal).parameters) == (["position"] + ["direction"] * kind.faces_ray + fields)
+    assert (kind.cls.hit_normal is not rtfgu.Shape.hit_normal) == kind.faces_ray
     assert kind.record in layout.RECORDS
     assert getattr(rtfgu, kind.record) is kind.cls
     init = inspect.signature(kind.cls.__init__).parameters

@@ -142,6 +142,36 @@ def test_checker_on_a_sphere_a_triangle_and_a_disk(path):
             path, k, ray_bounces[0].color)
 
 
+def test_checker_on_a_rectangle_a_box_and_an_open_cylinder(path):
+    """The rectangle's edge projections, the box's face frame and Suffern's CylindricalMap
+    pick the checker's square on every path: the points are inside squares, far from edges."""
+    from rtfgu import Box, OpenCylinder, Rectangle
+
+    red, blue = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0)
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes.append(Rectangle(Float3(30.0, 0.0, 0.0), Float3(4.0, 0.0, 0.0), Float3(0.0, 0.0, 4.0), Float3(0.0),
+                                  Material(cd=Checker(red, blue, size=0.5))))
+    scene.shapes.append(Box(Float3(40.0, 0.0, 0.0), Float3(44.0, 4.0, 4.0), Float3(0.0),
+                            Material(cd=Checker(red, blue, size=0.5))))
+    scene.shapes.append(OpenCylinder(-1.0, 1.0, 1.0, Float3(0.0), Material(cd=Checker(red, blue, size=0.25))))
+    rays = [((31.0, 5.0, 3.0), (0.0, -1.0, 0.0)),     # rectangle (u, v) = (1/4, 3/4): squares (0, 1)
+            ((30.5, 5.0, 0.5), (0.0, -1.0, 0.0)),     # (1/8, 1/8): squares (0, 0)
+            ((41.0, 9.0, 3.0), (0.0, -1.0, 0.0)),     # box face +y: (z, x) -> (3/4, 1/4): squares (1, 0)
+            ((49.0, 1.0, 0.5), (-1.0, 0.0, 0.0))]     # box face +x: (y, z) -> (1/4, 1/8): squares (0, 0)
+    want = [blue, red, blue, red]
+    # The cylinder at (phi, y): u = phi / 2 pi, v = (y - y0) / (y1 - y0).
+    for phi, y in ((1.0, 0.6), (4.0, -0.6)):
+        rays.append(((5 * math.sin(phi), y, 5 * math.cos(phi)), (-math.sin(phi), 0.0, -math.cos(phi))))
+        cells = (phi / (2 * math.pi) / 0.25, (y + 1.0) / 2.0 / 0.25)
+        assert all(0.01 < c - math.floor(c) < 0.99 for c in cells)   # far from an edge
+        want.append(red if (math.floor(cells[0]) + math.floor(cells[1])) % 2 == 0 else blue)
+    assert red in want[4:] and blue in want[4:]
+    bounces = path.trace(scene, [(o, d, 0.0, math.inf) for o, d in rays])
+    for k, (ray_bounces, colour) in enumerate(zip(bounces, want)):
+        assert ray_bounces[0].color == (colour.x, colour.y, colour.z), "%s ray %d: %s" % (
+            path, k, ray_bounces[0].color)
+
+
 def test_a_textured_diffuse_surface_is_lit_in_the_textures_colour(path):
     """Shading multiplies the texture's colour, not the shape's, on every path."""
     from rtfgu.lights import PointLight

@@ -175,3 +175,110 @@ def disk(o, d, tmin, tmax, center, normal, radius):
     to_hit = sub(p, q3(center))
     r = Q(float(radius))
     return t if dot(to_hit, to_hit) <= r * r else MISS
+
+
+# --- rectangle ------------------------------------------------------------------------
+
+def rectangle(o, d, tmin, tmax, p0, a, b):
+    """Suffern's Rectangle::hit in rationals: the plane through p0 with normal a x b, then
+    0 <= (p - p0) . a <= |a|^2 and 0 <= (p - p0) . b <= |b|^2 at p = o + t d; the edges
+    belong to the rectangle (Suffern ch. 19; rtfgu.shapes.rectangle)."""
+    if not (finite(*o, *d, *p0, *a, *b, tmin) and not math.isnan(tmax)):
+        return MISS
+    aq, bq = q3(a), q3(b)
+    n = cross(aq, bq)
+    den = dot(q3(d), n)
+    if den == 0:
+        return MISS
+    t = dot(sub(q3(p0), q3(o)), n) / den
+    if not _in_range_rational(t, tmin, tmax):
+        return MISS
+    to_hit = sub(tuple(oi + t * di for oi, di in zip(q3(o), q3(d))), q3(p0))
+    if 0 <= dot(to_hit, aq) <= dot(aq, aq) and 0 <= dot(to_hit, bq) <= dot(bq, bq):
+        return dd_from_fraction(t)
+    return MISS
+
+
+# --- box ------------------------------------------------------------------------------
+
+def box_t(o, d, p0, p1, tmin):
+    """The slab test on rationals (3-tuples of Fractions; ``tmin`` a Fraction): t0 if
+    t0 >= tmin, else t1, where t0 < t1; None when the ray misses the box."""
+    t0 = t1 = None
+    for axis in range(3):
+        if d[axis] == 0:
+            if not p0[axis] <= o[axis] <= p1[axis]:
+                return None
+            continue
+        near, far = sorted(((p0[axis] - o[axis]) / d[axis], (p1[axis] - o[axis]) / d[axis]))
+        t0 = near if t0 is None else max(t0, near)
+        t1 = far if t1 is None else min(t1, far)
+    if t0 is None or not t0 < t1:
+        return None
+    return t0 if t0 >= tmin else t1
+
+
+def box(o, d, tmin, tmax, p0, p1):
+    """Suffern's slab test in rationals: the largest entering t0 and the smallest leaving t1,
+    a hit when t0 < t1, at t0 or (from inside) at t1; an axis the ray does not move along
+    bounds nothing when o is within its slab, and misses otherwise (rtfgu.shapes.box)."""
+    if not (finite(*o, *d, *p0, *p1, tmin) and not math.isnan(tmax)):
+        return MISS
+    t = box_t(q3(o), q3(d), q3(p0), q3(p1), Q(float(tmin)))
+    return dd_from_fraction(t) if t is not None and _in_range_rational(t, tmin, tmax) else MISS
+
+
+# --- open cylinder --------------------------------------------------------------------
+
+def _sqrt_cmp(sign: int, disc: Q, x: Q) -> int:
+    """The sign of sign * sqrt(disc) - x, decided exactly."""
+    if sign > 0:
+        if x < 0:
+            return 1
+        return (disc > x * x) - (disc < x * x)
+    if x > 0:
+        return -1
+    return (disc < x * x) - (disc > x * x)
+
+
+def open_cylinder(o, d, tmin, tmax, y0, y1, radius):
+    """Suffern's OpenCylinder::hit decided in rationals: the roots t = (-b' -+ sqrt(disc)) / a
+    of a t^2 + 2 b' t + c = 0 in x and z (a = d_x^2 + d_z^2, b' = o_x d_x + o_z d_z, disc =
+    b'^2 - a c), the near one first, each when t is in [tmin, tmax) and o_y + t d_y in
+    [y0, y1]; every comparison is one of sqrt(disc) with a rational. A ray parallel to the
+    axis misses (rtfgu.shapes.open_cylinder)."""
+    if not (finite(*o, *d, y0, y1, radius, tmin) and not math.isnan(tmax)):
+        return MISS
+    oq, dq = q3(o), q3(d)
+    r, lo, hi = Q(float(radius)), Q(float(y0)), Q(float(y1))
+    a = dq[0] * dq[0] + dq[2] * dq[2]
+    if a == 0:
+        return MISS
+    b = oq[0] * dq[0] + oq[2] * dq[2]
+    c = oq[0] * oq[0] + oq[2] * oq[2] - r * r
+    disc = b * b - a * c
+    if disc < 0:
+        return MISS
+
+    def t_at_least(sign, x):     # t >= x  <=>  sign sqrt(disc) >= a x + b
+        return _sqrt_cmp(sign, disc, a * x + b) >= 0
+
+    def t_at_most(sign, x):
+        return _sqrt_cmp(sign, disc, a * x + b) <= 0
+
+    for sign in (-1, 1):
+        if not t_at_least(sign, Q(float(tmin))):
+            continue
+        if not math.isinf(tmax) and not _sqrt_cmp(sign, disc, a * Q(float(tmax)) + b) < 0:
+            continue
+        # y0 <= o_y + t d_y <= y1
+        if dq[1] == 0:
+            height_ok = lo <= oq[1] <= hi
+        elif dq[1] > 0:
+            height_ok = t_at_least(sign, (lo - oq[1]) / dq[1]) and t_at_most(sign, (hi - oq[1]) / dq[1])
+        else:
+            height_ok = t_at_most(sign, (lo - oq[1]) / dq[1]) and t_at_least(sign, (hi - oq[1]) / dq[1])
+        if height_ok:
+            with mpmath.workdps(DIGITS):
+                return dd_from_mpf((-_mpf(b) + sign * mpmath.sqrt(_mpf(disc))) / _mpf(a))
+    return MISS

@@ -407,6 +407,132 @@ def _disk_grazing_edge(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, nrm, r])])
 
 
+# --- rectangles (Suffern ch. 19) ------------------------------------------------------
+
+def _axis_rectangles(rng, n):
+    """Axis-aligned rectangles with dyadic corners and edges (exact in either precision):
+    p0, a along axis + 1, b along axis + 2, normal along ``axis``."""
+    rows = np.arange(n)
+    axis = rng.integers(0, 3, n)
+    p0 = rng.integers(-8, 9, (n, 3)) * 0.5
+    a = np.zeros((n, 3))
+    b = np.zeros((n, 3))
+    a[rows, (axis + 1) % 3] = rng.integers(1, 9, n) * 0.25 * rng.choice([-1.0, 1.0], n)
+    b[rows, (axis + 2) % 3] = rng.integers(1, 9, n) * 0.25 * rng.choice([-1.0, 1.0], n)
+    return rows, axis, p0, a, b
+
+
+@family("rectangle_edge", "rectangle", "rectangle",
+        "rays through an edge or a corner: exactly (even rows) or 1e-8..1e-5 of an edge off it")
+def _rectangle_edge(rng, n):
+    rows, axis, p0, a, b = _axis_rectangles(rng, n)
+    # a point of an edge or a corner: s, t in {0, 1} for one of them at least
+    s = rng.choice([0.0, 0.25, 0.5, 1.0], n)
+    t = np.where(np.isin(s, (0.0, 1.0)), rng.choice([0.0, 0.5, 1.0], n), rng.choice([0.0, 1.0], n))
+    odd = rows % 2 == 1
+    nudge = np.where(odd, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -5, n), 0.0)
+    target = p0 + a * (s + nudge)[:, None] + b * (t + nudge)[:, None]
+    o = target + rng.integers(-6, 7, (n, 3))
+    o[rows, axis] = target[rows, axis] + rng.choice([-1.0, 1.0], n) * rng.integers(1, 7, n)
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([p0, a, b])])
+
+
+@family("rectangle_nearly_parallel", "rectangle", "rectangle",
+        "angle to the rectangle's plane 1e-8..1e-1, aimed within -0.3..1.3 of its edges")
+def _rectangle_nearly_parallel(rng, n):
+    p0 = rng.uniform(-2, 2, (n, 3))
+    nrm = _random_unit(rng, n)
+    ua = _perpendicular(rng, nrm)
+    ub = np.cross(nrm, ua)
+    a = ua * rng.uniform(0.5, 2.0, n)[:, None]
+    b = ub * rng.uniform(0.5, 2.0, n)[:, None]
+    target = p0 + a * rng.uniform(-0.3, 1.3, n)[:, None] + b * rng.uniform(-0.3, 1.3, n)[:, None]
+    d = _nearly_in_plane(rng, nrm, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -1, n))
+    o = target - d * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([p0, a, b])])
+
+
+# --- boxes (Suffern ch. 19) -----------------------------------------------------------
+
+def _boxes(rng, n):
+    """Boxes with dyadic corners (exact in either precision)."""
+    p0 = rng.integers(-8, 9, (n, 3)) * 0.5
+    return p0, p0 + rng.integers(1, 9, (n, 3)) * 0.25
+
+
+@family("box_edge", "box", "box",
+        "rays through an edge or a corner: exactly (even rows) or 1e-8..1e-5 of the size off it")
+def _box_edge(rng, n):
+    p0, p1 = _boxes(rng, n)
+    # a point with two (an edge) or three (a corner) coordinates on the box's bounds
+    s = rng.choice([0.0, 1.0], (n, 3))
+    rows = np.arange(n)
+    free = rng.integers(0, 3, n)
+    s[rows, free] = np.where(rng.random(n) < 0.5, rng.uniform(0.1, 0.9, n), s[rows, free])
+    odd = rows % 2 == 1
+    s = s + np.where(odd, 1.0, 0.0)[:, None] * rng.choice([-1.0, 1.0], (n, 3)) * _log_uniform(rng, -8, -5, n)[:, None]
+    target = p0 + (p1 - p0) * s
+    o = target + _random_unit(rng, n) * rng.uniform(1, 6, n)[:, None]
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([p0, p1])])
+
+
+@family("box_parallel", "box", "box",
+        "rays parallel to a face (a direction component exactly 0) in its plane, or nearly parallel "
+        "(1e-8..1e-1)")
+def _box_parallel(rng, n):
+    p0, p1 = _boxes(rng, n)
+    rows = np.arange(n)
+    axis = rng.integers(0, 3, n)
+    target = p0 + (p1 - p0) * rng.uniform(-0.2, 1.2, (n, 3))
+    # the target on the face plane of ``axis`` (p0's or p1's), or just off it
+    on = np.where(rng.random(n) < 0.5, p0[rows, axis], p1[rows, axis])
+    target[rows, axis] = on
+    d = rng.normal(size=(n, 3))
+    odd = rows % 2 == 1
+    d[rows, axis] = np.where(odd, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -1, n), 0.0)
+    d = _unit(d)
+    o = target - d * rng.uniform(1, 5, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([p0, p1])])
+
+
+# --- open cylinders (Suffern ch. 19) --------------------------------------------------
+
+@family("open_cylinder_rim", "open_cylinder", "open_cylinder",
+        "rays through a rim: exactly (Pythagorean rim points, even rows) or 1e-8..1e-5 r off it, "
+        "from outside or through the open end")
+def _open_cylinder_rim(rng, n):
+    rows = np.arange(n)
+    scale = 2.0 ** rng.integers(-3, 2, n)
+    abc = _TRIPLES[rng.integers(0, len(_TRIPLES), n)] * scale[:, None]
+    r = abc[:, 2]
+    y0 = rng.integers(-8, 1, n) * 0.5
+    y1 = y0 + rng.integers(1, 9, n) * 0.5
+    target = np.column_stack([abc[:, 0] * rng.choice([-1.0, 1.0], n), np.where(rng.random(n) < 0.5, y0, y1),
+                              abc[:, 1] * rng.choice([-1.0, 1.0], n)])
+    odd = rows % 2 == 1
+    target[:, 1] += np.where(odd, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -5, n) * r, 0.0)
+    o = target + np.round(_random_unit(rng, n) * (r * rng.uniform(1, 4, n))[:, None] * 4) / 4
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([y0, y1, r])])
+
+
+@family("open_cylinder_grazing", "open_cylinder", "open_cylinder",
+        "rays in a plane of constant y at r (1 +- 2e-4) from the axis, 2..20 r away, within the "
+        "heights or on a rim")
+def _open_cylinder_grazing(rng, n):
+    r = rng.uniform(0.5, 2.0, n)
+    y0 = rng.uniform(-2, 0, n)
+    y1 = y0 + rng.uniform(0.5, 3, n)
+    phi = rng.uniform(0, 2 * np.pi, n)
+    radial = np.column_stack([np.cos(phi), np.zeros(n), np.sin(phi)])
+    along = np.column_stack([-np.sin(phi), np.zeros(n), np.cos(phi)])
+    impact = r * (1.0 + rng.uniform(-2e-4, 2e-4, n))
+    height = np.where(rng.random(n) < 0.25, y1, rng.uniform(y0, y1))
+    d = along + np.column_stack([np.zeros(n), rng.uniform(-1e-3, 1e-3, n), np.zeros(n)])
+    o = radial * impact[:, None] - along * (r * rng.uniform(2, 20, n))[:, None]
+    o[:, 1] = height
+    return dict(origins=o, directions=d, shapes=[np.column_stack([y0, y1, r])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
 @family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")

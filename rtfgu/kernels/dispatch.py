@@ -69,7 +69,7 @@ def _mesh_parts(k: int, kind, at: int) -> list:
                     "False",
                     "    return mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula)",
                     "Is anything the BVH holds hit in [tmin, tmax)?"),
-        _overloaded("normal_row_" + name, "vertices, faces, normals, row, position", "position",
+        _overloaded("normal_row_" + name, "vertices, faces, normals, row, position, direction", "position",
                     "    return normal_mesh(vertices, faces, normals, row, position)",
                     "The unit normal of face ``row`` at ``position``"),
         _overloaded("texcoord_row_" + name, "vertices, faces, row, position", "(position[0], position[0])",
@@ -208,23 +208,27 @@ def _texture_lookup(texture) -> str:
 
 
 def _normal(kind) -> str:
-    return _overloaded("normal_row_" + kind.name, "table, row, position", "position",
-                       "    return normal_%s(position, %s)" % (kind.name, _row_args(kind, "table", "row")),
-                       "The unit normal of row ``row`` of the %ss at ``position``" % kind.name)
+    # A kind whose normal turns toward the ray (ShapeKind.faces_ray) takes the direction too.
+    position = "position, direction" if kind.faces_ray else "position"
+    return _overloaded("normal_row_" + kind.name, "table, row, position, direction", "position",
+                       "    return normal_%s(%s, %s)" % (kind.name, position, _row_args(kind, "table", "row")),
+                       "The unit normal of row ``row`` of the %ss at ``position``, hit along ``direction``"
+                       % kind.name)
 
 
-def _by_kind(name, row_function, what, default, mesh_slots) -> str:
-    """``name(shapes, kind, row, position)``: ``row_function<kind>`` of the kind hit; a mesh
-    kind's function takes its ``mesh_slots`` (places in MESH_SLOTS) instead of a table."""
+def _by_kind(name, row_function, what, default, mesh_slots, extra="") -> str:
+    """``name(shapes, kind, row, position<extra>)``: ``row_function<kind>`` of the kind hit; a
+    mesh kind's function takes its ``mesh_slots`` (places in MESH_SLOTS) instead of a table."""
     at = slot_offsets()
     lines = []
     for k, kind in enumerate(SHAPES):
         arrays = ", ".join("shapes[%d]" % (at[kind.name] + m) for m in mesh_slots) if kind.bvh \
             else "shapes[%d]" % at[kind.name]
-        lines.append("    if kind == %d:\n        return %s%s(%s, row, position)" % (k, row_function, kind.name, arrays))
+        lines.append("    if kind == %d:\n        return %s%s(%s, row, position%s)"
+                     % (k, row_function, kind.name, arrays, extra))
     return "\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def %s(shapes, kind, row, position):" % name,
+        "def %s(shapes, kind, row, position%s):" % (name, extra),
         '    """%s of row ``row`` of shape kind ``kind``."""' % what] + lines + ["    return " + default])
 
 
@@ -381,7 +385,8 @@ def source() -> str:
         "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
         '    """A shadow ray: is any shape hit in [tmin, tmax)? (Light.in_shadow, rtfgu/lights/light.py)"""']
         + shadow_calls + ["    return False"]))
-    parts.append(_by_kind("shape_normal", "normal_row_", "normal_at(position)", "position", (0, 1, 2)))
+    parts.append(_by_kind("shape_normal", "normal_row_", "hit_normal(position, direction)", "position",
+                          (0, 1, 2), extra=", direction"))
     parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
                           "position[0], position[0]", (0, 1)))
     # The colour of the surface hit: the material's, or its texture's at the hit.

@@ -1,6 +1,7 @@
-# release: solves a03
+# release: solves a03 a08
 """Ray-shape intersection (lecture 01 "Ray-Plane/Ray-Sphere Intersection", 02562
-"Ray-triangle intersection", Suffern ch. 19 "Disks"), operation for operation as in
+"Ray-triangle intersection", Suffern ch. 19 "Disks", "Rectangles", "Axis-aligned boxes",
+"Open cylinders"), operation for operation as in
 rtfgu/shapes/.
 
 For every shape kind of rtfgu.registry: ``intersect_<kind>(origin, direction, tmin, tmax,
@@ -20,10 +21,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from ..layout import SPHERE_CENTER, SPHERE_RADIUS
-from .float3 import add, cross, dot, lit, normalize, row3, scale, sub
+from .float3 import add, cross, dot, lit, neg, normalize, row3, scale, sub
 
 # Formula ids of a render (rtfgu.kernels.dispatch.FORMULAS): the slide's and the robust one.
 SPHERE_SLIDE = 0
@@ -162,6 +164,97 @@ def intersect_disk(origin, direction, tmin, tmax, center, normal, radius):
 
 
 @njit(cache=True, error_model="numpy")
+def intersect_rectangle(origin, direction, tmin, tmax, p0, a, b, normal):
+    # Suffern's Rectangle::hit: the plane through p0 (intersect_plane), then
+    # 0 <= d . a <= |a|^2 and 0 <= d . b <= |b|^2 for d = o + t w - p0.
+    t = intersect_plane(origin, direction, tmin, tmax, p0, normal)
+    if t == lit(math.inf, t):
+        return t
+    d = sub(add(origin, scale(direction, t)), p0)
+    zero = lit(0, t)
+    ddota = dot(d, a)
+    if ddota < zero or ddota > dot(a, a):
+        return lit(math.inf, t)
+    ddotb = dot(d, b)
+    if ddotb < zero or ddotb > dot(b, b):
+        return lit(math.inf, t)
+    return t
+
+
+@njit(cache=True, error_model="numpy")
+def intersect_box(origin, direction, tmin, tmax, p0, p1):
+    # Suffern's Box::hit, the slab test: t0 the largest entering t, t1 the smallest leaving
+    # t, a hit when t0 < t1; an axis the ray does not move along bounds nothing when o is
+    # within the slab (rtfgu.shapes.box).
+    t0 = lit(-math.inf, tmin)
+    t1 = lit(math.inf, tmin)
+    zero = lit(0, tmin)
+    for axis in range(3):
+        o = origin[axis]
+        d = direction[axis]
+        lo = p0[axis]
+        hi = p1[axis]
+        if d == zero:
+            if o < lo or o > hi:
+                return lit(math.inf, tmin)
+            continue
+        a = lit(1, d) / d
+        if a >= zero:
+            t_near = (lo - o) * a
+            t_far = (hi - o) * a
+        else:
+            t_near = (hi - o) * a
+            t_far = (lo - o) * a
+        if t_near > t0:
+            t0 = t_near
+        if t_far < t1:
+            t1 = t_far
+    if not t0 < t1:
+        return lit(math.inf, tmin)
+    t = t0 if t0 >= tmin else t1
+    if t >= tmin and t <= tmax:
+        return t
+    return lit(math.inf, tmin)
+
+
+@njit(cache=True, error_model="numpy")
+def box_face(position, p0, p1):
+    """The face (0-5: -x, -y, -z, +x, +y, +z) nearest to the point, the first at equal distances."""
+    face = 0
+    best = abs(position[0] - p0[0])
+    for k in range(1, 6):
+        distance = abs(position[k % 3] - (p0[k] if k < 3 else p1[k - 3]))
+        if distance < best:
+            face = k
+            best = distance
+    return face
+
+
+@njit(cache=True, error_model="numpy")
+def intersect_open_cylinder(origin, direction, tmin, tmax, y0, y1, radius):
+    # Suffern's OpenCylinder::hit: the ray projected onto the xz plane meets the sphere of
+    # radius r about the origin (intersect_sphere: the same quadratic) where the ray meets the
+    # infinite cylinder; the near root, then the far one, counts when o_y + t d_y is within
+    # [y0, y1]. A ray parallel to the axis misses.
+    zero = lit(0, radius)
+    if direction[0] == zero and direction[2] == zero:
+        return lit(math.inf, radius)
+    flat_origin = (origin[0], zero, origin[2])
+    flat_direction = (direction[0], zero, direction[2])
+    center = (zero, zero, zero)
+    t = intersect_sphere(flat_origin, flat_direction, tmin, tmax, center, radius)
+    for _ in range(2):
+        if t == lit(math.inf, radius):
+            return t
+        y_hit = origin[1] + t * direction[1]
+        if y_hit >= y0 and y_hit <= y1:
+            return t
+        t = intersect_sphere(flat_origin, flat_direction, np.nextafter(t, lit(math.inf, radius)), tmax,
+                             center, radius)
+    return lit(math.inf, radius)
+
+
+@njit(cache=True, error_model="numpy")
 def normal_plane(position, point, normal):
     return normalize(normal)
 
@@ -179,3 +272,27 @@ def normal_sphere(position, center, radius):
 @njit(cache=True, error_model="numpy")
 def normal_disk(position, center, normal, radius):
     return normalize(normal)
+
+
+@njit(cache=True, error_model="numpy")
+def normal_rectangle(position, p0, a, b, normal):
+    return normal
+
+
+@njit(cache=True, error_model="numpy")
+def normal_box(position, p0, p1):
+    # Box.normal_at: the outward normal of the face nearest to the point.
+    face = box_face(position, p0, p1)
+    zero = lit(0, position[0])
+    sign = lit(-1, zero) if face < 3 else lit(1, zero)
+    axis = face % 3
+    return (sign if axis == 0 else zero, sign if axis == 1 else zero, sign if axis == 2 else zero)
+
+
+@njit(cache=True, error_model="numpy")
+def normal_open_cylinder(position, direction, y0, y1, radius):
+    # OpenCylinder.hit_normal: (x, 0, z) normalised, flipped toward the ray (-d . n < 0).
+    n = normalize((position[0], lit(0, radius), position[2]))
+    if dot(direction, n) > lit(0, radius):
+        return neg(n)
+    return n

@@ -22,6 +22,7 @@ AREA_V0 = offset("AreaLight", "v0")
 AREA_RADIUS = offset("AreaLight", "radius")
 AREA_E0 = offset("AreaLight", "e0")
 AREA_E1 = offset("AreaLight", "e1")
+AREA_RECTANGLE = offset("AreaLight", "rectangle")
 AREA_EMISSION = offset("AreaLight", "emission")
 AMBIENT_RADIANCE = offset("AmbientOccluder", "radiance")
 
@@ -54,7 +55,7 @@ def sample_directional(lights, j, pos):
 @njit(cache=True, error_model="numpy")
 def sample_area_light(lights, j, pos):
     """AreaLight.sample: area light j as a point light at its shape's centre (02562 worksheet
-    5), with the intensity it sends toward pos."""
+    5), with the intensity it sends toward pos; a rectangle's centre is p0 + (a + b) / 2."""
     v0 = row3(lights, j, AREA_V0)
     radius = lights[j, AREA_RADIUS]
     emission = row3(lights, j, AREA_EMISSION)
@@ -65,8 +66,13 @@ def sample_area_light(lights, j, pos):
     e0 = row3(lights, j, AREA_E0)
     e1 = row3(lights, j, AREA_E1)
     n = cross(e0, e1)
-    center = add(v0, div(add(e0, e1), lit(3.0, zero)))
-    L_i, w_i, dist = point_light(center, scale(emission, lit(0.5, zero) * length(n)), pos)
+    if lights[j, AREA_RECTANGLE] > zero:
+        center = add(v0, scale(add(e0, e1), lit(0.5, zero)))
+        area = length(e0) * length(e1)
+    else:
+        center = add(v0, div(add(e0, e1), lit(3.0, zero)))
+        area = lit(0.5, zero) * length(n)
+    L_i, w_i, dist = point_light(center, scale(emission, area), pos)
     cos_l = -dot(normalize(n), w_i)
     if zero > cos_l:
         cos_l = zero
@@ -95,11 +101,16 @@ def sample_area_light_area(lights, j, pos, normal, u, v):
     else:
         e0 = row3(lights, j, AREA_E0)
         e1 = row3(lights, j, AREA_E1)
-        su = math.sqrt(u)
-        point = add(v0, scale(add(scale(e0, v), scale(e1, one - v)), su))
         n = cross(e0, e1)
         n_l = normalize(n)
-        area = lit(0.5, zero) * length(n)
+        if lights[j, AREA_RECTANGLE] > zero:
+            # Rectangle.sample: p0 + u a + v b, area |a| |b| (Suffern ch. 18.6)
+            point = add(add(v0, scale(e0, u)), scale(e1, v))
+            area = length(e0) * length(e1)
+        else:
+            su = math.sqrt(u)
+            point = add(v0, scale(add(scale(e0, v), scale(e1, one - v)), su))
+            area = lit(0.5, zero) * length(n)
     to_light = sub(point, pos)
     dist = length(to_light)
     if not dist > zero:

@@ -96,7 +96,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
         position = add(origin, scale(direction, t))
         shader = shaders[idx]
         mat = materials[idx]
-        normal = shape_normal(shapes, kind, row, position)
+        normal = shape_normal(shapes, kind, row, position, direction)
         facing = dot(normal, direction)
         if sees_emission and facing < zero:
             result = add(result, mul(throughput, load3(mat, MAT_EMISSION)))

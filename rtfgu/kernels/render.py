@@ -264,7 +264,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
             if shader == BASE_COLOR:
                 normal = position  # base_color reads no normal: a flat-colour scene skips normal_at
             else:
-                normal = shape_normal(shapes, kind, row, position)
+                normal = shape_normal(shapes, kind, row, position, direction)
             mat = materials[idx]
             surface = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
             color, has_hit, further, shadow_rays = shade(

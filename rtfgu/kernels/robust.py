@@ -23,7 +23,7 @@ Float3 tuples, as in the rest of rtfgu.kernels.
 The batch evaluators take one shape per ray as a row of the lecture constructor's
 arguments (rtfgu.hardcases.kinds): sphere (center, radius), plane (point, normal),
 triangle (v0, v1, v2: the vertices themselves, as watertightness needs the same floats in
-every triangle that shares them), disk (center, normal, radius).
+every triangle that shares them), disk (center, normal, radius), rectangle (p0, a, b), box (p0, p1), open cylinder (y0, y1, radius).
 """
 from __future__ import annotations
 
@@ -32,8 +32,9 @@ import math
 import numpy as np
 from numba import njit
 
-from .float3 import cross, lit, lit_per_precision, row3, sub
-from .intersect import (intersect_disk, intersect_plane, intersect_sphere,
+from .float3 import cross, lit, lit_per_precision, normalize, row3, sub
+from .intersect import (intersect_box, intersect_disk, intersect_open_cylinder, intersect_plane,
+                        intersect_rectangle, intersect_sphere,
                         intersect_sphere_robust, intersect_triangle)
 
 
@@ -317,6 +318,24 @@ def disk_slide(o, d, tmin, tmax, shapes, i):
 
 
 @njit(cache=True, error_model="numpy")
+def rectangle_slide(o, d, tmin, tmax, shapes, i):
+    # The normal normalize(a x b) rounded in the rows' precision.
+    a = row3(shapes, i, 3)
+    b = row3(shapes, i, 6)
+    return intersect_rectangle(o, d, tmin, tmax, row3(shapes, i, 0), a, b, normalize(cross(a, b)))
+
+
+@njit(cache=True, error_model="numpy")
+def box_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_box(o, d, tmin, tmax, row3(shapes, i, 0), row3(shapes, i, 3))
+
+
+@njit(cache=True, error_model="numpy")
+def open_cylinder_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_open_cylinder(o, d, tmin, tmax, shapes[i, 0], shapes[i, 1], shapes[i, 2])
+
+
+@njit(cache=True, error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
     where ``finite`` says the input is not finite."""
@@ -367,5 +386,6 @@ ADAPTERS = {("sphere", "slide"): (sphere_slide, _any), ("sphere", "robust"): (sp
             ("plane", "slide"): (plane_slide, _any), ("plane", "robust"): (plane_robust_row, _any),
             ("triangle", "slide"): (triangle_slide, _any),
             ("triangle", "robust"): (triangle_robust_row, triangle_finite),
-            ("disk", "slide"): (disk_slide, _any)}
+            ("disk", "slide"): (disk_slide, _any), ("rectangle", "slide"): (rectangle_slide, _any),
+            ("box", "slide"): (box_slide, _any), ("open_cylinder", "slide"): (open_cylinder_slide, _any)}
 POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}

@@ -14,6 +14,7 @@ from numba import njit
 
 from ..layout import TEXTURE_ADDRESSES, TEXTURE_FILTERS, offset
 from .float3 import add, cross, dot, lit, normalize, scale, sub
+from .intersect import box_face
 
 IMAGE_WIDTH = offset("ImageTexture", "width")
 IMAGE_HEIGHT = offset("ImageTexture", "height")
@@ -47,6 +48,32 @@ def texcoord_plane(position, point, normal):
 @njit(cache=True, error_model="numpy")
 def texcoord_disk(position, center, normal, radius):
     return texcoord_plane(position, center, normal)
+
+
+@njit(cache=True, error_model="numpy")
+def texcoord_rectangle(position, p0, a, b, normal):
+    """Rectangle.texcoord: the projections onto a and b over |a|^2 and |b|^2."""
+    d = sub(position, p0)
+    return dot(d, a) / dot(a, a), dot(d, b) / dot(b, b)
+
+
+@njit(cache=True, error_model="numpy")
+def texcoord_box(position, p0, p1):
+    """Box.texcoord: the two other coordinates of the face hit, from p0, over the box's size."""
+    axis = box_face(position, p0, p1) % 3
+    i = (axis + 1) % 3
+    j = (axis + 2) % 3
+    return (position[i] - p0[i]) / (p1[i] - p0[i]), (position[j] - p0[j]) / (p1[j] - p0[j])
+
+
+@njit(cache=True, error_model="numpy")
+def texcoord_open_cylinder(position, y0, y1, radius):
+    """OpenCylinder.texcoord: Suffern's CylindricalMap."""
+    two_pi = lit(2.0 * math.pi, radius)
+    phi = math.atan2(position[0], position[2])
+    if phi < lit(0.0, radius):
+        phi += two_pi
+    return phi / two_pi, (position[1] - y0) / (y1 - y0)
 
 
 @njit(cache=True, error_model="numpy")

@@ -1,10 +1,10 @@
 """AreaLight: a shape that emits light (Suffern ch. 18, "Area Lights"; 02562 worksheets 5 and 7).
 
 An area light is one emitting shape that offers the book's ``sample(u, v)``, ``pdf`` and
-``get_normal`` (a ``Triangle``, a mesh's ``MeshTriangle`` or a ``Sphere``), whose material's
-emission L_e is its radiance; the shape stays in ``Scene.shapes``, where rays see it. It emits
-from its front: for a triangle the side (v1 - v0) x (v2 - v0) points to, for a sphere the
-outside.
+``get_normal`` (a ``Triangle``, a mesh's ``MeshTriangle``, a ``Rectangle`` or a ``Sphere``),
+whose material's emission L_e is its radiance; the shape stays in ``Scene.shapes``, where rays
+see it. It emits from its front: for a triangle the side (v1 - v0) x (v2 - v0) points to, for
+a rectangle the side a x b points to (Suffern ch. 18.6), for a sphere the outside.
 
 How it is asked depends on the tracer (``Tracer.samples_area_lights``):
 
@@ -16,15 +16,17 @@ How it is asked depends on the tracer (``Tracer.samples_area_lights``):
       L G / pdf = L_e A cos(theta_l) / |p' - x|^2.
 
 * The ray-cast tracers (RayCast, Whitted) get 02562 worksheet 5's approximation: the light as
-  a point light at the shape's centre. A triangle of area A sends I = L_e A cos(theta_l)
-  toward x, theta_l the angle between its normal and the way to x; a sphere of radius r sends
+  a point light at the shape's centre. A triangle or a rectangle of area A sends
+  I = L_e A cos(theta_l) toward x, theta_l the angle between its normal and the way to x
+  (the centre of a triangle is v0 + (e0 + e1) / 3, of a rectangle p0 + (a + b) / 2); a sphere of radius r sends
   L_e pi r^2 every way, and the shadow ray stops at its surface (distance |c - x| - r).
 
 Like the book's, the light keeps the point it drew last (``sample_point``, ``light_normal``)
 for the ``L``, ``G`` and ``pdf`` that follow ``get_direction``.
 
-The layout row (rtfgu.registry): [v0, radius], [e0, 0], [e1, 0], [emission, 0]; a sphere's
-v0 is its centre and its radius > 0, a triangle's radius is 0.
+The layout row (rtfgu.registry): [v0, radius], [e0, rectangle], [e1, 0], [emission, 0]; a
+sphere's v0 is its centre and its radius > 0, a triangle's and a rectangle's radius is 0; a
+rectangle's v0, e0, e1 are its p0, a, b and ``rectangle`` is 1 (0 for the others).
 """
 from __future__ import annotations
 
@@ -38,9 +40,11 @@ from .point_light import PointLight
 class AreaLight(Light):
     def __init__(self, shape):
         from ..shapes.mesh import MeshTriangle
+        from ..shapes.rectangle import Rectangle
         from ..shapes.sphere import Sphere
         from ..shapes.triangle import Triangle
 
+        self.rectangle = 0.0
         if isinstance(shape, Sphere):
             self.v0, self.radius = shape.center, shape.radius
             self.e0 = self.e1 = Float3(0.0)
@@ -49,8 +53,12 @@ class AreaLight(Light):
             triangle = shape if isinstance(shape, Triangle) else shape.triangle
             self.v0, self.e0, self.e1, self.radius = triangle.v0, triangle.e0, triangle.e1, 0.0
             self.geometry = triangle
+        elif isinstance(shape, Rectangle):
+            self.v0, self.e0, self.e1, self.radius = shape.p0, shape.a, shape.b, 0.0
+            self.rectangle = 1.0
+            self.geometry = shape
         else:
-            raise ValueError("AreaLight.shape must be a Triangle, a mesh triangle or a Sphere, got %s"
+            raise ValueError("AreaLight.shape must be a Triangle, a mesh triangle, a Rectangle or a Sphere, got %s"
                              % type(shape).__name__)
         self.area = self.geometry.area
         emission = shape.material.emission
@@ -74,6 +82,8 @@ class AreaLight(Light):
         """Worksheet 5's point light: at the centre, with the intensity toward the front."""
         if self.is_sphere:
             return PointLight(self.v0, self.emission * (math.pi * self.radius * self.radius))
+        if self.rectangle:
+            return PointLight(self.v0 + (self.e0 + self.e1) * 0.5, self.emission * self.area)
         return PointLight(self.v0 + (self.e0 + self.e1) / 3.0, self.emission * self.area)
 
     def get_direction(self, sr) -> Float3:

@@ -4,6 +4,12 @@
 tilted coins, with a Phong sphere that casts its shadow across a disk's rim and a mirror
 disk that shows the others, lit by one point light.
 
+``suffern_19_objects``: Suffern ch. 19's new objects together, as the chapter's renderings
+show them: an open cylinder seen from above, so that its inside shows through the open top
+(lit where the outside is in shadow, its normal turned toward the ray), two axis-aligned
+boxes, a rectangular floor and a rectangular mirror standing behind them, lit by one point
+light and traced by Whitted.
+
 ``suffern_17_occlusion_regular`` and ``suffern_17_occlusion_multi_jittered``: Suffern ch.
 17's comparison of samplers for an AmbientOccluder's directions (set_sampler): the same 16
 directions at every point (Regular) band the shadow under the sphere; multi-jittered sets,
@@ -29,7 +35,10 @@ from ..sampling.regular import Regular
 from ..sampling.sampler import sampler_of
 from ..tracers import PathTrace, Whitted
 from ..scene import Scene
+from ..shapes.box import Box
 from ..shapes.disk import Disk
+from ..shapes.open_cylinder import OpenCylinder
+from ..shapes.rectangle import Rectangle
 from ..shapes.sphere import Sphere
 from .registry import homework
 
@@ -49,6 +58,27 @@ def suffern_disks() -> Scene:
     scene.shapes.append(Sphere(Float3(-0.2, 0.45, 0.6), 0.45, Float3(0.1, 0.3, 0.8),
                                Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
     scene.lights.append(PointLight(Float3(2.0, 4.0, 3.0), Float3(8 * math.pi, 8 * math.pi, 8 * math.pi)))
+    return scene
+
+
+@homework(512, 512)
+def suffern_19_objects() -> Scene:
+    camera = PinholeCamera(Float3(0.6, 3.6, 4.6), Float3(0.0, 0.4, -0.3), Float3(0.0, 1.0, 0.0), d=1.5)
+    scene = Scene(camera)
+    scene.background = Float3(0.1, 0.3, 0.6)
+    # The floor: p0, a, b with a x b = +y.
+    scene.shapes.append(Rectangle(Float3(-3.0, 0.0, -3.0), Float3(0.0, 0.0, 6.0), Float3(6.0, 0.0, 0.0),
+                                  Float3(0.8, 0.8, 0.75), Matte()))
+    # A mirror standing at the back, facing +z.
+    scene.shapes.append(Rectangle(Float3(-2.2, 0.0, -2.4), Float3(4.4, 0.0, 0.0), Float3(0.0, 1.6, 0.0),
+                                  Float3(0.0, 0.0, 0.0), Reflective()))
+    # The open cylinder about the y axis: its inside shows through the open top.
+    scene.shapes.append(OpenCylinder(0.0, 1.1, 0.6, Float3(0.9, 0.5, 0.1), Matte()))
+    scene.shapes.append(Box(Float3(1.0, 0.0, -1.6), Float3(1.9, 0.9, -0.7), Float3(0.1, 0.3, 0.8),
+                            Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
+    scene.shapes.append(Box(Float3(-2.0, 0.0, 0.3), Float3(-1.2, 0.45, 1.1), Float3(0.2, 0.6, 0.2), Matte()))
+    scene.lights.append(PointLight(Float3(-2.0, 5.0, 3.0), Float3(10 * math.pi, 10 * math.pi, 10 * math.pi)))
+    scene.tracer = Whitted()
     return scene
 
 

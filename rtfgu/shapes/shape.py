@@ -31,6 +31,12 @@ class Shape(ABC):
     def normal_at(self, position: Float3) -> Float3:
         """The unit geometric normal at a point on the surface."""
 
+    def hit_normal(self, position: Float3, direction: Float3) -> Float3:
+        """The normal a hit by a ray along ``direction`` records (Scene.intersect): the
+        geometric ``normal_at``. A shape whose book's ``hit`` turns the normal toward the
+        ray (Suffern's OpenCylinder, seen from inside and out) overrides it."""
+        return self.normal_at(position)
+
     def bounds(self):
         """The shape's axis-aligned bounding box (rtfgu.accelerators.BBox), or None for a
         shape without one (a plane): what a BVH holds."""

@@ -1,7 +1,8 @@
 // release: solves a03
 // The hard-case program (rtfgu/hardcases/wgsl_path.py, run by rtfgu/wgsl/harness.py): one
 // invocation per ray, against the shape in the ray's row. Features: the shape kind
-// (sphere, plane, triangle, disk), the formula (slide, robust), and spawn (PBRT's offset
+// (sphere, plane, triangle, disk, rectangle, box,
+// open_cylinder), the formula (slide, robust), and spawn (PBRT's offset
 // origins of secondary rays instead of intersections). SHAPE_WIDTH is generated: the floats
 // of one row, the lecture constructor's arguments before the colour (rtfgu.hardcases.kinds).
 
@@ -61,6 +62,15 @@ fn hardcase_hit(r: Ray, hit: ptr<function, HitInfo>) -> bool
     // #endif
     // #if disk
     return intersect_disk(r, hit, arg3(0u), arg3(3u), arg1(6u));
+    // #endif
+    // #if rectangle
+    return intersect_rectangle(r, hit, arg3(0u), arg3(3u), arg3(6u), normalize(cross(arg3(3u), arg3(6u))));
+    // #endif
+    // #if box
+    return intersect_box(r, hit, arg3(0u), arg3(3u));
+    // #endif
+    // #if open_cylinder
+    return intersect_open_cylinder(r, hit, arg1(0u), arg1(1u), arg1(2u));
     // #endif
 }
 

@@ -43,6 +43,11 @@ fn sample_area_light_area(pos: vec3f, i: u32, u: f32, v: f32) -> Light
         normal = vec3f(s * cos(phi), s * sin(phi), z);
         point = light.v0 + normal * light.radius;
         area = 4.0 * PI * light.radius * light.radius;
+    } else if (light.rectangle > 0.0) {
+        // Rectangle.sample: p0 + u a + v b, area |a| |b| (Suffern ch. 18.6)
+        point = light.v0 + light.e0 * u + light.e1 * v;
+        normal = normalize(cross(light.e0, light.e1));
+        area = length(light.e0) * length(light.e1);
     } else {
         let n = cross(light.e0, light.e1);
         point = light.v0 + (light.e0 * v + light.e1 * (1.0 - v)) * sqrt(u);

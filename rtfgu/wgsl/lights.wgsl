@@ -35,8 +35,8 @@ fn sample_directional(pos: vec3f, i: u32) -> Light
 // #endif
 // #if area_light
 // An area light in the ray-cast loop (rtfgu/lights/area_light.py, AreaLight.sample): a point light at
-// its shape's centre; a triangle sends L_e A cos(theta_l), a sphere L_e pi r^2 and stops the
-// shadow ray at its surface.
+// its shape's centre; a triangle or a rectangle sends L_e A cos(theta_l), a sphere L_e pi r^2
+// and stops the shadow ray at its surface.
 fn sample_area_light(pos: vec3f, i: u32) -> Light
 {
     // #if area_lighting
@@ -50,8 +50,13 @@ fn sample_area_light(pos: vec3f, i: u32) -> Light
         return Light(sample.L_i, sample.w_i, sample.dist - light.radius);
     }
     let n = cross(light.e0, light.e1);
-    let center = light.v0 + (light.e0 + light.e1) / 3.0;
-    let sample = point_light(center, light.emission * (0.5 * length(n)), pos);
+    var center = light.v0 + (light.e0 + light.e1) / 3.0;
+    var area = 0.5 * length(n);
+    if (light.rectangle > 0.0) {
+        center = light.v0 + (light.e0 + light.e1) * 0.5;
+        area = length(light.e0) * length(light.e1);
+    }
+    let sample = point_light(center, light.emission * area, pos);
     let cos_l = max(-dot(normalize(n), sample.w_i), 0.0);
     return Light(sample.L_i * cos_l, sample.w_i, sample.dist);
     // #endif

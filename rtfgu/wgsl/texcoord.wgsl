@@ -1,6 +1,8 @@
 // Texture coordinates (u, v) of a point on each shape kind, as Shape.texcoord in the
-// lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap and
-// the triangle's barycentrics. shape_texcoord picks the function of the kind hit.
+// lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap, the
+// triangle's barycentrics, the rectangle's edge projections, the box's face frame and
+// Suffern's CylindricalMap. shape_texcoord picks the
+// function of the kind hit.
 // #if plane|disk
 fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
 {
@@ -19,6 +21,32 @@ fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
 fn texcoord_disk(p: vec3f, center: vec3f, normal: vec3f, radius: f32) -> vec2f
 {
     return texcoord_plane(p, center, normal);
+}
+// #endif
+// #if rectangle
+fn texcoord_rectangle(p: vec3f, p0: vec3f, a: vec3f, b: vec3f, normal: vec3f) -> vec2f
+{
+    let d = p - p0;
+    return vec2f(dot(d, a) / dot(a, a), dot(d, b) / dot(b, b));
+}
+// #endif
+// #if box
+fn texcoord_box(p: vec3f, p0: vec3f, p1: vec3f) -> vec2f
+{
+    let axis = box_face(p, p0, p1) % 3u;
+    let i = (axis + 1u) % 3u;
+    let j = (axis + 2u) % 3u;
+    return vec2f((p[i] - p0[i]) / (p1[i] - p0[i]), (p[j] - p0[j]) / (p1[j] - p0[j]));
+}
+// #endif
+// #if open_cylinder
+fn texcoord_open_cylinder(p: vec3f, y0: f32, y1: f32, radius: f32) -> vec2f
+{
+    var phi = atan2(p.x, p.z);
+    if (phi < 0.0) {
+        phi += 2.0 * PI;
+    }
+    return vec2f(phi / (2.0 * PI), (p.y - y0) / (y1 - y0));
 }
 // #endif
 // #if sphere
