@@ -1,8 +1,7 @@
 // Suffern's fish-eye camera (ch. 11.2, rtfgu/cameras/fish_eye.py): the image point's polar
 // coordinates r, alpha give the ray psi = r psi_max away from v, alpha around it from b1.
-// Outside the unit circle (r^2 > 1) the ray is blank: its interval [BLANK_TMIN,
-// BLANK_TMAX) is empty, so it
-// hits nothing and the pixel is what a ray leaving the scene sees (the background).
+// Outside the unit circle (r^2 > 1) the ray is blank: its interval [BLANK_TMIN, BLANK_TMAX)
+// is empty, so it hits nothing and the pixel is what a ray leaving the scene sees.
 fn get_camera_ray(sx: f32, sy: f32) -> Ray
 {
     let r_squared = sx * sx + sy * sy;
