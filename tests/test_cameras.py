@@ -361,3 +361,14 @@ def test_pixels_a_camera_sees_nothing_through_show_the_background(path, name):
     seen = [(height // 2, width // 2)] if name == "fish_eye" else [(height - 1, 7), (height - 1, 11)]
     for row, col in seen:
         assert not np.allclose(image[row, col], [0.1, 0.3, 0.6], atol=0.01), (path, row, col)
+
+
+@pytest.mark.parametrize("name", sorted(CAMERAS))
+def test_a_scene_compiles_only_its_own_camera(name):
+    """The WGSL program holds the scene's camera piece and no other camera's."""
+    from rtfgu.layout import compile_scene
+    from rtfgu.wgsl.assemble import pieces
+
+    features = compile_scene(_stage(CAMERAS[name][0]())).features
+    cameras = [piece for piece, _ in pieces(features) if piece.startswith("camera_")]
+    assert cameras == ["camera_%s.wgsl" % name]
