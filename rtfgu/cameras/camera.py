@@ -31,7 +31,8 @@ def blank_ray(origin: Float3, direction: Float3) -> Ray:
 
 
 def look_at_basis(eye, lookat, up, owner: str):
-    """(eye, v, b1, b2) of a camera at ``eye`` looking at ``lookat`` (02562 worksheet 1):
+    """(eye, lookat, up, v, b1, b2) of a camera at ``eye`` looking at ``lookat``, the first
+    three checked Float3s (02562 worksheet 1):
     v = normalize(lookat - eye) the view direction, b1 = normalize(v x up) the image
     plane's right, b2 = b1 x v its up. Suffern's (u, v, w) (ch. 9, compute_uvw) are
     (b1, b2, -v). Errors name ``owner``'s field."""
