@@ -16,7 +16,7 @@ from .ray import RAY_EPSILON, SPAWN_EPSILON, Ray
 from .hit_info import HitInfo
 from .renderer import render, render_passes, trace
 from .notebook import show
-from .cameras import ThinLens
+from .cameras import FishEye, Spherical, StereoCamera, ThinLens
 from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Sampler
 from .scene import Scene
 from .shapes import Shape
@@ -34,7 +34,7 @@ globals().update({_kind.cls.__name__: _kind.cls for _kind in _SHAPES})
 
 __all__ = [
     "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON", "SPAWN_EPSILON", "HitInfo",
-    "Camera", "OrthographicCamera", "PinholeCamera", "ThinLens",
+    "Camera", "OrthographicCamera", "PinholeCamera", "ThinLens", "FishEye", "Spherical", "StereoCamera",
     "Shape", "Mesh", "load_obj", "load_ply", "load_mesh", "Scene",
     "BRDF", "Lambertian", "GlossySpecular", "PerfectSpecular",
     "BTDF", "PerfectTransmitter",

@@ -10,9 +10,12 @@ Every row is a whole number of 4-component vectors, so the same arrays upload to
 a new vec4; a scalar takes the unused fourth component of the vector declared just before
 it, or the next free column. For example
 
-    camera      (4, 4)   ORTHOGRAPHIC: [left, right, bottom, top], [hither, yon, tmin, 0], 0, 0
-                         PINHOLE:      [eye, d], [b1, aspect], [b2, 0], [v, 0]
-                         THIN_LENS:    [eye, d], [b1, aspect], [b2, lens_radius], [v, focal_distance]
+    camera      (5, 4)   ORTHOGRAPHIC: [left, right, bottom, top], [hither, yon, tmin, 0], 0, 0, 0
+                         PINHOLE:      [eye, d], [b1, aspect], [b2, 0], [v, 0], 0
+                         THIN_LENS:    [eye, d], [b1, aspect], [b2, lens_radius], [v, focal_distance], 0
+                         FISH_EYE:     [eye, psi_max], [b1, 0], [b2, 0], [v, 0], 0     (psi_max in radians)
+                         SPHERICAL:    [eye, lambda_max], [b1, psi_max], [b2, 0], [v, 0], 0   (radians)
+                         STEREO:       [eye, d], [b1, aspect], [b2, offset], [v, shift], [hres, pixel_gap, 0, 0]
     Plane       (P, 8)   [point, 0], [normal, 0]             (the normal as given, not normalised)
     Triangle    (T, 16)  [v0, 0], [e0, 0], [e1, 0], [n, 0]   (e0 = v1 - v0, e1 = v2 - v0, n = e0 x e1)
     Sphere      (S, 4)   [center, radius]
@@ -44,7 +47,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .cameras import OrthographicCamera, PinholeCamera, ThinLens
+from .cameras import FishEye, OrthographicCamera, PinholeCamera, Spherical, StereoCamera, ThinLens
 from .float3 import Float3
 from .ray import RAY_EPSILON
 from .registry import (LIGHTS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
@@ -87,8 +90,13 @@ CAMERA_FIELDS = {
     "PinholeCamera": (("eye", 3), ("d", 1), ("b1", 3), ("aspect", 1), ("b2", 3), ("v", 3)),
     "ThinLens": (("eye", 3), ("d", 1), ("b1", 3), ("aspect", 1), ("b2", 3), ("lens_radius", 1),
                  ("v", 3), ("focal_distance", 1)),
+    "FishEye": (("eye", 3), ("psi_max", 1), ("b1", 3), ("b2", 3), ("v", 3)),
+    "Spherical": (("eye", 3), ("lambda_max", 1), ("b1", 3), ("psi_max", 1), ("b2", 3), ("v", 3)),
+    "StereoCamera": (("eye", 3), ("d", 1), ("b1", 3), ("aspect", 1), ("b2", 3), ("offset", 1),
+                     ("v", 3), ("shift", 1), ("hres", 1), ("pixel_gap", 1)),
 }
-CAMERA_ROWS = 4
+# The rows of the widest camera record (StereoCamera's); every camera block has them.
+CAMERA_ROWS = 5
 CAMERA_WIDTH = CAMERA_ROWS * 4
 
 # Every row as a record: name -> (row width, ((field, components, column), ...)). The WGSL
@@ -123,9 +131,13 @@ MESH = SHAPE_IDS["mesh"]
 ORTHOGRAPHIC = 0
 PINHOLE = 1
 THIN_LENS = 2
-CAMERA_KINDS = {ORTHOGRAPHIC: "orthographic", PINHOLE: "pinhole", THIN_LENS: "thin_lens"}
+FISH_EYE = 3
+SPHERICAL = 4
+STEREO = 5
+CAMERA_KINDS = {ORTHOGRAPHIC: "orthographic", PINHOLE: "pinhole", THIN_LENS: "thin_lens",
+                FISH_EYE: "fish_eye", SPHERICAL: "spherical", STEREO: "stereo"}
 CAMERA_RECORDS = {ORTHOGRAPHIC: "OrthographicCamera", PINHOLE: "PinholeCamera",
-                  THIN_LENS: "ThinLens"}
+                  THIN_LENS: "ThinLens", FISH_EYE: "FishEye", SPHERICAL: "Spherical", STEREO: "StereoCamera"}
 
 # Columns the hand-written kernels read (the generated ones read RECORDS).
 MAT_COLOR = offset("Material", "color")
@@ -165,6 +177,13 @@ PINHOLE_B2 = offset("PinholeCamera", "b2")
 PINHOLE_V = offset("PinholeCamera", "v")
 LENS_RADIUS = offset("ThinLens", "lens_radius")
 FOCAL_DISTANCE = offset("ThinLens", "focal_distance")
+FISH_EYE_PSI_MAX = offset("FishEye", "psi_max")
+SPHERICAL_LAMBDA_MAX = offset("Spherical", "lambda_max")
+SPHERICAL_PSI_MAX = offset("Spherical", "psi_max")
+STEREO_OFFSET = offset("StereoCamera", "offset")
+STEREO_SHIFT = offset("StereoCamera", "shift")
+STEREO_HRES = offset("StereoCamera", "hres")
+STEREO_PIXEL_GAP = offset("StereoCamera", "pixel_gap")
 assert all(offset("ThinLens", f) == offset("PinholeCamera", f) for f in ("eye", "d", "b1", "aspect",
                                                                        "b2", "v"))
 
@@ -335,9 +354,19 @@ def compile_camera(camera) -> tuple[int, np.ndarray]:
         kind, record, source = THIN_LENS, "ThinLens", camera
     elif isinstance(camera, PinholeCamera):
         kind, record, source = PINHOLE, "PinholeCamera", camera
+    elif isinstance(camera, FishEye):
+        kind, record = FISH_EYE, "FishEye"
+        source = SimpleNamespace(eye=camera.eye, psi_max=camera.psi_max_radians, b1=camera.b1, b2=camera.b2,
+                                 v=camera.v)
+    elif isinstance(camera, Spherical):
+        kind, record = SPHERICAL, "Spherical"
+        source = SimpleNamespace(eye=camera.eye, lambda_max=camera.lambda_max_radians,
+                                 psi_max=camera.psi_max_radians, b1=camera.b1, b2=camera.b2, v=camera.v)
+    elif isinstance(camera, StereoCamera):
+        kind, record, source = STEREO, "StereoCamera", camera
     else:
-        raise ValueError("Scene.camera: the flat layout knows OrthographicCamera, PinholeCamera and ThinLens, "
-                         "got %s" % type(camera).__name__)
+        raise ValueError("Scene.camera: the flat layout knows %s, got %s"
+                         % (", ".join(CAMERA_RECORDS.values()), type(camera).__name__))
     return kind, np.array(pack_row(record, source), dtype=np.float64).reshape(CAMERA_ROWS, 4)
 
 

@@ -144,7 +144,8 @@ def test_cli_traces_the_paths_a_release_has(monkeypatch, capsys):
     assert all("not part of this release" in line or "adapter" in line for line in skipped), skipped
 
 
-@pytest.mark.parametrize("name", ["default_lambertian_shadows", "default_glossy_sphere", "suffern_disks"])
+@pytest.mark.parametrize("name", ["default_lambertian_shadows", "default_glossy_sphere", "suffern_disks",
+                                  "suffern_11_fisheye", "suffern_11_spherical", "suffern_12_stereo"])
 def test_the_bounces_add_up_to_the_rendered_pixel(path, name):
     """The debugger shows what the render computes: on every path the colours its bounces
     add, summed in the path's precision in bounce order as the path loop sums them, are the
@@ -165,3 +166,20 @@ def test_the_bounces_add_up_to_the_rendered_pixel(path, name):
             total = total + np.asarray(bounce.color, dtype=path.precision)
         assert np.array_equal(total, image[y, x]), "%s %s pixel (%d, %d): bounces add up to %r, render %r" % (
             path.label, name, x, y, total, image[y, x])
+
+
+@pytest.mark.parametrize("name, x, y", [("suffern_11_fisheye", 0, 0), ("suffern_11_fisheye", 399, 399),
+                                        ("suffern_12_stereo", 204, 100)])
+def test_a_pixel_the_camera_sees_nothing_through_is_one_miss(path, name, x, y):
+    """Outside a fish-eye's circle and in a stereo pair's gap the camera's ray is blank
+    (rtfgu.cameras.camera.blank_ray): on every path the debugger shows one ray that left
+    the scene, its colour the background, along the camera's view direction."""
+    import numpy as np
+
+    scene = get_scene(name)()
+    width, height = get_scene(name).size
+    bounces = trace_pixel(scene, x, y, width, height, path.backend, path.precision)
+    assert [b.shader for b in bounces] == ["background"], path
+    v = scene.camera.v
+    assert np.allclose(bounces[0].direction, (v.x, v.y, v.z), atol=1e-7), path
+    assert np.allclose(bounces[0].color, (0.1, 0.3, 0.6), atol=1e-7), path

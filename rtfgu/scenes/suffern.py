@@ -15,6 +15,10 @@ light and traced by Whitted.
 directions at every point (Regular) band the shadow under the sphere; multi-jittered sets,
 one picked per pixel, leave noise instead.
 
+``suffern_11_fisheye``, ``suffern_11_spherical`` and ``suffern_12_stereo``: the cameras of
+Suffern ch. 11 and 12 (a fish-eye and a spherical panoramic camera, a stereo pair) looking
+at a ring of spheres on the checkered floor.
+
 ``suffern_24_reflective`` and ``suffern_27_transparent``: the book's Reflective (a Phong
 surface that also mirrors, ch. 24) and Transparent (a Phong highlight, a reflected and a
 refracted ray, ch. 27) traced by Whitted, with the coefficients of the book's listings.
@@ -23,7 +27,7 @@ from __future__ import annotations
 
 import math
 
-from ..cameras import PinholeCamera
+from ..cameras import FishEye, PinholeCamera, Spherical, StereoCamera
 from ..float3 import Float3
 from ..lights import AmbientOccluder, PointLight
 from ..materials import Matte, Phong, Reflective, Transparent
@@ -155,3 +159,52 @@ def suffern_17_occlusion_multi_jittered() -> Scene:
     """Suffern ch. 17, the occluder's directions from a MultiJittered sampler: each pixel
     draws one of its sets, so the bands of the Regular image become noise."""
     return _occlusion(MultiJittered)
+
+
+# The spheres of the ch. 11-12 camera figures: a ring of radius 3 around the origin, each
+# 0.6 in radius and coloured by its place, and a larger white one at the centre.
+_RING = ((0.8, 0.15, 0.1), (0.85, 0.6, 0.1), (0.2, 0.6, 0.15), (0.1, 0.5, 0.7), (0.1, 0.3, 0.8),
+         (0.5, 0.2, 0.7))
+
+
+def _ring_of_spheres(eye: Float3, look_at: Float3) -> Scene:
+    scene = _book_stage(eye, look_at)
+    scene.shapes.append(Sphere(Float3(0.0, 1.0, 0.0), 1.0, Float3(0.85), Phong(cs=Float3(0.3), exp=30.0)))
+    for k, color in enumerate(_RING):
+        angle = 2 * math.pi * k / len(_RING)
+        scene.shapes.append(Sphere(Float3(3.0 * math.sin(angle), 0.6, 3.0 * math.cos(angle)), 0.6,
+                                   Float3(*color), Matte()))
+    return scene
+
+
+@homework(400, 400)
+def suffern_11_fisheye() -> Scene:
+    """Suffern ch. 11.2 (the fish-eye figures): a FishEye of psi_max 120 (a 240 degree field
+    of view) standing inside the ring of spheres, looking at the white one: the ring bends
+    into a circle, and the corners outside the image's circle show the background."""
+    scene = _ring_of_spheres(Float3(0.0, 1.2, 2.2), Float3(0.0, 0.8, 0.0))
+    scene.camera = FishEye(Float3(0.0, 1.2, 2.2), Float3(0.0, 0.8, 0.0), Float3(0.0, 1.0, 0.0), psi_max=120.0)
+    return scene
+
+
+@homework(512, 256)
+def suffern_11_spherical() -> Scene:
+    """Suffern ch. 11.3 (the panoramic figures): a Spherical camera with lambda_max 180 and
+    psi_max 90 in the middle of the ring: every direction at once, longitude across and
+    latitude up, so the floor fills the lower half and each sphere of the ring appears once."""
+    scene = _ring_of_spheres(Float3(0.0, 1.2, 1.6), Float3(0.0, 1.0, 0.0))
+    scene.camera = Spherical(Float3(0.0, 1.2, 1.6), Float3(0.0, 1.0, 0.0), Float3(0.0, 1.0, 0.0),
+                             lambda_max=180.0, psi_max=90.0)
+    return scene
+
+
+@homework(410, 200)
+def suffern_12_stereo() -> Scene:
+    """Suffern ch. 12 (the stereo pairs): a StereoCamera, two views of 200 x 200 pixels with a
+    10 pixel gap, beta 5 degrees, parallel viewing (the left eye's view on the left), looking
+    at the ring of spheres from outside it."""
+    eye, look_at = Float3(0.0, 2.6, 8.0), Float3(0.0, 0.8, 0.0)
+    scene = _ring_of_spheres(eye, look_at)
+    scene.camera = StereoCamera(eye, look_at, Float3(0.0, 1.0, 0.0), d=1.4, hres=200, vres=200, pixel_gap=10,
+                                beta=5.0, viewing="parallel")
+    return scene

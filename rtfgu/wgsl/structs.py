@@ -9,6 +9,7 @@ import numpy as np
 
 from .. import layout
 from ..materials.material import SHADER_NAMES
+from ..cameras.camera import BLANK_TMAX, BLANK_TMIN
 from ..ray import RAY_EPSILON
 from ..ray import SPAWN_EPSILON
 from ..tracers.whitted import MAX_DEPTH
@@ -101,6 +102,9 @@ def constants_wgsl() -> str:
         "// WGSL has no infinity literal: a fresh ray's tmax (rtfgu.layout.FAR).",
         "const FAR = %sf;" % _f32(layout.FAR),
         "const PI = %sf;" % _f32(math.pi),
+        "// A blank ray's empty interval (rtfgu.cameras.camera.blank_ray).",
+        "const BLANK_TMIN = %sf;" % _f32(BLANK_TMIN),
+        "const BLANK_TMAX = %sf;" % _f32(BLANK_TMAX),
     ]
     return "\n".join(lines)
 

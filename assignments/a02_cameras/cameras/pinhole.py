@@ -12,32 +12,20 @@ from __future__ import annotations
 
 import math
 
-from ..float3 import Float3, as_float3, cross, normalize
+from ..float3 import normalize
 from ..ray import Ray
-from .camera import Camera
+from .camera import Camera, look_at_basis
 
 
 class PinholeCamera(Camera):
     def __init__(self, eye, lookat, up, d: float = 1.0, aspect: float = 1.0):
-        self.eye = as_float3(eye, "PinholeCamera.eye")
-        self.lookat = as_float3(lookat, "PinholeCamera.lookat")
-        self.up = as_float3(up, "PinholeCamera.up")
+        self.eye, self.lookat, self.up, self.v, self.b1, self.b2 = look_at_basis(eye, lookat, up, "PinholeCamera")
         if not (math.isfinite(d) and d > 0):
             raise ValueError("PinholeCamera.d (camera constant) must be finite and > 0, got %r" % (d,))
         if not (math.isfinite(aspect) and aspect > 0):
             raise ValueError("PinholeCamera.aspect must be finite and > 0, got %r" % (aspect,))
         self.d = float(d)
         self.aspect = float(aspect)
-        view = self.lookat - self.eye
-        if view.length_squared() == 0.0:
-            raise ValueError("PinholeCamera.lookat must differ from eye (no view direction)")
-        self.v = normalize(view)
-        right = cross(self.v, self.up)
-        # up parallel to the view leaves no image plane; 1e-12 of |up|^2 is far below any real camera.
-        if right.length_squared() <= 1e-12 * self.up.length_squared():
-            raise ValueError("PinholeCamera.up must not be parallel to the view direction (lookat - eye)")
-        self.b1 = normalize(right)
-        self.b2 = cross(self.b1, self.v)
 
     def gen_ray(self, sx: float, sy: float) -> Ray:
         # TODO a02: PinholeCamera.gen_ray
