@@ -65,11 +65,11 @@ def test_the_traversal_test_is_hidden_and_its_reference_was_computed_from_the_so
     assert scenes == {"grid", "sheet", "random"}
     assert all(case["out"]["tested below a rejected box"] == [] and
                case["out"]["tested in a leaf whose box was not tested"] == [] for case in stored["cases"])
-    assert sum(c.weight for c in checks_for("a08")) == 16
+    assert sum(c.weight for c in checks_for("a08")) == 18
 
 
 def test_the_solution_keeps_full_marks_and_the_stubs_score_zero(mode, a08_solution, tmp_path):
-    assert a08_solution.score == a08_solution.max_score == 16
+    assert a08_solution.score == a08_solution.max_score == 18
     assert "the random scene" in _by_number(a08_solution)[TRAVERSAL.number].output
     write_files(student_files("a08"), tmp_path / "stubs")
     assert grade("a08", tmp_path / "stubs", None, time_limit=LIMIT).score == 0

@@ -105,6 +105,7 @@ PLANTED = [
     ("a08_first_hit_found", "a08", {"8.7": "stopped at the first hit found", "8.8": "earlier one",
                                     "8.11": "first hit found"}),
     ("a08_no_tie_rule", "a08", {"8.8": "math.nextafter", "8.11": "math.nextafter"}),
+    ("a08_box_no_inside", "a08", {"8.14": "this ray starts inside the box"}),
     ("a09_pdf_mismatch", "a09", {"9.3": "(n . w_i) / pi for cosine-weighted", "9.4": "biased", "9.5": "biased",
                                  "9.7": "pdf must be their density (n . w_i) / pi",
                                  "9.9": "(n . w_i) / pi for cosine-weighted"}),
@@ -149,14 +150,14 @@ def test_planted_bugs_lose_the_tests_that_should_catch_them_and_keep_the_rest(tm
 
 
 def test_the_a08_planted_bugs_score_less_than_full_marks_and_the_solution_full_marks(solved, tmp_path):
-    """The figures of a08 (16 points): every planted bug loses points, the solution none."""
+    """The figures of a08 (18 points): every planted bug loses points, the solution none."""
     _, _, solution = solved["a08_bvh"]
-    assert solution.score == solution.max_score == 16
+    assert solution.score == solution.max_score == 18
     scores = {}
     for name in ("a08_slab_no_swap", "a08_slab_ignores_tmax", "a08_first_hit_found", "a08_no_tie_rule"):
         result = grade("a08", make_submission(name, tmp_path / name), None, time_limit=LIMIT)
         scores[name] = result.score
-    assert all(0 < score < 16 for score in scores.values()), scores
+    assert all(0 < score < 18 for score in scores.values()), scores
     assert scores["a08_slab_no_swap"] < scores["a08_first_hit_found"] < scores["a08_slab_ignores_tmax"], scores
 
 

@@ -342,6 +342,13 @@ A08 = Assignment(
               "t_near = (p0[a] - o) / w, t_far = (p1[a] - o) / w, swapped when t_near > t_far (w < 0);\n"
               "t_far *= WIDEN; t0 = max(t0, t_near), t1 = min(t1, t_far); return math.inf as soon as t0 > t1.\n"
               "Return t0, where the ray enters the box. The ray is not changed."),
+        Block("shapes/box.py", "Box.intersect_p",
+              "Suffern's axis-aligned box (ch. 19.5, Box::hit): the slab test again, now for a shape. Start with\n"
+              "t0, t1 = -inf, inf; per axis, a ray parallel to the slab (d == 0) misses if its origin is outside\n"
+              "[p0, p1] on that axis and is not limited by it otherwise; else t_near and t_far are where it crosses\n"
+              "the slab's planes (swapped when the direction is negative); t0 is the largest t_near, t1 the\n"
+              "smallest t_far. The ray meets the box when t0 < t1: at t0, or at t1 if t0 < ray.tmin (it starts\n"
+              "inside). A hit needs tmin <= t < tmax; then set ray.tmax = t and return True."),
         Block("accelerators/bvh.py", "BVH.intersect",
               "best = -1; an empty BVH (self.root is None) returns it. Keep a stack, starting with [self.root].\n"
               "Pop a node; skip it when the ray misses its box (node.bbox.hit(ray) is math.inf) or enters it\n"

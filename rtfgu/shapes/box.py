@@ -41,6 +41,7 @@ class Box(Shape):
                                  "p1 = %r (axis %s)" % (self.p0, self.p1, "xyz"[axis]))
 
     def intersect_p(self, ray: Ray) -> bool:
+        ### BEGIN SOLUTION
         t0, t1 = -math.inf, math.inf
         for axis in range(3):
             o, d = ray.origin[axis], ray.direction[axis]
@@ -65,6 +66,7 @@ class Box(Shape):
             ray.tmax = t_hit
             return True
         return False
+        ### END SOLUTION
 
     def normal_at(self, position: Float3) -> Float3:
         """The outward normal of the face nearest to the point: the first of -x, -y, -z, +x,

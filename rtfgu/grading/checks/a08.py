@@ -149,6 +149,18 @@ def judge_traversal(check, got, want):
     return passed / len(scenes), lines
 
 
+def hint_box_shape(inputs, want, got):
+    """The box shape: from inside the ray leaves at t1; otherwise a03's interval hints."""
+    from .a03 import _interval_hint
+
+    o, p0, p1 = inputs["o"], (-1.0, -0.5, -2.0), (1.0, 0.5, -1.0)
+    inside = all(p0[a] < o[a] < p1[a] for a in range(3))
+    if inside and want["returned"] is True and got.get("returned") is not True:
+        return ("this ray starts inside the box: t0 < tmin, so it meets the box where it leaves, at t1 (the "
+                "smallest t_far)")
+    return _interval_hint(inputs, want, got)
+
+
 register("a08_bvh", [
     Check("BBox.hit: rays that enter the box, and where", 1, ("a08", "observe_box_enter"),
           hint=hint_box, known="slab", needs=BOX),
@@ -187,4 +199,6 @@ register("a08_bvh", [
     Check("BVH.intersect: the traversal is led by its box tests, at about the reference tree's cost", 2,
           ("a08_hidden", "observe_traversal"), visibility="hidden", judge=judge_traversal),
     # ### END HIDDEN
+    Check("Box.intersect_p: Suffern's box, hit from outside and from inside, misses and the interval", 2,
+          ("a08", "observe_box"), hint=hint_box_shape, needs=("shapes/box.py",)),
 ])

@@ -310,3 +310,28 @@ def observe_bvh_tie(rt):
         ((-2.0, 1.0, 3.0), (0.0, 0.0, -1.0), 0.0, INF, "down onto the first triangle only"),
         ((4.0, 0.5, 3.0), (0.0, 0.0, -1.0), 0.0, INF, "down onto the second triangle only"),
     ], VARIANTS)
+
+
+def observe_box(rt):
+    """Box.intersect_p (Suffern's box, ch. 19.5) on the rays of a03's shape tests: hits from
+    outside on each axis, from inside, misses, a ray parallel to a slab, and the interval."""
+    from .a03 import _hit_case
+
+    cases = Cases()
+    F = rt.Float3
+    p0, p1 = (-1.0, -0.5, -2.0), (1.0, 0.5, -1.0)
+
+    def make():
+        return importlib.import_module(rt.__name__ + ".shapes.box").Box(F(*p0), F(*p1), F(1, 1, 1))
+    label = "the box from %s to %s" % (p0, p1)
+    _hit_case(rt, cases, label, make, (0, 0, 0), (0, 0, -1))                    # the +z face at t = 1
+    _hit_case(rt, cases, label, make, (3, 0, -1.5), (-1, 0, 0))                 # the +x face at t = 2
+    _hit_case(rt, cases, label, make, (0.5, -2, -1.25), (0, 1, 0))               # the -y face at t = 1.5
+    _hit_case(rt, cases, label, make, (0, 0, 0), (0.25, 0.125, -1))             # oblique, through +z
+    _hit_case(rt, cases, label, make, (0, 0, -1.5), (0, 0, -1))                 # from inside: leaves at t = 0.5
+    _hit_case(rt, cases, label, make, (0, 0, -1.5), (1, 1, 1))                  # from inside, obliquely
+    _hit_case(rt, cases, label, make, (0, 2, 0), (0, 0, -1))                    # parallel to the y slab, outside
+    _hit_case(rt, cases, label, make, (0, 0, 0), (0, 1, 0))                     # misses
+    _hit_case(rt, cases, label, make, (0, 0, 0), (0, 0, 1))                     # points away
+    _hit_case(rt, cases, label, make, (0, 0, 0), (0, 0, -1), 1e-5, 0.5)         # beyond tmax
+    return cases.result()
