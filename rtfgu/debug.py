@@ -135,6 +135,7 @@ class _Recording(Whitted):
 
     def __init__(self, scene, out: list):
         super().__init__()
+        scene = scene.with_faces()      # a Mesh's faces, each in its place
         self.scene, self.out, self.log = scene, out, []
         self.world = copy.copy(scene)
         self.world.shapes = [_Logged(shape, i, self.log) for i, shape in enumerate(scene.shapes)]
@@ -187,6 +188,7 @@ def _from_numba(records, miss: str) -> list:
 
 def _from_wgpu(scene, records) -> list:
     # debug_main.wgsl: (origin, t), (direction, shader), (normal, shape), (colour, what)
+    scene = scene.with_faces()      # the shape numbers count a Mesh's faces
     out = []
     for (origin_t, direction_shader, normal_shape, color_what) in records:
         what = color_what[3]

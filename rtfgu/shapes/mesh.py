@@ -17,13 +17,20 @@ rtfgu.robust.intersect_triangle_watertight): the faces of a mesh share their edg
 vertices for its normal and its barycentric (beta, gamma) ``texcoord``.
 
     mesh = Mesh(vertices, faces, color)            # vertices (n, 3), faces (m, 3) indices
-    scene.shapes += mesh.triangles()               # one Shape per face
+    scene.shapes.append(mesh)                      # the mesh itself: its faces, in order
+    scene.shapes += mesh.triangles()               # or one Shape per face
 
-On the numba and WGSL paths the mesh triangles of a scene are one registered kind ("mesh",
-rtfgu.registry): their vertices and faces in arrays, found through a BVH.
+A ``Mesh`` in ``Scene.shapes`` stands for its faces in the order of ``faces``, as Suffern's
+grid holds a mesh's triangles (ch. 23): the numba and WGSL paths read its arrays
+(rtfgu.layout.compile_scene packs them with numpy) and never make a ``MeshTriangle``; the
+lecture layer traces the scene's ``with_faces()`` view, whose shapes are the faces made by
+``triangles()`` (once, then kept by the mesh). On the numba and WGSL paths the mesh
+triangles of a scene are one registered kind ("mesh", rtfgu.registry): their vertices and
+faces in arrays, found through a BVH.
 """
 from __future__ import annotations
 
+import hashlib
 from abc import abstractmethod
 
 import numpy as np
@@ -55,6 +62,10 @@ class Mesh:
 
     Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (m).
     Bad input is a ValueError naming the field and, for a face, its number.
+
+    The arrays may be changed in place (a vertex moved): ``geometry_key()`` changes with
+    them, and what was made from them (the faces of ``triangles()``, a scene's BVH) is made
+    again.
     """
 
     def __init__(self, vertices, faces, color, normals=None, material=None):
@@ -65,6 +76,7 @@ class Mesh:
         self.colors = _per_face_colors(color, m)
         self.materials = _per_face_materials(material, m)
         _refuse_zero_area(self.vertices, self.faces)
+        self._triangles = None      # (key, [MeshTriangle per face]) once triangles() made them
 
     @property
     def num_vertices(self) -> int:
@@ -74,11 +86,51 @@ class Mesh:
     def num_triangles(self) -> int:
         return len(self.faces)
 
+    def geometry_key(self) -> str:
+        """A digest of the bytes of ``vertices``, ``faces`` and ``normals``: what a BVH over
+        the mesh, and its faces' triangles, are made from. It is computed again on every call
+        (numpy hashes the arrays, no Python per face), so a change in place is seen."""
+        digest = hashlib.blake2b(digest_size=16)
+        for array in (self.vertices, self.faces, self.normals):
+            digest.update(b"-" if array is None else np.ascontiguousarray(array).tobytes())
+        return digest.hexdigest()
+
+    def color(self, face: int) -> Float3:
+        """The colour of face ``face``, as its MeshTriangle holds it."""
+        return Float3(*(float(c) for c in self.colors[face]))
+
+    def surfaces(self) -> list:
+        """The faces grouped by what they look like: (first face, material, faces) for each
+        distinct material and, where the material takes its colour from the shape (its cd is
+        not a colour of its own), each distinct face colour with it; in the order of their
+        first faces, the order a loop over ``triangles()`` meets them. ``faces`` is an int
+        array. numpy groups the faces: no Python per face but the materials' ids."""
+        m = len(self.faces)
+        ids = np.fromiter(map(id, self.materials), dtype=np.uint64, count=m)
+        out = []
+        for faces in _groups(ids):
+            material = self.materials[faces[0]]
+            if isinstance(material.cd, Float3):
+                out.append((int(faces[0]), material, faces))
+                continue
+            colors = self.colors[faces]
+            for part in _groups(colors):
+                out.append((int(faces[part[0]]), material, faces[part]))
+        out.sort(key=lambda group: group[0])
+        return out
+
     def triangles(self) -> list:
         """A ``SmoothMeshTriangle`` per face if the mesh has vertex normals, otherwise a
-        ``FlatMeshTriangle`` per face, in the order of ``faces``."""
-        kind = FlatMeshTriangle if self.normals is None else SmoothMeshTriangle
-        return [kind(self, face) for face in range(len(self.faces))]
+        ``FlatMeshTriangle`` per face, in the order of ``faces`` (a new list of them).
+
+        They are made on the first call and kept, so every call gives the same objects (an
+        ``AreaLight`` of one of them is the light of the face the scene holds); they are
+        made again when the geometry, the colours or the materials have changed."""
+        key = (self.geometry_key(), self.colors.tobytes(), tuple(map(id, self.materials)))
+        if self._triangles is None or self._triangles[0] != key:
+            kind = FlatMeshTriangle if self.normals is None else SmoothMeshTriangle
+            self._triangles = (key, [kind(self, face) for face in range(len(self.faces))])
+        return list(self._triangles[1])
 
 
 class MeshTriangle(Shape):
@@ -148,6 +200,17 @@ class SmoothMeshTriangle(MeshTriangle):
         if n.length_squared() == 0.0:
             return self._triangle.normal_at(position)
         return normalize(n)
+
+
+def _groups(keys: np.ndarray) -> list:
+    """The indices of equal keys (rows of a 2D ``keys``), one int array per distinct key, in
+    increasing order within each."""
+    if (keys == keys[0]).all():
+        return [np.arange(len(keys))]
+    _, inverse = np.unique(keys, axis=0 if keys.ndim == 2 else None, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    order = np.argsort(inverse, kind="stable")
+    return np.split(order, np.cumsum(np.bincount(inverse))[:-1])
 
 
 def _rows_of_three(value, name: str, dtype) -> np.ndarray:
