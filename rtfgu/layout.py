@@ -28,15 +28,17 @@ of every mesh once, a row per face ``[i0, i1, i2, scene index]`` (int32) in the 
 the leaves of the scene's BVH (rtfgu.accelerators.flat_bvh), and the vertex normals when a
 mesh is smooth. ``shapes["mesh"]`` is (faces, their scene indices).
 
-A shape table comes with an int32 index: each row's place in Scene.shapes, which is also
-its material row (and decides ties: the earlier shape wins). ``shaders`` holds each
+A shape table comes with an int32 index: each row's place in Scene.shapes, a Mesh there
+counted as its faces (face k of a Mesh whose faces start at index i is shape i + k), which is
+also its material row (and decides ties: the earlier shape wins). A Mesh held in
+Scene.shapes is packed from its arrays with numpy: no MeshTriangle is made for it. ``shaders`` holds each
 shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds every image texture's
 linear RGB, row after row from the top, 3 numbers a texel (an ImageTexture row's ``offset``
 is its first texel).
 """
 from __future__ import annotations
 
-import hashlib
+import dataclasses
 import math
 import weakref
 from types import SimpleNamespace
@@ -434,8 +436,11 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         i += 1
     material_of_shape = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int64)) for x in material_of_shape]) \
         if material_of_shape else np.zeros(0, dtype=np.int64)
-    materials = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)[material_of_shape]
-    shaders = np.array(unique_shaders, dtype=np.int32)[material_of_shape]
+    unique_table = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
+    unique_shaders = np.array(unique_shaders, dtype=np.int32)
+    (materials, shaders), _ = _cached(scene, ("materials", np.dtype(dtype).name),
+                                      (unique_table, unique_shaders, material_of_shape),
+                                      lambda: (unique_table[material_of_shape], unique_shaders[material_of_shape]))
 
     lights = {kind.name: [] for kind in LIGHTS}
     for j, light in enumerate(scene.lights):
@@ -472,7 +477,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     spheres = shapes["sphere"]
     # Only primary rays from a pinhole: the per-tile culling finds a tile's spheres for less.
     eye_rays_only = camera_kind == PINHOLE and "shadows" not in features and "path_trace" not in features \
-        and not any(SHADER_BY_ID[s].continues for s in unique_shaders)
+        and not any(SHADER_BY_ID[s].continues for s in unique_shaders.tolist())
     bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
                                                                 and not eye_rays_only))
     mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype) \
@@ -511,7 +516,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         environment=None if scene.environment is None else scene.environment.texels.astype(dtype),
     )
     # The materials table repeats the rows of unique_rows: they are checked.
-    arrays = [("camera", flat.camera), ("materials", np.array(unique_rows, dtype=dtype)),
+    arrays = [("camera", flat.camera), ("materials", unique_table),
               ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]
     if mesh is not None:
@@ -532,10 +537,28 @@ BVH_MIN_SPHERES = 16
 # The first entry of a sphere's row in FlatMesh.faces.
 SPHERE_ROW = -1
 
-# Each scene's last BVH per precision: {precision: (key, FlatBVH)}, the key a hash of its
-# faces, vertices and boxes (a float32 sphere's box is another), so that a scene compiled
-# again (another render, a notebook cell run twice) does not build it again.
-_BVH_CACHE = weakref.WeakKeyDictionary()
+# What compile_scene made for a scene from its meshes, per precision: the BVH and the
+# FlatMesh arrays, the materials table. {scene: {name: (inputs, value)}}: a value is reused
+# while every input array is equal to the one it was made from (numpy compares them; no
+# Python per face), so that a scene compiled again (another render, a moved camera, a
+# notebook cell run twice) builds nothing again, and a vertex moved in place builds again.
+_SCENE_CACHE = weakref.WeakKeyDictionary()
+
+
+def _cached(scene, name, inputs: tuple, make):
+    """(value, reused): make() for ``inputs`` (arrays), or the value the scene keeps from
+    equal inputs."""
+    try:
+        store = _SCENE_CACHE.setdefault(scene, {})
+    except TypeError:       # a scene object that cannot be weakly referenced: no cache
+        store = {}
+    entry = store.get(name)
+    if entry is not None and len(entry[0]) == len(inputs) and all(
+            a.dtype == b.dtype and np.array_equal(a, b) for a, b in zip(entry[0], inputs)):
+        return entry[1], True
+    value = make()
+    store[name] = (tuple(np.array(a, copy=True) for a in inputs), value)
+    return value, False
 
 
 def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
@@ -597,28 +620,19 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
         sphere_lo, sphere_hi = center - reach[:, None], center + reach[:, None]
     else:
         sphere_lo = sphere_hi = np.zeros((0, 3))
-    # What the BVH depends on: the vertices, the rows and the spheres' boxes, hashed (numpy
-    # bytes, no Python per face), so that a vertex moved in place builds it again.
-    digest = hashlib.blake2b(digest_size=16)
-    for array in (vertices, faces, sphere_lo, sphere_hi):
-        digest.update(np.ascontiguousarray(array).tobytes())
-    key = digest.hexdigest()
-    try:
-        cached = _BVH_CACHE.setdefault(scene, {})
-    except TypeError:       # a scene object that cannot be weakly referenced: no cache
-        cached = {}
-    build_seconds = 0.0
-    precision = np.dtype(dtype).name
-    if precision in cached and cached[precision][0] == key:
-        bvh = cached[precision][1]
-    else:
+    # What the BVH and the arrays depend on: the vertices, the rows, the spheres' boxes and
+    # the normals (_cached compares them with those of the last compile).
+
+    def make():
         lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
         bvh = flat_bvh.build(np.concatenate([lo, sphere_lo]), np.concatenate([hi, sphere_hi]))
-        build_seconds = bvh.build_seconds
-        cached[precision] = (key, bvh)
-    return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
-                    normals=None if normals is None else normals.astype(dtype),
-                    bvh=bvh, build_seconds=build_seconds, spheres=spheres is not None)
+        return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
+                        normals=None if normals is None else normals.astype(dtype),
+                        bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None)
+
+    inputs = (vertices, faces, sphere_lo, sphere_hi, np.zeros(0) if normals is None else normals)
+    mesh, reused = _cached(scene, ("mesh", np.dtype(dtype).name), inputs, make)
+    return dataclasses.replace(mesh, build_seconds=0.0) if reused else mesh
 
 
 @dataclass

@@ -145,7 +145,10 @@ def test_a_second_render_a_camera_move_and_another_sample_count_reuse_the_bvh(bu
     first = rtfgu.render(scene, 16, 16, backend="numba")
     assert builds.calls == 1
     assert np.array_equal(rtfgu.render(scene, 16, 16, backend="numba"), first)
-    assert compile_scene(scene).mesh.build_seconds == 0.0
+    again, once_more = compile_scene(scene), compile_scene(scene)
+    assert again.mesh.build_seconds == 0.0 and builds.calls == 1
+    assert once_more.mesh.faces is again.mesh.faces and once_more.mesh.vertices is again.mesh.vertices
+    assert once_more.materials is again.materials                     # nothing per face made again
     scene.camera = PinholeCamera(Float3(0.5, 0, 3.0), Float3(0.0), Float3(0, 1, 0))
     moved = rtfgu.render(scene, 16, 16, backend="numba", spp=4)
     assert builds.calls == 1 and not np.array_equal(moved, first)
@@ -164,6 +167,7 @@ def test_a_moved_vertex_builds_the_bvh_again_and_the_image_shows_it(builds):
     assert mesh.geometry_key() != key
     moved = rtfgu.render(scene, 24, 24, backend="numba")
     assert builds.calls == 2
+    assert np.array_equal(compile_scene(scene).mesh.vertices[top], mesh.vertices[top])
     fresh = Scene(OrthographicCamera(-1.5, 1.5, -1.5, 1.5))
     fresh.shapes += Mesh(mesh.vertices.copy(), mesh.faces, GREY, material=mesh.materials[0]).triangles()
     assert not np.array_equal(moved, first)

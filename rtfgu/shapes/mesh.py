@@ -60,7 +60,8 @@ class Mesh:
               and finite, stored normalised (smooth shading: ``SmoothMeshTriangle``).
     material  None (``Material()``), one Material for every face, or a sequence of m.
 
-    Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (m).
+    Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (a tuple of
+    m: another material for a face is a new tuple).
     Bad input is a ValueError naming the field and, for a face, its number.
 
     The arrays may be changed in place (a vertex moved): ``geometry_key()`` changes with
@@ -77,6 +78,7 @@ class Mesh:
         self.materials = _per_face_materials(material, m)
         _refuse_zero_area(self.vertices, self.faces)
         self._triangles = None      # (key, [MeshTriangle per face]) once triangles() made them
+        self._surfaces = None       # (materials, colours, surfaces()) once surfaces() grouped them
 
     @property
     def num_vertices(self) -> int:
@@ -104,7 +106,12 @@ class Mesh:
         distinct material and, where the material takes its colour from the shape (its cd is
         not a colour of its own), each distinct face colour with it; in the order of their
         first faces, the order a loop over ``triangles()`` meets them. ``faces`` is an int
-        array. numpy groups the faces: no Python per face but the materials' ids."""
+        array. numpy groups the faces: no Python per face but the materials' ids. The groups
+        are kept until ``materials`` is another tuple or ``colors`` changes."""
+        if self._surfaces is not None and self._surfaces[0] is self.materials \
+                and np.array_equal(self._surfaces[1], self.colors) \
+                and all(isinstance(m.cd, Float3) == own for m, own in self._surfaces[3]):
+            return self._surfaces[2]
         m = len(self.faces)
         ids = np.fromiter(map(id, self.materials), dtype=np.uint64, count=m)
         out = []
@@ -117,6 +124,8 @@ class Mesh:
             for part in _groups(colors):
                 out.append((int(faces[part[0]]), material, faces[part]))
         out.sort(key=lambda group: group[0])
+        kinds = [(m, isinstance(m.cd, Float3)) for m in {id(g[1]): g[1] for g in out}.values()]
+        self._surfaces = (self.materials, self.colors.copy(), out, kinds)
         return out
 
     def triangles(self) -> list:
@@ -126,7 +135,7 @@ class Mesh:
         They are made on the first call and kept, so every call gives the same objects (an
         ``AreaLight`` of one of them is the light of the face the scene holds); they are
         made again when the geometry, the colours or the materials have changed."""
-        key = (self.geometry_key(), self.colors.tobytes(), tuple(map(id, self.materials)))
+        key = (self.geometry_key(), self.colors.tobytes(), self.materials)
         if self._triangles is None or self._triangles[0] != key:
             kind = FlatMeshTriangle if self.normals is None else SmoothMeshTriangle
             self._triangles = (key, [kind(self, face) for face in range(len(self.faces))])
@@ -269,10 +278,10 @@ def _per_face_colors(color, m: int) -> np.ndarray:
     return array
 
 
-def _per_face_materials(material, m: int) -> list:
+def _per_face_materials(material, m: int) -> tuple:
     if material is None or isinstance(material, Material):
-        return [Material() if material is None else material] * m
-    materials = list(material)
+        return (Material() if material is None else material,) * m
+    materials = tuple(material)
     if len(materials) != m:
         raise ValueError("Mesh.material must be one Material or one per face (%d), got %d"
                          % (m, len(materials)))
