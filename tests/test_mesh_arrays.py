@@ -5,6 +5,7 @@ geometry: a second render, a camera move or another sample count reuse it, a mov
 builds it again."""
 from __future__ import annotations
 
+import copy
 import math
 import random
 
@@ -194,3 +195,21 @@ def test_a_bad_material_of_a_face_is_named_by_the_mesh_and_the_face():
     mesh.colors[45] = (2.0, 2.0, 2.0)                                 # kd cd above 1
     with pytest.raises(ValueError, match=r"Scene\.shapes\[1\]\.materials\[45\] \(GlossyReflector\)"):
         compile_scene(scene)
+
+
+def test_area_lights_on_the_faces_of_a_held_mesh_light_it_as_they_light_its_triangles():
+    from rtfgu.scenes.meshes import cornell_box_area_light
+
+    of_faces = cornell_box_area_light()                               # holds mesh.triangles()
+    mesh = of_faces.shapes[0].mesh
+    held = copy.copy(of_faces)
+    held.shapes = [mesh]                                              # its lights: AreaLights of those faces
+    a, b = compile_scene(held), compile_scene(of_faces)
+    assert np.array_equal(a.mesh.faces, b.mesh.faces) and np.array_equal(a.materials, b.materials)
+    assert all(np.array_equal(a.lights[k], b.lights[k]) for k in a.lights) and a.light_count == 2
+    assert np.array_equal(rtfgu.render(held, 8, 8, backend="numba", spp=4),
+                          rtfgu.render(of_faces, 8, 8, backend="numba", spp=4))
+    held.lights = held.lights[:1]
+    with pytest.raises(ValueError, match=r"Scene\.shapes\[0\] \(a Mesh\): face \d+ emits .* add "
+                                         r"AreaLight\(mesh\.triangles\(\)\[\d+\]\)"):
+        compile_scene(held)
