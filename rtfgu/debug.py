@@ -4,7 +4,8 @@ first differ.
 ``trace_pixel(scene, x, y, width, height, backend, precision)`` returns what one path
 computed for pixel (x, y) (column, row, row 0 at the top as in the image file): a
 ``Bounce`` per ray of the pixel's path (02562 "Intersecting with the scene and tracing a
-path"): the ray, the shape hit (its place in Scene.shapes and its kind), the hit distance
+path"): the ray, the shape hit (its place in Scene.shapes, a Mesh there counted as its
+faces, and its kind), the hit distance
 t, the normal there, the shader and the radiance that shader added. The pixel's path is that
 of its centre ray (through the lens centre for a ThinLens): the image of a scene without a
 sampler, one of the samples a sampled pixel averages. ``trace_rays`` does the

@@ -213,3 +213,16 @@ def test_area_lights_on_the_faces_of_a_held_mesh_light_it_as_they_light_its_tria
     with pytest.raises(ValueError, match=r"Scene\.shapes\[0\] \(a Mesh\): face \d+ emits .* add "
                                          r"AreaLight\(mesh\.triangles\(\)\[\d+\]\)"):
         compile_scene(held)
+
+
+def test_the_lecture_layer_traces_a_held_mesh_through_the_scenes_view_of_its_faces():
+    mesh = icosphere(1)
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes += [Sphere(Float3(3, 0, 0), 0.5, GREY), mesh]
+    view = scene.with_faces()
+    assert len(view.shapes) == 1 + len(mesh.faces) and view.shapes[1:] == mesh.triangles()
+    assert scene.shapes[1] is mesh and view.lights is scene.lights and scene.with_faces().shapes == view.shapes
+    hit = rtfgu.HitInfo()
+    assert view.intersect(rtfgu.Ray(Float3(0, 0, 5), Float3(0, 0, -1)), hit) and hit.dist == pytest.approx(4.0, rel=0.1)
+    with pytest.raises(TypeError, match=r"scene\.with_faces\(\)"):
+        scene.intersect(rtfgu.Ray(Float3(0, 0, 5), Float3(0, 0, -1)), rtfgu.HitInfo())

@@ -88,6 +88,11 @@ class Mesh:
     def num_triangles(self) -> int:
         return len(self.faces)
 
+    def intersect_p(self, ray: Ray) -> bool:
+        """A Mesh is not a Shape: the lecture layer traces its faces (module docstring)."""
+        raise TypeError("a Mesh in Scene.shapes stands for its faces: trace scene.with_faces(), whose shapes "
+                        "are mesh.triangles() (rtfgu.render does)")
+
     def geometry_key(self) -> str:
         """A digest of the bytes of ``vertices``, ``faces`` and ``normals``: what a BVH over
         the mesh, and its faces' triangles, are made from. It is computed again on every call
