@@ -31,10 +31,10 @@ mesh is smooth. ``shapes["mesh"]`` is (faces, their scene indices).
 A shape table comes with an int32 index: each row's place in Scene.shapes, a Mesh there
 counted as its faces (face k of a Mesh whose faces start at index i is shape i + k), which is
 also its material row (and decides ties: the earlier shape wins). A Mesh held in
-Scene.shapes is packed from its arrays with numpy: no MeshTriangle is made for it. ``shaders`` holds each
-shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds every image texture's
-linear RGB, row after row from the top, 3 numbers a texel (an ImageTexture row's ``offset``
-is its first texel).
+Scene.shapes is packed from its arrays with numpy: no MeshTriangle is made for it.
+``shaders`` holds each shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds
+every image texture's linear RGB, row after row from the top, 3 numbers a texel (an
+ImageTexture row's ``offset`` is its first texel).
 """
 from __future__ import annotations
 
@@ -434,8 +434,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add(kind.name)
         material_of_shape.append(material_row("Scene.shapes[%d]" % p, shape.material, shape.color))
         i += 1
-    material_of_shape = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int64)) for x in material_of_shape]) \
-        if material_of_shape else np.zeros(0, dtype=np.int64)
+    material_of_shape = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int64))
+                                        for x in material_of_shape] or [np.zeros(0, dtype=np.int64)])
     unique_table = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
     unique_shaders = np.array(unique_shaders, dtype=np.int32)
     (materials, shaders), _ = _cached(scene, ("materials", np.dtype(dtype).name),

@@ -78,7 +78,8 @@ class Mesh:
         self.materials = _per_face_materials(material, m)
         _refuse_zero_area(self.vertices, self.faces)
         self._triangles = None      # (key, [MeshTriangle per face]) once triangles() made them
-        self._surfaces = None       # (materials, colours, surfaces()) once surfaces() grouped them
+        # (materials, colours, surfaces(), [(material, cd is a colour)]) once surfaces() ran
+        self._surfaces = None
 
     @property
     def num_vertices(self) -> int:
@@ -94,9 +95,10 @@ class Mesh:
                         "are mesh.triangles() (rtfgu.render does)")
 
     def geometry_key(self) -> str:
-        """A digest of the bytes of ``vertices``, ``faces`` and ``normals``: what a BVH over
-        the mesh, and its faces' triangles, are made from. It is computed again on every call
-        (numpy hashes the arrays, no Python per face), so a change in place is seen."""
+        """A digest of the bytes of ``vertices``, ``faces`` and ``normals``, the geometry the
+        faces of ``triangles()`` are made from. It is computed again on every call (the arrays
+        hashed whole, no Python per face), so a change in place is seen. (A scene's BVH is
+        kept by comparing the arrays themselves, rtfgu.layout._cached.)"""
         digest = hashlib.blake2b(digest_size=16)
         for array in (self.vertices, self.faces, self.normals):
             digest.update(b"-" if array is None else np.ascontiguousarray(array).tobytes())
