@@ -13,6 +13,10 @@ cannot be installed or run is named in the section with the reason instead of a 
 (so is the WGSL path where wgpu has no adapter, or where a mesh's buffers exceed the
 adapter's storage binding size).
 
+This section times the traversal on given rays. What a mesh costs through ``rtfgu.render``
+(the scene compiled, its BVH built, an image traced) is benchmarks/mesh_render.py's
+(docs/meshes.md, "A mesh through rtfgu.render").
+
 Meshes (MESHES): an icosphere subdivided ICOSPHERE_SUBDIVISIONS times (1.3 M triangles) whose
 vertices are moved along their radius by a smooth, seeded noise (displaced_icosphere), and
 the Stanford bunny shipped with rtfgu. Rays, per mesh (RAY_SETS), float64 and seeded:

@@ -4,7 +4,8 @@ first differ.
 ``trace_pixel(scene, x, y, width, height, backend, precision)`` returns what one path
 computed for pixel (x, y) (column, row, row 0 at the top as in the image file): a
 ``Bounce`` per ray of the pixel's path (02562 "Intersecting with the scene and tracing a
-path"): the ray, the shape hit (its place in Scene.shapes and its kind), the hit distance
+path"): the ray, the shape hit (its place in Scene.shapes, a Mesh there counted as its
+faces, and its kind), the hit distance
 t, the normal there, the shader and the radiance that shader added. The pixel's path is that
 of its centre ray (through the lens centre for a ThinLens): the image of a scene without a
 sampler, one of the samples a sampled pixel averages. ``trace_rays`` does the
@@ -135,6 +136,7 @@ class _Recording(Whitted):
 
     def __init__(self, scene, out: list):
         super().__init__()
+        scene = scene.with_faces()      # a Mesh's faces, each in its place
         self.scene, self.out, self.log = scene, out, []
         self.world = copy.copy(scene)
         self.world.shapes = [_Logged(shape, i, self.log) for i, shape in enumerate(scene.shapes)]
@@ -187,6 +189,7 @@ def _from_numba(records, miss: str) -> list:
 
 def _from_wgpu(scene, records) -> list:
     # debug_main.wgsl: (origin, t), (direction, shader), (normal, shape), (colour, what)
+    scene = scene.with_faces()      # the shape numbers count a Mesh's faces
     out = []
     for (origin_t, direction_shader, normal_shape, color_what) in records:
         what = color_what[3]

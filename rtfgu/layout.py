@@ -31,15 +31,17 @@ of every mesh once, a row per face ``[i0, i1, i2, scene index]`` (int32) in the 
 the leaves of the scene's BVH (rtfgu.accelerators.flat_bvh), and the vertex normals when a
 mesh is smooth. ``shapes["mesh"]`` is (faces, their scene indices).
 
-A shape table comes with an int32 index: each row's place in Scene.shapes, which is also
-its material row (and decides ties: the earlier shape wins). ``shaders`` holds each
-shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds every image texture's
-linear RGB, row after row from the top, 3 numbers a texel (an ImageTexture row's ``offset``
-is its first texel).
+A shape table comes with an int32 index: each row's place in Scene.shapes, a Mesh there
+counted as its faces (face k of a Mesh whose faces start at index i is shape i + k), which is
+also its material row (and decides ties: the earlier shape wins). A Mesh held in
+Scene.shapes is packed from its arrays with numpy: no MeshTriangle is made for it.
+``shaders`` holds each shape's shader id; ``background`` is [rgb, 0]. ``texels`` holds
+every image texture's linear RGB, row after row from the top, 3 numbers a texel (an
+ImageTexture row's ``offset`` is its first texel).
 """
 from __future__ import annotations
 
-import hashlib
+import dataclasses
 import math
 import weakref
 from types import SimpleNamespace
@@ -52,6 +54,7 @@ from .float3 import Float3
 from .ray import RAY_EPSILON
 from .registry import (LIGHTS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
                        shape_kind_of, texture_kind_of)
+from .shapes.mesh import Mesh
 
 DTYPES = {"float64": np.float64, "float32": np.float32}
 
@@ -127,6 +130,7 @@ TRIANGLE = SHAPE_IDS["triangle"]
 SPHERE = SHAPE_IDS["sphere"]
 DISK = SHAPE_IDS["disk"]
 MESH = SHAPE_IDS["mesh"]
+MESH_KIND = SHAPES[MESH]    # the kind of a Mesh's faces (the registry's BVH kind)
 
 ORTHOGRAPHIC = 0
 PINHOLE = 1
@@ -383,39 +387,31 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     ambient = scene.ambient_light.L(None)
     rows = {kind.name: ([], []) for kind in SHAPES}
     mesh_faces = []
-    materials, shaders = [], []
     own = _OwnSamplers(tracer_feature in ("path_trace", "area_lighting"))
     texture_rows = {kind.name: [] for kind in TEXTURES}
     texels = []
     placed = {}  # id(texture) -> (kind id, row): a texture shared by shapes is laid out once
-    material_rows = {}  # (id(material), surface colour if not cd) -> its row
+    material_rows = {}  # (id(material), surface colour if not cd) -> its place in unique_rows
+    unique_rows, unique_shaders = [], []
+    # Each shape's place in unique_rows (a Mesh's faces: an array of them), in the order of
+    # the shapes' indices.
+    material_of_shape = []
     features = {CAMERA_KINDS[camera_kind]}
-    for i, shape in enumerate(scene.shapes):
-        _, kind = shape_kind_of(shape)
-        if kind is None:
-            raise ValueError("Scene.shapes[%d]: the flat layout knows %s, got %s"
-                             % (i, ", ".join(k.record for k in SHAPES), type(shape).__name__))
-        if kind.bvh:
-            mesh_faces.append((i, shape))
-        else:
-            rows[kind.name][0].append(pack_row(kind.record, shape))
-        rows[kind.name][1].append(i)
-        features.add(kind.name)
-        m = shape.material
-        # A material shared by shapes (a mesh's thousands of triangles) is checked and laid
-        # out once per surface colour: its row depends on nothing else.
-        key = (id(m),) if isinstance(m.cd, Float3) else (id(m), shape.color.x, shape.color.y, shape.color.z)
+
+    def material_row(where: str, m, color) -> int:
+        """The place in unique_rows of material ``m`` on a surface of colour ``color``: laid
+        out on first use. A material shared by shapes (a mesh's thousands of faces) is
+        checked and laid out once per surface colour: its row depends on nothing else."""
+        key = (id(m),) if isinstance(m.cd, Float3) else (id(m), color.x, color.y, color.z)
         if key in material_rows:
-            materials.append(material_rows[key])
-            shaders.append(m.shader)
-            continue
+            return material_rows[key]
         texture, texture_row = -1, 0
         if m.texture is not None:
             if id(m.texture) not in placed:
                 k, tkind = texture_kind_of(m.texture)
                 if tkind is None:
-                    raise ValueError("Scene.shapes[%d].material.texture: the flat layout knows %s, got %s"
-                                     % (i, ", ".join(t.record for t in TEXTURES), type(m.texture).__name__))
+                    raise ValueError("%s.material.texture: the flat layout knows %s, got %s"
+                                     % (where, ", ".join(t.record for t in TEXTURES), type(m.texture).__name__))
                 source = m.texture
                 if tkind.name == "image_texture":
                     source = SimpleNamespace(
@@ -429,18 +425,51 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             texture, texture_row = placed[id(m.texture)]
         limit = m.flat_limit(scene.tracer)
         if limit is not None:
-            raise ValueError("Scene.shapes[%d].material (%r): %s" % (i, m, limit))
-        materials.append(pack_row("Material", SimpleNamespace(
-            color=m.cd if isinstance(m.cd, Float3) else shape.color, kd=m.kd, specular=m.specular,
+            raise ValueError("%s.material (%r): %s" % (where, m, limit))
+        unique_rows.append(pack_row("Material", SimpleNamespace(
+            color=m.cd if isinstance(m.cd, Float3) else color, kd=m.kd, specular=m.specular,
             shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
             absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt,
             diffuse_sampler=own.place(_sampler_of(m, "diffuse_brdf")),
             specular_sampler=own.place(_sampler_of(m, "specular_brdf")))))
-        material_rows[key] = materials[-1]
-        shaders.append(m.shader)
+        unique_shaders.append(m.shader)
+        material_rows[key] = len(unique_rows) - 1
         features.add(SHADER_BY_ID[m.shader].name)
         if SHADER_BY_ID[m.shader].splits and max(m.reflection.x, m.reflection.y, m.reflection.z) > 0.0:
             features.add("two_rays")   # the ray-cast loops keep a stack of rays
+        return material_rows[key]
+
+    i = 0   # the shape's index: its place in Scene.shapes, a Mesh counted as its faces
+    for p, shape in enumerate(scene.shapes):
+        if isinstance(shape, Mesh):
+            # Its faces, m shapes from index i on, packed from its arrays (compile_mesh).
+            mesh_faces.append((i, shape))
+            places = np.empty(shape.num_triangles, dtype=np.int64)
+            for face, m, faces in shape.surfaces():
+                places[faces] = material_row("Scene.shapes[%d].faces[%d]" % (p, face), m, shape.color(face))
+            material_of_shape.append(places)
+            features.add(MESH_KIND.name)
+            i += shape.num_triangles
+            continue
+        _, kind = shape_kind_of(shape)
+        if kind is None:
+            raise ValueError("Scene.shapes[%d]: the flat layout knows %s, got %s"
+                             % (p, ", ".join(k.record for k in SHAPES), type(shape).__name__))
+        if kind.bvh:
+            mesh_faces.append((i, shape))
+        else:
+            rows[kind.name][0].append(pack_row(kind.record, shape))
+        rows[kind.name][1].append(i)
+        features.add(kind.name)
+        material_of_shape.append(material_row("Scene.shapes[%d]" % p, shape.material, shape.color))
+        i += 1
+    material_of_shape = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int64))
+                                        for x in material_of_shape] or [np.zeros(0, dtype=np.int64)])
+    unique_table = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
+    unique_shaders = np.array(unique_shaders, dtype=np.int32)
+    (materials, shaders), _ = _cached(scene, ("materials", np.dtype(dtype).name),
+                                      (unique_table, unique_shaders, material_of_shape),
+                                      lambda: (unique_table[material_of_shape], unique_shaders[material_of_shape]))
 
     lights = {kind.name: [] for kind in LIGHTS}
     for j, light in enumerate(scene.lights):
@@ -477,7 +506,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     spheres = shapes["sphere"]
     # Only primary rays from a pinhole: the per-tile culling finds a tile's spheres for less.
     eye_rays_only = camera_kind == PINHOLE and "shadows" not in features and "path_trace" not in features \
-        and not any(SHADER_BY_ID[s].continues for s in shaders)
+        and not any(SHADER_BY_ID[s].continues for s in unique_shaders.tolist())
     bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
                                                                 and not eye_rays_only))
     mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype) \
@@ -498,8 +527,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         camera_kind=camera_kind,
         camera=camera.astype(dtype),
         shapes=shapes,
-        materials=table(materials, "Material"),
-        shaders=np.array(shaders, dtype=np.int32),
+        materials=materials,
+        shaders=shaders,
         lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
         own_samples=np.array(own.samples, dtype=dtype).reshape(-1, 2) if own.samples else None,
         own_shuffled=np.array(own.shuffled, dtype=np.int32) if own.samples else None,
@@ -515,7 +544,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         area_lighting=tracer_feature == "area_lighting",
         environment=None if scene.environment is None else scene.environment.texels.astype(dtype),
     )
-    arrays = [("camera", flat.camera), ("materials", flat.materials), ("background", flat.background)]
+    # The materials table repeats the rows of unique_rows: they are checked.
+    arrays = [("camera", flat.camera), ("materials", unique_table),
+              ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]
     if mesh is not None:
         arrays.append(("mesh vertices", mesh.vertices))
@@ -535,37 +566,75 @@ BVH_MIN_SPHERES = 16
 # The first entry of a sphere's row in FlatMesh.faces.
 SPHERE_ROW = -1
 
-# Each scene's last BVH per precision: {precision: (key, FlatBVH)}, the key a hash of its
-# faces, vertices and boxes (a float32 sphere's box is another), so that a scene compiled
-# again (another render, a notebook cell run twice) does not build it again.
-_BVH_CACHE = weakref.WeakKeyDictionary()
+# What compile_scene made for a scene from its meshes, per precision: the BVH and the
+# FlatMesh arrays, the materials table. {scene: {name: (inputs, value)}}: a value is reused
+# while every input array is equal to the one it was made from (numpy compares them; no
+# Python per face), so that a scene compiled again (another render, a moved camera, a
+# notebook cell run twice) builds nothing again, and a vertex moved in place builds again.
+_SCENE_CACHE = weakref.WeakKeyDictionary()
+
+
+def _cached(scene, name, inputs: tuple, make):
+    """(value, reused): make() for ``inputs`` (arrays), or the value the scene keeps from
+    equal inputs."""
+    try:
+        store = _SCENE_CACHE.setdefault(scene, {})
+    except TypeError:       # a scene object that cannot be weakly referenced: no cache
+        store = {}
+    entry = store.get(name)
+    if entry is not None and len(entry[0]) == len(inputs) and all(
+            a.dtype == b.dtype and np.array_equal(a, b) for a, b in zip(entry[0], inputs)):
+        return entry[1], True
+    value = make()
+    store[name] = (tuple(np.array(a, copy=True) for a in inputs), value)
+    return value, False
 
 
 def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
-    """The FlatMesh of the mesh triangles ``mesh_faces`` ((scene index, MeshTriangle), ...)
-    and, unless ``spheres`` is None, of the sphere table and index ``spheres``, with the
-    scene's BVH over them (built, or taken from the scene's cache)."""
+    """The FlatMesh of the mesh triangles ``mesh_faces`` ((index, MeshTriangle) or (index of
+    its first face, Mesh), ...) and, unless ``spheres`` is None, of the sphere table and index
+    ``spheres``, with the scene's BVH over them (built, or taken from the scene's cache).
+
+    A Mesh is packed from its arrays (its faces' rows are its ``faces`` plus the place of its
+    first vertex); a MeshTriangle gives its row itself. Either way the rows, and so the BVH,
+    are those of the same faces in the same order."""
     from .accelerators import flat_bvh
     from .accelerators.bbox import PAD
     from .shapes.mesh import SmoothMeshTriangle
 
     blocks = {}     # (id(mesh), smooth) -> first vertex: a mesh's vertices are laid out once
-    vertex_parts, normal_parts, smooth_any = [], [], False
-    faces = np.empty((len(mesh_faces), 4), dtype=np.int64)
-    count = 0
-    for n, (i, shape) in enumerate(mesh_faces):
-        smooth = isinstance(shape, SmoothMeshTriangle)
-        key = (id(shape.mesh), smooth)
+    vertex_parts, normal_parts = [], []
+    face_parts, loose = [], []      # loose: the rows of MeshTriangles not yet in face_parts
+
+    def first_vertex(mesh, smooth: bool) -> int:
+        key = (id(mesh), smooth)
         if key not in blocks:
-            blocks[key] = count
-            vertex_parts.append(shape.mesh.vertices)
-            normal_parts.append(shape.mesh.normals if smooth else np.zeros_like(shape.mesh.vertices))
-            smooth_any |= smooth
-            count += len(shape.mesh.vertices)
-        first = blocks[key]
-        faces[n] = (shape.index0 + first, shape.index1 + first, shape.index2 + first, i)
+            blocks[key] = sum(len(v) for v in vertex_parts)
+            vertex_parts.append(mesh.vertices)
+            normal_parts.append(mesh.normals if smooth else None)
+        return blocks[key]
+
+    for i, shape in mesh_faces:
+        if isinstance(shape, Mesh):
+            if loose:
+                face_parts.append(np.array(loose, dtype=np.int64).reshape(-1, 4))
+                loose = []
+            first = first_vertex(shape, shape.normals is not None)
+            part = np.empty((shape.num_triangles, 4), dtype=np.int64)
+            part[:, :3] = shape.faces + first
+            part[:, 3] = np.arange(i, i + shape.num_triangles)
+            face_parts.append(part)
+        else:
+            first = first_vertex(shape.mesh, isinstance(shape, SmoothMeshTriangle))
+            loose.append((shape.index0 + first, shape.index1 + first, shape.index2 + first, i))
+    if loose:
+        face_parts.append(np.array(loose, dtype=np.int64).reshape(-1, 4))
+    faces = np.concatenate(face_parts) if face_parts else np.zeros((0, 4), dtype=np.int64)
     vertices = np.concatenate(vertex_parts) if vertex_parts else np.zeros((0, 3))
-    lo, hi = flat_bvh.triangle_bounds(vertices, faces)
+    smooth_any = any(n is not None for n in normal_parts)
+    normals = np.concatenate([np.zeros_like(v) if n is None else n for v, n in zip(vertex_parts, normal_parts)]) \
+        if smooth_any else None
+    num_triangles = len(faces)
     if spheres is not None:
         # A sphere's row: [-1, its row in the sphere table, 0, its place in Scene.shapes];
         # its box is centre +- radius grown as BBox.padded grows it (by 2^-20 in float32,
@@ -577,27 +646,22 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
         reach = radius + pad * (np.abs(center).max(axis=1) + radius)
         faces = np.concatenate([faces, np.stack([np.full(len(table), SPHERE_ROW), np.arange(len(table)),
                                                  np.zeros(len(table)), index], axis=1).astype(np.int64)])
-        lo = np.concatenate([lo, center - reach[:, None]])
-        hi = np.concatenate([hi, center + reach[:, None]])
-    digest = hashlib.sha1(vertices.tobytes())
-    digest.update(faces.tobytes())
-    digest.update(lo.tobytes())
-    key = digest.hexdigest()
-    try:
-        cached = _BVH_CACHE.setdefault(scene, {})
-    except TypeError:       # a scene object that cannot be weakly referenced: no cache
-        cached = {}
-    build_seconds = 0.0
-    precision = np.dtype(dtype).name
-    if precision in cached and cached[precision][0] == key:
-        bvh = cached[precision][1]
+        sphere_lo, sphere_hi = center - reach[:, None], center + reach[:, None]
     else:
-        bvh = flat_bvh.build(lo, hi)
-        build_seconds = bvh.build_seconds
-        cached[precision] = (key, bvh)
-    return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
-                    normals=np.concatenate(normal_parts).astype(dtype) if smooth_any else None,
-                    bvh=bvh, build_seconds=build_seconds, spheres=spheres is not None)
+        sphere_lo = sphere_hi = np.zeros((0, 3))
+    # What the BVH and the arrays depend on: the vertices, the rows, the spheres' boxes and
+    # the normals (_cached compares them with those of the last compile).
+
+    def make():
+        lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
+        bvh = flat_bvh.build(np.concatenate([lo, sphere_lo]), np.concatenate([hi, sphere_hi]))
+        return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
+                        normals=None if normals is None else normals.astype(dtype),
+                        bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None)
+
+    inputs = (vertices, faces, sphere_lo, sphere_hi, np.zeros(0) if normals is None else normals)
+    mesh, reused = _cached(scene, ("mesh", np.dtype(dtype).name), inputs, make)
+    return dataclasses.replace(mesh, build_seconds=0.0) if reused else mesh
 
 
 @dataclass

@@ -2,7 +2,7 @@
 PLY files into a Mesh; the 02562 worksheets read their triangle meshes from OBJ files).
 
     mesh = rtfgu.load_obj(rtfgu.obj.mesh_path("bunny.obj"))
-    scene.shapes += mesh.triangles()
+    scene.shapes.append(mesh)                      # its faces (or scene.shapes += mesh.triangles())
 
 What is read: ``v`` (x y z, optionally w or r g b, which are ignored), ``vn``, ``vt``
 (checked, not used), ``f`` with 3 or more corners, ``mtllib`` (one per file) and ``usemtl``.

@@ -3,7 +3,7 @@ reads his meshes (the bunny, the horse, ...) from PLY files into a Mesh, with
 Turk's ply.c; load_ply reads the same files.
 
     mesh = rtfgu.load_ply("bunny.ply", material=rtfgu.Matte())
-    scene.shapes += mesh.triangles()
+    scene.shapes.append(mesh)                      # its faces (or scene.shapes += mesh.triangles())
 
 What is read: ``format ascii 1.0``, ``binary_little_endian 1.0`` and ``binary_big_endian 1.0``;
 the element ``vertex`` with the properties ``x``, ``y``, ``z``, optionally ``nx``, ``ny``,

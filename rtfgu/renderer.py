@@ -39,9 +39,11 @@ def render_reference(scene, width: int, height: int, progress=None, sampler=None
 
     Sample s of a pixel is the point ``sampler.sample_unit_square(pixel, s, seed)`` of the
     pixel's square (Suffern's "pp.x = vp.s * (c - 0.5 * vp.hres + sp.x)"), or its centre
-    without a sampler; a ThinLens camera also gets a point of the lens for it."""
+    without a sampler; a ThinLens camera also gets a point of the lens for it. A Mesh in
+    Scene.shapes is traced as its faces (Scene.with_faces)."""
     if sums is None:
         sums = np.zeros((height, width, 3), dtype=np.float64)
+    scene = scene.with_faces()      # a Mesh in Scene.shapes traced as its faces
     camera = scene.camera
     for iy in range(height):
         # The row's sums as Python floats while it renders (a numpy element costs more to add

@@ -3,6 +3,8 @@ holds for shading (Suffern ch. 14): lights, the ambient light, a background colo
 tracer that turns a ray into a colour."""
 from __future__ import annotations
 
+import copy
+
 from .cameras.camera import Camera
 from .float3 import Float3, as_float3
 from .hit_info import HitInfo
@@ -31,6 +33,24 @@ class Scene:
         # What a ray that leaves the scene sees: None is ``background`` from every direction;
         # an EnvironmentLight (rtfgu/lights/environment_light.py) its image.
         self.environment = None
+
+    def with_faces(self) -> "Scene":
+        """The scene as the lecture layer traces it: ``shapes`` with each ``Mesh`` replaced by
+        its faces, ``mesh.triangles()`` (made on the first call, then kept by the mesh), in
+        place. A shallow copy that shares everything else; the scene itself when it holds no
+        Mesh. The numba and WGSL paths read a Mesh's arrays instead (rtfgu.layout)."""
+        from .shapes.mesh import Mesh
+
+        if not any(isinstance(shape, Mesh) for shape in self.shapes):
+            return self
+        view = copy.copy(self)
+        view.shapes = []
+        for shape in self.shapes:
+            if isinstance(shape, Mesh):
+                view.shapes += shape.triangles()
+            else:
+                view.shapes.append(shape)
+        return view
 
     def background_radiance(self, direction: Float3) -> Float3:
         """What a ray leaving the scene along ``direction`` sees: the environment's radiance
@@ -79,14 +99,15 @@ class Scene:
         from .lights.environment_light import EnvironmentLight
         from .lights.light import Light
         from .sampling.sampler import Sampler
+        from .shapes.mesh import Mesh
         from .shapes.shape import Shape
         from .tracers.tracer import Tracer
 
         if not isinstance(self.camera, Camera):
             raise ValueError("Scene.camera must be a Camera, got %r" % (self.camera,))
         for i, shape in enumerate(self.shapes):
-            if not isinstance(shape, Shape):
-                raise ValueError("Scene.shapes[%d] must be a Shape, got %r" % (i, shape))
+            if not isinstance(shape, (Shape, Mesh)):
+                raise ValueError("Scene.shapes[%d] must be a Shape or a Mesh, got %r" % (i, shape))
         for i, light in enumerate(self.lights):
             if not isinstance(light, Light) or isinstance(light, (Ambient, EnvironmentLight)):
                 raise ValueError("Scene.lights[%d] must be a PointLight, Directional, AreaLight or "

@@ -114,7 +114,7 @@ def teapot() -> Scene:
     scene = Scene(camera)
     scene.background = BACKGROUND
     scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.1, 0.7, 0.0), Matte()))
-    scene.shapes += teapot_mesh(Matte()).triangles()
+    scene.shapes.append(teapot_mesh(Matte()))          # the mesh itself: its faces, in order
     # Worksheet 5's light travels along normalize(-1, -1, -1): toward it is the opposite.
     scene.lights.append(Directional(-normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
     return scene
@@ -126,7 +126,7 @@ def bunny() -> Scene:
     camera = PinholeCamera(Float3(-0.02, 0.11, 0.6), Float3(-0.02, 0.11, 0.0), Float3(0.0, 1.0, 0.0), d=3.5)
     scene = Scene(camera)
     scene.background = BACKGROUND
-    scene.shapes += bunny_mesh(Matte()).triangles()
+    scene.shapes.append(bunny_mesh(Matte()))
     scene.lights.append(Directional(-normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
     return scene
 

@@ -17,13 +17,20 @@ rtfgu.robust.intersect_triangle_watertight): the faces of a mesh share their edg
 vertices for its normal and its barycentric (beta, gamma) ``texcoord``.
 
     mesh = Mesh(vertices, faces, color)            # vertices (n, 3), faces (m, 3) indices
-    scene.shapes += mesh.triangles()               # one Shape per face
+    scene.shapes.append(mesh)                      # the mesh itself: its faces, in order
+    scene.shapes += mesh.triangles()               # or one Shape per face
 
-On the numba and WGSL paths the mesh triangles of a scene are one registered kind ("mesh",
-rtfgu.registry): their vertices and faces in arrays, found through a BVH.
+A ``Mesh`` in ``Scene.shapes`` stands for its faces in the order of ``faces``, as Suffern's
+grid holds a mesh's triangles (ch. 23): the numba and WGSL paths read its arrays
+(rtfgu.layout.compile_scene packs them with numpy) and never make a ``MeshTriangle``; the
+lecture layer traces the scene's ``with_faces()`` view, whose shapes are the faces made by
+``triangles()`` (once, then kept by the mesh). On the numba and WGSL paths the mesh
+triangles of a scene are one registered kind ("mesh", rtfgu.registry): their vertices and
+faces in arrays, found through a BVH.
 """
 from __future__ import annotations
 
+import hashlib
 from abc import abstractmethod
 
 import numpy as np
@@ -53,8 +60,13 @@ class Mesh:
               and finite, stored normalised (smooth shading: ``SmoothMeshTriangle``).
     material  None (``Material()``), one Material for every face, or a sequence of m.
 
-    Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (m).
+    Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (a tuple of
+    m: another material for a face is a new tuple).
     Bad input is a ValueError naming the field and, for a face, its number.
+
+    The arrays may be changed in place (a vertex moved): ``geometry_key()`` changes with
+    them, and what was made from them (the faces of ``triangles()``, a scene's BVH) is made
+    again.
     """
 
     def __init__(self, vertices, faces, color, normals=None, material=None):
@@ -65,6 +77,9 @@ class Mesh:
         self.colors = _per_face_colors(color, m)
         self.materials = _per_face_materials(material, m)
         _refuse_zero_area(self.vertices, self.faces)
+        self._triangles = None      # (key, [MeshTriangle per face]) once triangles() made them
+        # (materials, colours, surfaces(), [(material, cd is a colour)]) once surfaces() ran
+        self._surfaces = None
 
     @property
     def num_vertices(self) -> int:
@@ -74,11 +89,64 @@ class Mesh:
     def num_triangles(self) -> int:
         return len(self.faces)
 
+    def intersect_p(self, ray: Ray) -> bool:
+        """A Mesh is not a Shape: the lecture layer traces its faces (module docstring)."""
+        raise TypeError("a Mesh in Scene.shapes stands for its faces: trace scene.with_faces(), whose shapes "
+                        "are mesh.triangles() (rtfgu.render does)")
+
+    def geometry_key(self) -> str:
+        """A digest of the bytes of ``vertices``, ``faces`` and ``normals``, the geometry the
+        faces of ``triangles()`` are made from. It is computed again on every call (the arrays
+        hashed whole, no Python per face), so a change in place is seen. (A scene's BVH is
+        kept by comparing the arrays themselves, rtfgu.layout._cached.)"""
+        digest = hashlib.blake2b(digest_size=16)
+        for array in (self.vertices, self.faces, self.normals):
+            digest.update(b"-" if array is None else np.ascontiguousarray(array).tobytes())
+        return digest.hexdigest()
+
+    def color(self, face: int) -> Float3:
+        """The colour of face ``face``, as its MeshTriangle holds it."""
+        return Float3(*(float(c) for c in self.colors[face]))
+
+    def surfaces(self) -> list:
+        """The faces grouped by what they look like: (first face, material, faces) for each
+        distinct material and, where the material takes its colour from the shape (its cd is
+        not a colour of its own), each distinct face colour with it; in the order of their
+        first faces, the order a loop over ``triangles()`` meets them. ``faces`` is an int
+        array. numpy groups the faces: no Python per face but the materials' ids. The groups
+        are kept until ``materials`` is another tuple or ``colors`` changes."""
+        if self._surfaces is not None and self._surfaces[0] is self.materials \
+                and np.array_equal(self._surfaces[1], self.colors) \
+                and all(isinstance(m.cd, Float3) == own for m, own in self._surfaces[3]):
+            return self._surfaces[2]
+        m = len(self.faces)
+        ids = np.fromiter(map(id, self.materials), dtype=np.uint64, count=m)
+        out = []
+        for faces in _groups(ids):
+            material = self.materials[faces[0]]
+            if isinstance(material.cd, Float3):
+                out.append((int(faces[0]), material, faces))
+                continue
+            colors = self.colors[faces]
+            for part in _groups(colors):
+                out.append((int(faces[part[0]]), material, faces[part]))
+        out.sort(key=lambda group: group[0])
+        kinds = [(m, isinstance(m.cd, Float3)) for m in {id(g[1]): g[1] for g in out}.values()]
+        self._surfaces = (self.materials, self.colors.copy(), out, kinds)
+        return out
+
     def triangles(self) -> list:
         """A ``SmoothMeshTriangle`` per face if the mesh has vertex normals, otherwise a
-        ``FlatMeshTriangle`` per face, in the order of ``faces``."""
-        kind = FlatMeshTriangle if self.normals is None else SmoothMeshTriangle
-        return [kind(self, face) for face in range(len(self.faces))]
+        ``FlatMeshTriangle`` per face, in the order of ``faces`` (a new list of them).
+
+        They are made on the first call and kept, so every call gives the same objects (an
+        ``AreaLight`` of one of them is the light of the face the scene holds); they are
+        made again when the geometry, the colours or the materials have changed."""
+        key = (self.geometry_key(), self.colors.tobytes(), self.materials)
+        if self._triangles is None or self._triangles[0] != key:
+            kind = FlatMeshTriangle if self.normals is None else SmoothMeshTriangle
+            self._triangles = (key, [kind(self, face) for face in range(len(self.faces))])
+        return list(self._triangles[1])
 
 
 class MeshTriangle(Shape):
@@ -150,6 +218,17 @@ class SmoothMeshTriangle(MeshTriangle):
         return normalize(n)
 
 
+def _groups(keys: np.ndarray) -> list:
+    """The indices of equal keys (rows of a 2D ``keys``), one int array per distinct key, in
+    increasing order within each."""
+    if (keys == keys[0]).all():
+        return [np.arange(len(keys))]
+    _, inverse = np.unique(keys, axis=0 if keys.ndim == 2 else None, return_inverse=True)
+    inverse = inverse.reshape(-1)
+    order = np.argsort(inverse, kind="stable")
+    return np.split(order, np.cumsum(np.bincount(inverse))[:-1])
+
+
 def _rows_of_three(value, name: str, dtype) -> np.ndarray:
     try:
         array = np.asarray(value, dtype=dtype)
@@ -206,10 +285,10 @@ def _per_face_colors(color, m: int) -> np.ndarray:
     return array
 
 
-def _per_face_materials(material, m: int) -> list:
+def _per_face_materials(material, m: int) -> tuple:
     if material is None or isinstance(material, Material):
-        return [Material() if material is None else material] * m
-    materials = list(material)
+        return (Material() if material is None else material,) * m
+    materials = tuple(material)
     if len(materials) != m:
         raise ValueError("Mesh.material must be one Material or one per face (%d), got %d"
                          % (m, len(materials)))

@@ -77,15 +77,36 @@ class PathTrace(Tracer):
     def validate(self, scene) -> None:
         """Raise a ValueError naming the field if ``scene`` cannot be path traced."""
         from ..lights.area_light import AreaLight
+        from ..shapes.mesh import Mesh
 
         lit = {id(light.shape) for light in scene.lights if isinstance(light, AreaLight)}
         if len(lit) > MAX_AREA_LIGHTS:
             raise ValueError("Scene.lights: %s samples at most %d area lights, got %d"
                              % (type(self).__name__, MAX_AREA_LIGHTS, len(lit)))
         for i, shape in enumerate(scene.shapes):
+            if isinstance(shape, Mesh):
+                self._validate_mesh(i, shape, lit)
+                continue
             where = "Scene.shapes[%d].material (%s)" % (i, type(shape.material).__name__)
             shape.material.check_path_trace(where, shape.color)
             e = shape.material.emission
             if max(e.x, e.y, e.z) > 0.0 and id(shape) not in lit:
                 raise ValueError("Scene.shapes[%d] emits (its material's emission is %r) but no AreaLight in "
                                  "Scene.lights samples it: add AreaLight(scene.shapes[%d])" % (i, e, i))
+
+    @staticmethod
+    def _validate_mesh(i: int, mesh, lit: set) -> None:
+        """validate's checks for the faces of the Mesh ``Scene.shapes[i]``, once per distinct
+        material and colour (Mesh.surfaces); an emitting face must be an AreaLight's shape,
+        one of ``mesh.triangles()`` (made here only when a face emits)."""
+        for face, material, faces in mesh.surfaces():
+            where = "Scene.shapes[%d].materials[%d] (%s)" % (i, face, type(material).__name__)
+            material.check_path_trace(where, mesh.color(face))
+            e = material.emission
+            if max(e.x, e.y, e.z) > 0.0:
+                triangles = mesh.triangles()
+                for k in faces:
+                    if id(triangles[k]) not in lit:
+                        raise ValueError("Scene.shapes[%d] (a Mesh): face %d emits (its material's emission is %r) "
+                                         "but no AreaLight in Scene.lights samples it: add "
+                                         "AreaLight(mesh.triangles()[%d])" % (i, k, e, k))
