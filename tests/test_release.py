@@ -15,7 +15,7 @@ import pytest
 from PIL import Image
 
 from rtfgu.grading.assignments import ASSIGNMENTS, block_table
-from rtfgu.grading.checks import checks_for
+from rtfgu.grading.checks import checks_for, traces_a_scene
 from rtfgu.grading.generate import PACKAGE_DIR, find_blocks, solution_files, source_text, student_files, write_files
 from rtfgu.grading.release import build_package, probe_files, solves, write_release
 
@@ -360,7 +360,7 @@ def test_debug_pixel_compares_the_students_code_with_the_expected_values_at_the_
     for a in ASSIGNMENTS.values():
         stored = {p.name for p in (release / "rtfgu_checker" / "reference" / a.id).glob("*.pixels.npz")}
         assert stored == {c.slug + ".pixels.npz" for c in checks_for(a.id)
-                          if c.kind == "image" and c.visibility == "visible"}, a.id
+                          if traces_a_scene(c) and c.visibility == "visible"}, a.id
 
 
 def test_the_release_checker_names_where_an_endless_loop_is_and_waits_for_it_once(release, tmp_path):

@@ -161,16 +161,25 @@ def check(assignment, root=".", out_dir=None, time_limit: float | None = None, l
     return result
 
 
-def render(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, log=print) -> int:
-    """Render the assignment's homework images with the student's code into ``out_dir``
-    (default renders/<aNN>); 0 if every image rendered (or there is none), 1 otherwise."""
+def _images_of(assignment, root, out_dir, folder: str, what: str, log) -> tuple:
+    """(the assignment, the resolved root, the output folder made, or None with a message when
+    the assignment has no images to ``what``): what render and html start with."""
     a = get_assignment(assignment) if isinstance(assignment, str) else assignment
     root = Path(root).resolve()
     if not a.images:
-        log("%s has no images to render: its tests are `make check A=%s`" % (a.id, a.short))
-        return 0
-    out = Path(out_dir) if out_dir is not None else root / "renders" / a.short
+        log("%s has no images to %s: its tests are `make check A=%s`" % (a.id, what, a.short))
+        return a, root, None
+    out = Path(out_dir) if out_dir is not None else root / folder / a.short
     out.mkdir(parents=True, exist_ok=True)
+    return a, root, out
+
+
+def render(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, log=print) -> int:
+    """Render the assignment's homework images with the student's code into ``out_dir``
+    (default renders/<aNN>); 0 if every image rendered (or there is none), 1 otherwise."""
+    a, root, out = _images_of(assignment, root, out_dir, "renders", "render", log)
+    if out is None:
+        return 0
     failed = 0
     for name in a.images:
         data, output, failure, _ = run_probe(root, ("images", "render_homework",
@@ -244,13 +253,9 @@ def html(assignment, root=".", out_dir=None, width: int = 0, height: int = 0, lo
     package (``python -m rtfgu export-html``: the WGSL the student wrote, assembled as the wgpu
     path assembles it, with the slides' sphere test, intersect_sphere.wgsl, as a06's image test
     renders) into ``out_dir`` (default html/<aNN>); 0 if every page was written."""
-    a = get_assignment(assignment) if isinstance(assignment, str) else assignment
-    root = Path(root).resolve()
-    if not a.images:
-        log("%s has no images to make pages of: its tests are `make check A=%s`" % (a.id, a.short))
+    a, root, out = _images_of(assignment, root, out_dir, "html", "make pages of", log)
+    if out is None:
         return 0
-    out = Path(out_dir) if out_dir is not None else root / "html" / a.short
-    out.mkdir(parents=True, exist_ok=True)
     failed = 0
     for name in a.images:
         page = out / (name + ".html")
@@ -300,18 +305,16 @@ def main(argv=None) -> int:
     p.add_argument("--root", default=".", help="the folder holding your rtfgu/ (default: here)")
     p.add_argument("--out", default=None, help="default check-results/<aNN>")
     p.add_argument("--time-limit", type=float, default=None, help="seconds per test")
-    p = sub.add_parser("render", help="the assignment's images, rendered with your code (make render A=a03)")
-    p.add_argument("assignment", nargs="?")
-    p.add_argument("--root", default=".")
-    p.add_argument("--out", default=None, help="default renders/<aNN>")
-    p.add_argument("--width", type=int, default=0)
-    p.add_argument("--height", type=int, default=0)
-    p = sub.add_parser("html", help="the assignment's images as WebGPU pages of your code (make html A=a06)")
-    p.add_argument("assignment", nargs="?")
-    p.add_argument("--root", default=".")
-    p.add_argument("--out", default=None, help="default html/<aNN>")
-    p.add_argument("--width", type=int, default=0)
-    p.add_argument("--height", type=int, default=0)
+    for command, what, folder in (("render", "the assignment's images, rendered with your code (make render A=a03)",
+                                    "renders"),
+                                   ("html", "the assignment's images as WebGPU pages of your code (make html A=a06)",
+                                    "html")):
+        p = sub.add_parser(command, help=what)
+        p.add_argument("assignment", nargs="?")
+        p.add_argument("--root", default=".")
+        p.add_argument("--out", default=None, help="default %s/<aNN>" % folder)
+        p.add_argument("--width", type=int, default=0)
+        p.add_argument("--height", type=int, default=0)
     p = sub.add_parser("debug-pixel", help="one pixel of an image test, traced through your code beside the "
                                            "expected values (make debug-pixel A=a03 T=3.8 X=16 Y=32)")
     p.add_argument("assignment", nargs="?")

@@ -13,7 +13,7 @@ import math
 from ..float3 import Float3, as_float3, normalize
 from ..ray import Ray
 from .plane import Plane
-from .shape import Shape, nonzero_vector, plane_texcoord, positive
+from .shape import Shape, meets_plane, nonzero_vector, plane_texcoord, positive
 
 
 class Disk(Shape):
@@ -25,12 +25,12 @@ class Disk(Shape):
         self._plane = Plane(self.center, self.normal, color)
 
     def intersect_p(self, ray: Ray) -> bool:
-        probe = Ray(ray.origin, ray.direction, ray.tmin, ray.tmax)
-        if not self._plane.intersect_p(probe):
+        t = meets_plane(self._plane, ray)
+        if t is None:
             return False
-        to_hit = ray(probe.tmax) - self.center
+        to_hit = ray(t) - self.center
         if to_hit.length_squared() <= self.radius * self.radius:
-            ray.tmax = probe.tmax
+            ray.tmax = t
             return True
         return False
 

@@ -22,7 +22,7 @@ from __future__ import annotations
 from ..float3 import Float3, as_float3, cross, dot, normalize
 from ..ray import Ray
 from .plane import Plane
-from .shape import Shape, nonzero_vector
+from .shape import Shape, meets_plane, nonzero_vector
 
 # How far from perpendicular a and b may be: |a . b| <= PERPENDICULAR |a| |b|. The
 # projection test above is the rectangle's only when they are perpendicular; a rotated
@@ -45,17 +45,17 @@ class Rectangle(Shape):
         self._plane = Plane(self.p0, self.normal, color)
 
     def intersect_p(self, ray: Ray) -> bool:
-        probe = Ray(ray.origin, ray.direction, ray.tmin, ray.tmax)
-        if not self._plane.intersect_p(probe):
+        t = meets_plane(self._plane, ray)
+        if t is None:
             return False
-        d = ray(probe.tmax) - self.p0
+        d = ray(t) - self.p0
         ddota = dot(d, self.a)
         if ddota < 0.0 or ddota > self.a_len_squared:
             return False
         ddotb = dot(d, self.b)
         if ddotb < 0.0 or ddotb > self.b_len_squared:
             return False
-        ray.tmax = probe.tmax
+        ray.tmax = t
         return True
 
     def normal_at(self, position: Float3) -> Float3:

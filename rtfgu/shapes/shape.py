@@ -66,3 +66,11 @@ def plane_texcoord(position: Float3, point: Float3, normal: Float3) -> tuple:
     tangent = cross(binormal, n)
     d = position - point
     return dot(d, tangent), dot(d, binormal)
+
+
+def meets_plane(plane, ray):
+    """The t at which ``ray`` meets ``plane`` within [tmin, tmax), by the plane's own
+    intersect_p on a copy of the ray (the ray is not changed), or None: the first step of the
+    shapes that lie in a plane, the Disk and the Rectangle (Suffern ch. 19)."""
+    probe = Ray(ray.origin, ray.direction, ray.tmin, ray.tmax)
+    return probe.tmax if plane.intersect_p(probe) else None

@@ -1,3 +1,4 @@
+// release: solves a02
 // Suffern's fish-eye camera (ch. 11.2, rtfgu/cameras/fish_eye.py): the image point's polar
 // coordinates r, alpha give the ray psi = r psi_max away from v, alpha around it from b1.
 // Outside the unit circle (r^2 > 1) the ray is blank: its interval [BLANK_TMIN, BLANK_TMAX)

@@ -1,3 +1,4 @@
+// release: solves a02
 // Suffern's spherical panoramic camera (ch. 11.3, rtfgu/cameras/spherical.py): the image
 // point's longitude lambda = sx lambda_max and latitude psi = sy psi_max, the book's polar
 // angles phi = pi - lambda and theta = pi / 2 - psi written out.

@@ -1,3 +1,4 @@
+// release: solves a02
 // Suffern's stereo camera (ch. 12, rtfgu/cameras/stereo_camera.py): two pinhole views side
 // by side, hres + pixel_gap + hres pixels of the stereo image. The column c picks the view
 // on the left (eye moved by offset along b1, its window by shift), the gap (a blank ray,

@@ -109,10 +109,11 @@ BEYOND = (0.25, 0.5, 0.75)
 
 class _Traced:
     """A tracer that records the rays a material sends on (their origin, direction, interval and
-    depth) and returns BEYOND for each."""
+    depth) and returns BEYOND for each; with ``run``, it ends each at that distance (its tmax,
+    as a trace that found a hit there leaves it)."""
 
-    def __init__(self, rt):
-        self.rt, self.rays = rt, []
+    def __init__(self, rt, run=None):
+        self.rt, self.rays, self.run = rt, [], run
         self.samples_area_lights = False
 
     def trace_ray(self, ray, depth=0):
@@ -120,6 +121,8 @@ class _Traced:
                           "direction": vec(ray.direction, "the traced ray's direction"),
                           "tmin": num(ray.tmin, "the traced ray's tmin"), "tmax": num(ray.tmax, "the traced ray's tmax"),
                           "depth": depth})
+        if self.run is not None:
+            ray.tmax = self.run
         return self.rt.Float3(*BEYOND)
 
 

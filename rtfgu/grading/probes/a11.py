@@ -2,34 +2,18 @@
 law (``transmittance``) and Whitted's dielectric (``Dielectric.shade``) (Suffern ch. 28;
 02562 worksheet 8).
 
-``Dielectric.shade`` runs at a chosen hit in a scene whose tracer records the rays it is asked
-to trace, says each ray ran 2 units before it hit something, and returns BEYOND for it (as
-a05's probes do): the answer is the rays and the radiance shade makes of them."""
+``Dielectric.shade`` runs at a chosen hit in a scene whose tracer (a05's) records the rays it
+is asked to trace, says each ray ran RUN units before it hit something, and returns a05's
+BEYOND for it: the answer is the rays and the radiance shade makes of them."""
 from __future__ import annotations
 
 import importlib
 
 from .a04 import _hit
+from .a05 import _Traced
 from .support import Cases, image, num, vec
 
-BEYOND = (0.25, 0.5, 0.75)
 RUN = 2.0             # the distance every traced ray runs before it hits
-
-
-class _Traced:
-    """A tracer that records the rays a material sends on, ends each at RUN (its tmax, as a
-    trace that found a hit there leaves it) and returns BEYOND for it."""
-
-    def __init__(self, rt):
-        self.rt, self.rays = rt, []
-        self.samples_area_lights = False
-
-    def trace_ray(self, ray, depth=0):
-        self.rays.append({"origin": vec(ray.origin, "the traced ray's origin"),
-                          "direction": vec(ray.direction, "the traced ray's direction"),
-                          "tmin": num(ray.tmin, "the traced ray's tmin"), "depth": depth})
-        ray.tmax = RUN
-        return self.rt.Float3(*BEYOND)
 
 
 def _fresnel(rt):
@@ -68,7 +52,7 @@ def observe_dielectric(rt, cases):
     for position, normal, origin, ior, absorption, what in cases:
         def run(position=position, normal=normal, origin=origin, ior=ior, absorption=absorption):
             scene = rt.Scene(None)
-            tracer = _Traced(rt)
+            tracer = _Traced(rt, RUN)
             scene.tracer = tracer
             r = rt.Ray(F(*origin), rt.float3.normalize(F(*position) - F(*origin)), 1e-5, 7.0)
             material = _dielectric(rt).Dielectric(ior=ior, absorption=absorption)
