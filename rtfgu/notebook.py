@@ -38,10 +38,10 @@ def best_backend() -> str:
 
 def in_notebook() -> bool:
     """Whether this runs in a Jupyter kernel (not a script, not the terminal IPython)."""
-    if importlib.util.find_spec("IPython") is None:
+    try:
+        from IPython import get_ipython
+    except ImportError:
         return False
-    from IPython import get_ipython
-
     shell = get_ipython()
     return shell is not None and "IPKernelApp" in getattr(shell, "config", {})
 

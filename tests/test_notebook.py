@@ -16,6 +16,9 @@ from rtfgu.scenes import get_scene
 
 
 def test_outside_a_notebook_show_writes_the_image_and_says_where(tmp_path, monkeypatch, capsys):
+    assert notebook.in_notebook() is False          # IPython may be installed: no kernel runs here
+    monkeypatch.setitem(sys.modules, "IPython", None)   # and where it is not installed at all
+    assert notebook.in_notebook() is False
     monkeypatch.chdir(tmp_path)
     scene = get_scene("default_phong_sphere")()
     image = rtfgu.show(scene, 24, 16)

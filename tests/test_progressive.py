@@ -153,32 +153,6 @@ def test_a_scene_sampler_that_is_not_a_sampler_is_refused():
         rtfgu.render(scene, 4, 4)
 
 
-def test_show_displays_once_and_updates_per_pass(monkeypatch):
-    """rtfgu.show in a notebook: IPython's display() once, then handle.update per pass
-    (IPython is replaced by a recorder; rtfgu does not depend on it)."""
-    import sys
-    import types
-
-    calls = []
-
-    class Handle:
-        def update(self, picture):
-            calls.append(("update", picture.size))
-
-    def display(picture, display_id=False):
-        calls.append(("display", picture.size, display_id))
-        return Handle()
-
-    ipython = types.ModuleType("IPython")
-    ipython.display = types.ModuleType("IPython.display")
-    ipython.display.display = display
-    monkeypatch.setitem(sys.modules, "IPython", ipython)
-    monkeypatch.setitem(sys.modules, "IPython.display", ipython.display)
-    image = rtfgu.show(dof_scene(), W, H, backend="numba", spp=9, passes=3)
-    assert calls == [("display", (W, H), True), ("update", (W, H)), ("update", (W, H))]
-    assert np.array_equal(image, render(dof_scene(), W, H, "numba", spp=9))
-
-
 def test_a_sampler_asked_for_again_is_made_once():
     """spp=N makes the sets of the scene's kind once; the next render, pass or notebook
     refresh reuses them (making them is pure Python)."""
