@@ -737,3 +737,21 @@ def test_the_gradebook_error_column_names_why_tests_could_not_judge_the_code(tmp
     assert re.match(r"time limit \(1 s\) at brdfs/lambertian.py:(%d|%d) \(1 test\); time limit in test 4\.\d+ \(\d+ "
                     r"tests?\)" % (loop, loop + 1), errors["erin"]), errors["erin"]
     assert "exception: RuntimeError: boom" in errors["fred"], errors["fred"]
+
+
+def test_a_killed_graders_work_folder_is_removed_when_its_sandbox_user_is_claimed_again(tmp_path):
+    """A grader killed mid-grading leaves its work folder (root's, readable by the group of
+    its sandbox user): the next grader to claim that user removes it before any submission
+    runs as that user, and leaves every other folder alone."""
+    from rtfgu.grading import sandbox
+
+    stale = tmp_path / "rtfgu-grade-stale"
+    other_group = tmp_path / "rtfgu-grade-other"
+    unrelated = tmp_path / "rtfgu-release-gaps-x"
+    for folder, gid in ((stale, 64999), (other_group, 64998), (unrelated, 64999)):
+        (folder / "work" / "package").mkdir(parents=True)
+        (folder / "work" / "package" / "sphere.py").write_text("solved\n")
+        os.chown(folder, os.geteuid(), gid)
+    removed = sandbox.remove_stale_work_folders(64999, str(tmp_path))
+    assert removed == [str(stale)] and not stale.exists()
+    assert other_group.exists() and unrelated.exists()

@@ -656,6 +656,7 @@ def sandbox_uid() -> int:
         _UID_CLAIM[pid] = (uid, fd)
         _kill_user(uid)
         clean_user_files(uid)
+        remove_stale_work_folders(uid)
         return uid
     os.close(fd)
     raise RuntimeError("all %d sandbox users (uid %d and up) are taken by other graders"
@@ -800,6 +801,31 @@ def _kill_user(uid: int) -> None:
 
 
 SWEEP_DEPTH = 8                        # world-writable folders inside world-writable folders looked into
+
+
+def remove_stale_work_folders(gid: int, folder: str | None = None) -> list:
+    """Remove the work folders (work_folder: root's, group ``gid``) that a grader holding this
+    sandbox user left when it was killed before it could remove them: their packages are
+    readable by the group, so the next submission graded as that user would find another
+    student's files there. Called when the user is claimed, when no live grader holds it.
+    Returns the folders removed."""
+    folder = folder or tempfile.gettempdir()
+    removed = []
+    try:
+        entries = list(os.scandir(folder))
+    except OSError:
+        return removed
+    for entry in entries:
+        if not entry.name.startswith("rtfgu-grade-"):
+            continue
+        try:
+            st = entry.stat(follow_symlinks=False)
+        except OSError:
+            continue
+        if stat.S_ISDIR(st.st_mode) and st.st_uid == os.geteuid() and st.st_gid == gid:
+            shutil.rmtree(entry.path, ignore_errors=True)
+            removed.append(entry.path)
+    return removed
 
 
 def clean_user_files(uid: int) -> list:
