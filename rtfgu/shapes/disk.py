@@ -11,31 +11,20 @@ from __future__ import annotations
 import math
 
 from ..float3 import Float3, as_float3, normalize
-from ..ray import Ray
-from .plane import Plane
-from .shape import Shape, meets_plane, nonzero_vector, plane_texcoord, positive
+from .planar_shape import PlanarShape
+from .shape import nonzero_vector, plane_texcoord, positive
 
 
-class Disk(Shape):
+class Disk(PlanarShape):
     def __init__(self, center, normal, radius: float, color, material=None):
         super().__init__(color, material)
         self.center = as_float3(center, "Disk.center")
         self.normal = nonzero_vector(normal, "Disk.normal")
         self.radius = positive(radius, "Disk.radius")
-        self._plane = Plane(self.center, self.normal, color)
+        self.set_plane(self.center, self.normal)
 
-    def intersect_p(self, ray: Ray) -> bool:
-        t = meets_plane(self._plane, ray)
-        if t is None:
-            return False
-        to_hit = ray(t) - self.center
-        if to_hit.length_squared() <= self.radius * self.radius:
-            ray.tmax = t
-            return True
-        return False
-
-    def normal_at(self, position: Float3) -> Float3:
-        return self._plane.normal_at(position)
+    def contains(self, position: Float3) -> bool:
+        return (position - self.center).length_squared() <= self.radius * self.radius
 
     def bounds(self):
         """The disk's exact box: along axis a it reaches radius sqrt(1 - n_a^2) from the centre."""

@@ -20,9 +20,8 @@ with area = |a| |b|, and ``get_normal`` = n: it emits from the side n points to.
 from __future__ import annotations
 
 from ..float3 import Float3, as_float3, cross, dot, normalize
-from ..ray import Ray
-from .plane import Plane
-from .shape import Shape, meets_plane, nonzero_vector
+from .planar_shape import PlanarShape
+from .shape import nonzero_vector
 
 # How far from perpendicular a and b may be: |a . b| <= PERPENDICULAR |a| |b|. The
 # projection test above is the rectangle's only when they are perpendicular; a rotated
@@ -30,33 +29,33 @@ from .shape import Shape, meets_plane, nonzero_vector
 PERPENDICULAR = 1e-5
 
 
-class Rectangle(Shape):
+def perpendicular_edges(a, b) -> tuple:
+    """The edge vectors a and b, refused unless nonzero and perpendicular (PERPENDICULAR)."""
+    a = nonzero_vector(a, "Rectangle.a")
+    b = nonzero_vector(b, "Rectangle.b")
+    if abs(dot(a, b)) > PERPENDICULAR * a.length() * b.length():
+        raise ValueError("Rectangle.a and Rectangle.b must be perpendicular edge vectors, got a = %r, "
+                         "b = %r (a . b = %r)" % (a, b, dot(a, b)))
+    return a, b
+
+
+class Rectangle(PlanarShape):
     def __init__(self, p0, a, b, color, material=None):
         super().__init__(color, material)
         self.p0 = as_float3(p0, "Rectangle.p0")
-        self.a = nonzero_vector(a, "Rectangle.a")
-        self.b = nonzero_vector(b, "Rectangle.b")
-        if abs(dot(self.a, self.b)) > PERPENDICULAR * self.a.length() * self.b.length():
-            raise ValueError("Rectangle.a and Rectangle.b must be perpendicular edge vectors, got a = %r, "
-                             "b = %r (a . b = %r)" % (self.a, self.b, dot(self.a, self.b)))
+        self.a, self.b = perpendicular_edges(a, b)
         self.normal = normalize(cross(self.a, self.b))
         self.a_len_squared = dot(self.a, self.a)
         self.b_len_squared = dot(self.b, self.b)
-        self._plane = Plane(self.p0, self.normal, color)
+        self.set_plane(self.p0, self.normal)
 
-    def intersect_p(self, ray: Ray) -> bool:
-        t = meets_plane(self._plane, ray)
-        if t is None:
-            return False
-        d = ray(t) - self.p0
+    def contains(self, position: Float3) -> bool:
+        d = position - self.p0
         ddota = dot(d, self.a)
         if ddota < 0.0 or ddota > self.a_len_squared:
             return False
         ddotb = dot(d, self.b)
-        if ddotb < 0.0 or ddotb > self.b_len_squared:
-            return False
-        ray.tmax = t
-        return True
+        return 0.0 <= ddotb <= self.b_len_squared
 
     def normal_at(self, position: Float3) -> Float3:
         return self.normal
