@@ -203,7 +203,9 @@ class FlatMesh:
     float type, each mesh's once; ``faces`` (F, 4) int32 in the BVH's leaf order, a face
     [i0, i1, i2, scene index] or a sphere [SPHERE_ROW, row in the sphere table, 0, scene
     index]; ``normals`` (V, 3) vertex normals (zero for a flat mesh's vertices) or None when
-    every mesh is flat; ``bvh`` the FlatBVH over the rows (its build_seconds: 0 when it came
+    every mesh is flat; ``uvs`` (V, 3) per vertex (u, v, 1), (0, 0, 0) for a vertex of a mesh
+    without uvs (whose faces' (u, v) are then their barycentrics), or None when no mesh has
+    uvs; ``bvh`` the FlatBVH over the rows (its build_seconds: 0 when it came
     from the scene's cache); ``spheres``: whether it holds the spheres (the sphere table then
     has no loop of its own)."""
 
@@ -213,12 +215,13 @@ class FlatMesh:
     bvh: object
     build_seconds: float = 0.0
     spheres: bool = False
+    uvs: np.ndarray = None
 
     @property
     def nbytes(self) -> int:
-        """The bytes of the BVH and the triangle data (vertices, faces, normals)."""
-        return self.vertices.nbytes + self.faces.nbytes + self.bvh.nbytes + (
-            0 if self.normals is None else self.normals.nbytes)
+        """The bytes of the BVH and the triangle data (vertices, faces, normals, uvs)."""
+        return self.vertices.nbytes + self.faces.nbytes + self.bvh.nbytes + sum(
+            0 if a is None else a.nbytes for a in (self.normals, self.uvs))
 
 
 @dataclass
@@ -515,6 +518,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add("mesh")
         if mesh.normals is not None:
             features.add("smooth_mesh")
+        if mesh.uvs is not None:
+            features.add("uv_mesh")
         if bvh_spheres:
             features.add("bvh_spheres")
     for kind in SHAPES:
@@ -603,7 +608,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
     from .shapes.mesh import SmoothMeshTriangle
 
     blocks = {}     # (id(mesh), smooth) -> first vertex: a mesh's vertices are laid out once
-    vertex_parts, normal_parts = [], []
+    vertex_parts, normal_parts, uv_parts = [], [], []
     face_parts, loose = [], []      # loose: the rows of MeshTriangles not yet in face_parts
 
     def first_vertex(mesh, smooth: bool) -> int:
@@ -612,6 +617,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
             blocks[key] = sum(len(v) for v in vertex_parts)
             vertex_parts.append(mesh.vertices)
             normal_parts.append(mesh.normals if smooth else None)
+            uv_parts.append(mesh.uvs)
         return blocks[key]
 
     for i, shape in mesh_faces:
@@ -634,6 +640,9 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
     smooth_any = any(n is not None for n in normal_parts)
     normals = np.concatenate([np.zeros_like(v) if n is None else n for v, n in zip(vertex_parts, normal_parts)]) \
         if smooth_any else None
+    uvs = np.concatenate([np.zeros_like(v) if t is None else np.column_stack([t, np.ones(len(t))])
+                          for v, t in zip(vertex_parts, uv_parts)]) \
+        if any(t is not None for t in uv_parts) else None
     num_triangles = len(faces)
     if spheres is not None:
         # A sphere's row: [-1, its row in the sphere table, 0, its place in Scene.shapes];
@@ -650,16 +659,18 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
     else:
         sphere_lo = sphere_hi = np.zeros((0, 3))
     # What the BVH and the arrays depend on: the vertices, the rows, the spheres' boxes and
-    # the normals (_cached compares them with those of the last compile).
+    # the normals and uvs (_cached compares them with those of the last compile).
 
     def make():
         lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
         bvh = flat_bvh.build(np.concatenate([lo, sphere_lo]), np.concatenate([hi, sphere_hi]))
         return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
                         normals=None if normals is None else normals.astype(dtype),
+                        uvs=None if uvs is None else uvs.astype(dtype),
                         bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None)
 
-    inputs = (vertices, faces, sphere_lo, sphere_hi, np.zeros(0) if normals is None else normals)
+    inputs = (vertices, faces, sphere_lo, sphere_hi, np.zeros(0) if normals is None else normals,
+              np.zeros(0) if uvs is None else uvs)
     mesh, reused = _cached(scene, ("mesh", np.dtype(dtype).name), inputs, make)
     return dataclasses.replace(mesh, build_seconds=0.0) if reused else mesh
 

@@ -5,12 +5,17 @@ PLY files into a Mesh; the 02562 worksheets read their triangle meshes from OBJ 
     scene.shapes.append(mesh)                      # its faces (or scene.shapes += mesh.triangles())
 
 What is read: ``v`` (x y z, optionally w or r g b, which are ignored), ``vn``, ``vt``
-(checked, not used), ``f`` with 3 or more corners, ``mtllib`` (one per file) and ``usemtl``.
+(u v, an optional w ignored), ``f`` with 3 or more corners, ``mtllib`` (one per file) and ``usemtl``.
 A polygon becomes the fan of triangles (c0, c_i, c_i+1) around its first corner, wound as
 the polygon. From the MTL file, ``Kd`` is a face's colour and ``Ke`` its emission (on a copy
 of ``material``); a face before any ``usemtl``, or whose MTL material has no ``Kd``, gets
 ``default_color``. Vertex normals, when every ``f`` corner names one (``v//vn`` or
 ``v/vt/vn``), make the mesh smooth-shaded (``SmoothMeshTriangle``); otherwise it is flat.
+Texture coordinates, when every corner names one (``v/vt`` or ``v/vt/vn``), are the mesh's
+``uvs``: a face's (u, v) is its corners' interpolated (Suffern's UV mesh triangles), with
+(0, 0) the image's bottom-left corner as in ``ImageTexture``. A vertex met with two ``vt``s
+becomes two vertices at the same place (trimesh's split), so the faces still share edges
+exactly.
 ``g``, ``o``, ``s``, ``l``, ``p`` and comments are skipped. The faces come grouped by
 material, the materials in the order they first appear, each material's faces in file order.
 
@@ -100,7 +105,7 @@ def load_obj(path, material: Material | None = None, default_color=DEFAULT_COLOR
                   for geometry in _trimesh_geometries(part, text, path)]
 
     smooth, textured = "vn" in form, "vt" in form
-    vertices, faces, normals, names = [], [], [], []
+    vertices, faces, normals, uvs, names = [], [], [], [], []
     offset = 0
     for name, geometry in geometries:
         polygons = np.asarray(geometry.get("faces"))
@@ -117,8 +122,12 @@ def load_obj(path, material: Material | None = None, default_color=DEFAULT_COLOR
             warnings.warn("load_obj: %s: trimesh returned no vertex normals for some faces; "
                           "the mesh is flat-shaded" % path)
             smooth = False
-        if textured and getattr(geometry.get("visual"), "uv", None) is None:
+        uv = getattr(geometry.get("visual"), "uv", None) if textured else None
+        if textured and (uv is None or np.shape(uv) != (len(v), 2)):
             _diagnose(text, path)
+            raise ValueError("load_obj: %s: trimesh returned texture coordinates %s for %d vertices"
+                             % (path, None if uv is None else np.shape(uv), len(v)))
+        uvs.append(uv)
         vertices.append(v)
         faces.append(_fan(polygons) + offset)
         normals.append(n)
@@ -134,6 +143,10 @@ def load_obj(path, material: Material | None = None, default_color=DEFAULT_COLOR
             raise ValueError("load_obj: %s: a vertex normal is zero or not finite" % path)
     else:
         normals = None
+    uvs = np.asarray(np.concatenate(uvs), dtype=np.float64) if textured else None
+    if uvs is not None and not np.isfinite(uvs).all():
+        _diagnose(text, path)
+        raise ValueError("load_obj: %s: a texture coordinate is not finite" % path)
     counts = [len(f) for f in faces]
     colors, materials = _face_materials(names, counts, library, material, default_color)
 
@@ -149,7 +162,7 @@ def load_obj(path, material: Material | None = None, default_color=DEFAULT_COLOR
         materials = [m for m, k in zip(materials, keep) if k]
         if len(triangles) == 0:
             raise ValueError("load_obj: %s: every triangle spans zero area" % path)
-    return Mesh(vertices, triangles, colors, normals=normals, material=materials)
+    return Mesh(vertices, triangles, colors, normals=normals, material=materials, uvs=uvs)
 
 
 def _where(path: Path, line: int, field: str) -> str:

@@ -9,7 +9,7 @@ What is read: ``format ascii 1.0``, ``binary_little_endian 1.0`` and ``binary_bi
 the element ``vertex`` with the properties ``x``, ``y``, ``z``, optionally ``nx``, ``ny``,
 ``nz`` (all three: the mesh is smooth-shaded, ``SmoothMeshTriangle``) and a texture
 coordinate pair ``u v``, ``s t``, ``texture_u texture_v`` or ``texture_s texture_t``
-(checked to be finite; a Mesh keeps no texture coordinates, as for load_obj's ``vt``); the
+(checked to be finite; the mesh's ``uvs``, as load_obj's ``vt``); the
 element ``face`` with the list ``vertex_indices`` (or ``vertex_index``), 0-based. A face of
 more than three corners becomes the fan of triangles (c0, c_i, c_i+1) around its first corner,
 wound as the face. Every other element and property (colours, edges, materials) is read past
@@ -100,7 +100,7 @@ def load_ply(path, material: Material | None = None, default_color=DEFAULT_COLOR
         tables, where = _read_binary(data, body, order, elements, path)
     vertex = next(e for e in elements if e.name == "vertex")
     face = next(e for e in elements if e.name == "face")
-    vertices, normals = _vertices(tables["vertex"], vertex, where["vertex"], path)
+    vertices, normals, uvs = _vertices(tables["vertex"], vertex, where["vertex"], path)
     triangles, polygon_of = _triangles(tables["face"], face, where["face"], len(vertices), path)
     if len(triangles) == 0:
         raise ValueError("load_ply: %s, line %d: no faces (element face has 0 rows): an empty mesh"
@@ -117,7 +117,7 @@ def load_ply(path, material: Material | None = None, default_color=DEFAULT_COLOR
         triangles = np.delete(triangles, flat, axis=0)
         if len(triangles) == 0:
             raise ValueError("load_ply: %s: every triangle spans zero area" % path)
-    return Mesh(vertices, triangles, color, normals=normals,
+    return Mesh(vertices, triangles, color, normals=normals, uvs=uvs,
                 material=Material() if material is None else material)
 
 
@@ -463,22 +463,24 @@ def _truncated(path, element, row, start, p):
 # --- the mesh ---------------------------------------------------------------------------------
 
 def _vertices(table: dict, element: _Element, where, path: Path):
-    """(the (n, 3) positions, the (n, 3) normals or None), each checked."""
+    """(the (n, 3) positions, the (n, 3) normals or None, the (n, 2) texture coordinates or
+    None), each checked."""
     positions = np.stack([table[n] for n in ("x", "y", "z")], axis=1)
     _check_finite(positions, "the position", element, where, path)
+    uvs = None
     for u, v in TEXCOORDS:
-        if element.property((u,)) is not None and element.property((v,)) is not None:
-            _check_finite(np.stack([table[u], table[v]], axis=1), "the texture coordinate",
-                          element, where, path)
+        if uvs is None and element.property((u,)) is not None and element.property((v,)) is not None:
+            uvs = np.stack([table[u], table[v]], axis=1).astype(np.float64)
+            _check_finite(uvs, "the texture coordinate", element, where, path)
     if element.property(("nx",)) is None:
-        return positions, None
+        return positions, None, uvs
     normals = np.stack([table[n] for n in NORMALS], axis=1)
     _check_finite(normals, "the normal", element, where, path)
     zero = np.flatnonzero(~normals.any(axis=1))
     if len(zero):
         raise ValueError("%s: the normal (nx, ny, nz) is the zero vector"
                          % _where(path, element.name, int(zero[0]), where))
-    return positions, normals
+    return positions, normals, uvs
 
 
 def _check_finite(values: np.ndarray, what: str, element, where, path) -> None:

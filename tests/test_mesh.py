@@ -150,6 +150,11 @@ def test_smooth_normals_that_cancel_give_the_flat_normal():
      r"Mesh.normals must have one row per vertex"),
     (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], GREY, normals=[(0, 0, 1), (0, 0, 0), (0, 0, 1)]),
      r"Mesh.normals\[1\] is the zero vector"),
+    (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], GREY, uvs=[(0, 0)] * 2),
+     r"Mesh.uvs must have one \(u, v\) row per vertex \(3, 2\)"),
+    (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], GREY, uvs=[(0, 0), (1, math.nan), (0, 1)]),
+     r"Mesh.uvs\[1\] must be finite"),
+    (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], GREY, uvs="uv"), r"Mesh.uvs must be an \(n, 2\)"),
     (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], [GREY, GREY]), r"Mesh.color must be one colour"),
     (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], (math.inf, 0, 0)), r"Mesh.color\[0\] must be finite"),
     (lambda: Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)], GREY, material=[Material()] * 2),
@@ -369,6 +374,69 @@ f 2/2/2 4/1/1 3/3/3
         for i in (shape.index0, shape.index1, shape.index2):
             p = tuple(mesh.vertices[i])
             assert np.allclose(components(shape.normal_at(Float3(*p))), expected[p], rtol=0, atol=1e-15)
+
+
+def test_uv_mesh_triangles_interpolate_their_corners_uvs_exactly():
+    """Suffern's UV mesh triangles: (u, v) = (1 - beta - gamma) uv0 + beta uv1 + gamma uv2,
+    checked against fractions at dyadic points (every product exact in binary)."""
+    from fractions import Fraction as F
+    corners = [(0, 0, 0), (2, 0, 0), (0, 4, 0)]
+    uvs = [(0.25, 0.5), (0.75, 0.5), (0.25, 1.5)]
+    mesh = Mesh(np.array(corners, float), np.array([(0, 1, 2)]), GREY, uvs=uvs)
+    face = mesh.triangles()[0]
+    for x, y in [(0.5, 1.0), (0.25, 0.5), (1.0, 0.0), (0.0, 4.0), (1.0, 2.0)]:
+        beta, gamma = F(x) / 2, F(y) / 4
+        alpha = 1 - beta - gamma
+        exact = tuple(alpha * F(uvs[0][k]) + beta * F(uvs[1][k]) + gamma * F(uvs[2][k]) for k in range(2))
+        assert face.texcoord(Float3(x, y, 0.0)) == exact
+        assert face.barycentric(Float3(x, y, 0.0)) == (beta, gamma)
+    assert Mesh(np.array(corners, float), np.array([(0, 1, 2)]), GREY).triangles()[0].texcoord(
+        Float3(0.5, 1.0, 0.0)) == (0.25, 0.25)            # without uvs: the barycentrics
+
+
+def test_load_obj_reads_texture_coordinates_per_corner(tmp_path):
+    """A position with two vt is two vertices at one place (the faces still share the edge);
+    v/vt and v/vt/vn give uvs, v and v//vn none."""
+    path = write(tmp_path, "quad.obj", """\
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0 1
+vt 0.5 0.5 0.0
+f 1/1 2/2 3/3
+f 1/5 3/3 4/4
+""")
+    mesh = load_obj(path)
+    assert mesh.num_vertices == 5 and mesh.normals is None
+    at = {(tuple(mesh.vertices[i]), tuple(mesh.uvs[i])) for i in range(5)}
+    assert at == {((0, 0, 0), (0, 0)), ((1, 0, 0), (1, 0)), ((1, 1, 0), (1, 1)), ((0, 1, 0), (0, 1)),
+                  ((0, 0, 0), (0.5, 0.5))}
+    first, second = mesh.triangles()
+    assert first.texcoord(Float3(0.75, 0.25, 0.0)) == (0.75, 0.25)
+    # (0.25, 0.75) on the second face is beta 0.25 toward (1, 1) and gamma 0.5 toward (0, 1):
+    # 0.25 (0.5, 0.5) + 0.25 (1, 1) + 0.5 (0, 1).
+    assert second.texcoord(Float3(0.25, 0.75, 0.0)) == (0.375, 0.875)
+    plain = write(tmp_path, "plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n")
+    assert load_obj(plain).uvs is None
+
+
+def test_the_globe_is_closed_outward_and_textured():
+    mesh = load_obj(mesh_path("globe.obj"))
+    v, f = mesh.vertices, mesh.faces
+    n = np.cross(v[f[:, 1]] - v[f[:, 0]], v[f[:, 2]] - v[f[:, 0]])
+    assert (np.einsum("ij,ij->i", n, v[f].mean(axis=1)) > 0).all()
+    assert mesh.uvs is not None and mesh.normals is not None
+    assert mesh.uvs.min() == 0.0 and mesh.uvs.max() == 1.0
+    # Closed: every edge, by position, is shared by exactly two faces.
+    key = {tuple(p): k for k, p in enumerate(np.unique(v, axis=0).tolist())}
+    ids = np.array([[key[tuple(v[i])] for i in face] for face in f.tolist()])
+    edges = np.sort(np.concatenate([ids[:, [0, 1]], ids[:, [1, 2]], ids[:, [2, 0]]]), axis=1)
+    _, counts = np.unique(edges, axis=0, return_counts=True)
+    assert (counts == 2).all()
 
 
 def test_load_obj_reads_negative_indices_comments_tabs_and_crlf(tmp_path):

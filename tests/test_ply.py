@@ -82,7 +82,7 @@ def test_the_obj_polygons_and_the_ply_polygons_are_one_mesh(tmp_path, fmt):
 
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_normals_texture_coordinates_and_other_elements(tmp_path, fmt):
-    """Vertex normals make the mesh smooth; u v, colours and an extra element are read past."""
+    """Vertex normals make the mesh smooth; u v are its uvs; colours and an extra element are read past."""
     props = XYZ + [("double", "nx"), ("double", "ny"), ("double", "nz"), ("float", "u"), ("float", "v"),
                    ("uchar", "red"), ("uchar", "green"), ("uchar", "blue")]
     rows = [(0, 0, 0, 0, 0, 2, 0, 0, 255, 0, 0), (1, 0, 0, 0.6, 0, 0.8, 1, 0, 0, 255, 0),
@@ -98,6 +98,7 @@ def test_normals_texture_coordinates_and_other_elements(tmp_path, fmt):
     mesh = load_ply(path)
     assert mesh.num_triangles == 2 and mesh.normals is not None
     assert mesh.normals.tolist() == [[0, 0, 1], [0.6, 0, 0.8], [0, -0.6, 0.8], [0, 0, 1]]
+    assert mesh.uvs.tolist() == [[0, 0], [1, 0], [0, 1], [1, 1]]
     expected = {(0, 0, 0): (0, 0, 1), (1, 0, 0): (0.6, 0, 0.8), (0, 1, 0): (0, -0.6, 0.8), (1, 1, 0): (0, 0, 1)}
     for shape in mesh.triangles():
         assert isinstance(shape, SmoothMeshTriangle)

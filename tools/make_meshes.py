@@ -1,7 +1,7 @@
 """Write the meshes shipped in rtfgu/meshes/ (rtfgu/meshes/README.md says what each one is).
 
     python tools/make_meshes.py            # needs npm (for the bunny and the teapot)
-    python tools/make_meshes.py --cornell  # the Cornell box only, no network
+    python tools/make_meshes.py --cornell  # the Cornell box and the globe only, no network
 
 bunny.obj and teapot.obj: the ``positions`` and ``cells`` of the npm packages ``bunny``
 1.0.1 and ``teapot`` 1.0.0 (Mikola Lysenko), fetched with ``npm pack`` into a temporary
@@ -14,11 +14,19 @@ measurements published by the Cornell Program of Computer Graphics ("Cornell Box
 https://www.graphics.cornell.edu/online/box/data.html), in mm, each quad written as the
 data lists its corners. The ceiling is cut into the eight rectangles around the light
 (x 213..343, z 227..332 at y = 548.8), so that light and ceiling never overlap.
+
+globe.obj: a unit sphere of GLOBE_RINGS latitude bands and GLOBE_SEGMENTS longitudes with
+texture coordinates (u the longitude over 2 pi, v the latitude from the south pole, as a
+world map) and vertex normals, written ``v/vt/vn``. A position is written once: the seam's
+column and the poles are one ``v`` each, with a ``vt`` per face corner there (u 0 and 1 at
+the seam; at a pole, the middle of its face's longitudes), so the faces share their edges
+exactly, as a textured mesh's must.
 """
 from __future__ import annotations
 
 import argparse
 import json
+import math
 import re
 import subprocess
 import tarfile
@@ -170,12 +178,61 @@ def write_cornell_box() -> None:
     (OUT / "cornell_box.mtl").write_text("\n".join(mtl) + "\n")
 
 
+GLOBE_RINGS, GLOBE_SEGMENTS = 12, 24
+
+
+def write_globe() -> None:
+    rings, segments = GLOBE_RINGS, GLOBE_SEGMENTS
+    positions = [(0.0, -1.0, 0.0)]                  # the south pole, then the rings, then the north
+    for i in range(1, rings):
+        theta = math.pi * i / rings                 # the angle from the south pole
+        y, r = -math.cos(theta), math.sin(theta)
+        positions += [(r * math.cos(2 * math.pi * j / segments), y, -r * math.sin(2 * math.pi * j / segments))
+                      for j in range(segments)]
+    positions.append((0.0, 1.0, 0.0))
+    north = len(positions) - 1
+
+    def v(i: int, j: int) -> int:
+        """The 0-based vertex of ring i (0: south pole, rings: north pole), longitude j."""
+        return 0 if i == 0 else north if i == rings else 1 + (i - 1) * segments + j % segments
+
+    uvs, uv_index = [], {}
+
+    def vt(u: float, w: float) -> int:
+        if (u, w) not in uv_index:
+            uv_index[u, w] = len(uvs)
+            uvs.append((u, w))
+        return uv_index[u, w]
+
+    faces = []
+    for i in range(rings):
+        for j in range(segments):
+            u0, u1, w0, w1 = j / segments, (j + 1) / segments, i / rings, (i + 1) / rings
+            c00, c01 = (v(i, j), vt(u0, w0)), (v(i, j + 1), vt(u1, w0))
+            c10, c11 = (v(i + 1, j), vt(u0, w1)), (v(i + 1, j + 1), vt(u1, w1))
+            if i == 0:
+                faces.append(((0, vt((u0 + u1) / 2, 0.0)), c11, c10))
+            elif i == rings - 1:
+                faces.append((c00, c01, (north, vt((u0 + u1) / 2, 1.0))))
+            else:
+                faces += [(c00, c01, c11), (c00, c11, c10)]
+    lines = ["# A unit sphere with texture coordinates and normals (tools/make_meshes.py, write_globe).",
+             "# %d latitude bands, %d longitudes; u = longitude / 2 pi, v = latitude from the south pole."
+             % (rings, segments)]
+    lines += ["v %s %s %s" % tuple(number(x) for x in p) for p in positions]
+    lines += ["vt %s %s" % (number(u), number(w)) for u, w in uvs]
+    lines += ["vn %s %s %s" % tuple(number(x) for x in p) for p in positions]
+    lines += ["f " + " ".join("%d/%d/%d" % (p + 1, t + 1, p + 1) for p, t in face) for face in faces]
+    (OUT / "globe.obj").write_text("\n".join(lines) + "\n")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--cornell", action="store_true", help="write the Cornell box only")
     args = parser.parse_args()
     OUT.mkdir(exist_ok=True)
     write_cornell_box()
+    write_globe()
     if not args.cornell:
         for name in NPM_MESHES:
             write_npm_mesh(name)

@@ -40,7 +40,7 @@ FORMULAS = ("slide", "robust")
 
 # The arrays of a mesh kind in ``shapes``: rtfgu.layout.FlatMesh's, then the BVH's nodes and
 # their int32 view (rtfgu.kernels.mesh). A row kind has two: its table and index.
-MESH_SLOTS = ("vertices", "faces", "normals", "nodes", "links")
+MESH_SLOTS = ("vertices", "faces", "normals", "nodes", "links", "uvs")
 
 
 def slots(kind) -> int:
@@ -72,8 +72,8 @@ def _mesh_parts(k: int, kind, at: int) -> list:
         _overloaded("normal_row_" + name, "vertices, faces, normals, row, position, direction", "position",
                     "    return normal_mesh(vertices, faces, normals, row, position)",
                     "The unit normal of face ``row`` at ``position``"),
-        _overloaded("texcoord_row_" + name, "vertices, faces, row, position", "(position[0], position[0])",
-                    "    return texcoord_mesh(vertices, faces, row, position)",
+        _overloaded("texcoord_row_" + name, "vertices, faces, uvs, row, position", "(position[0], position[0])",
+                    "    return texcoord_mesh(vertices, faces, uvs, row, position)",
                     "The (u, v) of face ``row`` at ``position``"),
     ]
 
@@ -388,7 +388,7 @@ def source() -> str:
     parts.append(_by_kind("shape_normal", "normal_row_", "hit_normal(position, direction)", "position",
                           (0, 1, 2), extra=", direction"))
     parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
-                          "position[0], position[0]", (0, 1)))
+                          "position[0], position[0]", (0, 1, 5)))
     # The colour of the surface hit: the material's, or its texture's at the hit.
     texture_params = ", ".join(t.table for t in TEXTURES)
     lookups = ["        if texture == %d:\n            return lookup_%s(%s, int(mat[MAT_TEXTURE_ROW]), texels, u, v, color)"

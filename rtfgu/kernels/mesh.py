@@ -274,12 +274,37 @@ def _face_frame(vertices, faces, f, like):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def texcoord_mesh(vertices, faces, f, position):
-    """MeshTriangle.texcoord: the barycentric (beta, gamma) of the point (Triangle.texcoord)."""
+def barycentric_mesh(vertices, faces, f, position):
+    """MeshTriangle.barycentric: the (beta, gamma) of the point (Triangle.texcoord)."""
     v0, e0, e1, n = _face_frame(vertices, faces, f, position[0])
     d = sub(position, v0)
     nn = dot(n, n)
     return dot(cross(d, e1), n) / nn, dot(cross(e0, d), n) / nn
+
+
+def texcoord_mesh(vertices, faces, uvs, f, position):
+    """MeshTriangle.texcoord: the barycentric (beta, gamma) without uvs (``uvs`` None), else
+    the corners' (u, v) interpolated with them (FlatMesh.uvs; a vertex whose third column is
+    0 belongs to a mesh without uvs, whose faces keep their barycentrics)."""
+    return as_python(_typed_texcoord_mesh, vertices, faces, uvs, f, position)
+
+
+@overload(texcoord_mesh, inline="always")
+def _typed_texcoord_mesh(vertices, faces, uvs, f, position):
+    if isinstance(uvs, types.NoneType):
+        def barycentric(vertices, faces, uvs, f, position):
+            return barycentric_mesh(vertices, faces, f, position)
+        return barycentric
+
+    def interpolated(vertices, faces, uvs, f, position):
+        beta, gamma = barycentric_mesh(vertices, faces, f, position)
+        i0, i1, i2 = faces[f, 0], faces[f, 1], faces[f, 2]
+        if uvs[i0, 2] == 0:
+            return beta, gamma
+        alpha = lit(1, beta) - beta - gamma
+        return (alpha * lit(uvs[i0, 0], beta) + beta * lit(uvs[i1, 0], beta) + gamma * lit(uvs[i2, 0], beta),
+                alpha * lit(uvs[i0, 1], beta) + beta * lit(uvs[i1, 1], beta) + gamma * lit(uvs[i2, 1], beta))
+    return interpolated
 
 
 def normal_mesh(vertices, faces, normals, f, position):
@@ -296,11 +321,8 @@ def _typed_normal_mesh(vertices, faces, normals, f, position):
         return flat
 
     def smooth(vertices, faces, normals, f, position):
-        v0, e0, e1, n = _face_frame(vertices, faces, f, position[0])
-        d = sub(position, v0)
-        nn = dot(n, n)
-        beta = dot(cross(d, e1), n) / nn
-        gamma = dot(cross(e0, d), n) / nn
+        n = _face_frame(vertices, faces, f, position[0])[3]
+        beta, gamma = barycentric_mesh(vertices, faces, f, position)
         one = lit(1, beta)
         i0, i1, i2 = faces[f, 0], faces[f, 1], faces[f, 2]
         n0 = (lit(normals[i0, 0], one), lit(normals[i0, 1], one), lit(normals[i0, 2], one))

@@ -73,7 +73,7 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
     for kind in SHAPES:
         if kind.bvh:
             mesh = flat.mesh
-            shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links)
+            shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links, mesh.uvs)
                        if mesh is not None else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
             shapes += (flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)

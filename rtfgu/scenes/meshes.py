@@ -23,7 +23,7 @@ import numpy as np
 
 from ..cameras import PinholeCamera
 from ..float3 import Float3, normalize
-from ..lights import AmbientOccluder, AreaLight, Directional
+from ..lights import AmbientOccluder, AreaLight, Directional, PointLight
 from ..materials import Material, Matte, Reflective, Transparent, dielectric
 from ..obj import load_obj, mesh_path
 from ..sampling import Jittered
@@ -31,8 +31,10 @@ from ..sampling.sampler import sampler_of
 from ..scene import Scene
 from ..shapes import Plane, Sphere
 from ..shapes.mesh import Mesh
+from ..textures import ImageTexture
 from ..tracers import AreaLighting, GlobalTrace, PathTrace
 from .registry import homework
+from .textures import texture_path
 
 BACKGROUND = Float3(0.1, 0.3, 0.6)
 # The Stanford bunny's bounding box (bun_zipper.ply), where the npm copy is moved to.
@@ -42,7 +44,7 @@ STANFORD_BUNNY_MAX = np.array([0.0610091, 0.187321, 0.0587997])
 
 def _placed(mesh: Mesh, scale: float, offset) -> Mesh:
     return Mesh(mesh.vertices * scale + np.asarray(offset, dtype=float), mesh.faces, mesh.colors,
-                normals=mesh.normals, material=mesh.materials)
+                normals=mesh.normals, material=mesh.materials, uvs=mesh.uvs)
 
 
 def teapot_mesh(material: Material | None = None) -> Mesh:
@@ -128,6 +130,28 @@ def bunny() -> Scene:
     scene.background = BACKGROUND
     scene.shapes.append(bunny_mesh(Matte()))
     scene.lights.append(Directional(-normalize(Float3(-1.0, -1.0, -1.0)), Float3(math.pi)))
+    return scene
+
+
+@homework(512, 384, test_side=24)
+def suffern_29_uv_mesh() -> Scene:
+    """Suffern ch. 29, texturing a triangle mesh by its vertices' (u, v): the globe of
+    rtfgu/meshes (an OBJ file's ``vt``, smooth-shaded) with worksheet 3's tiles, bilinear and
+    repeated twice around, beside the same mesh without its uvs, whose faces each show the
+    texture's corner by their barycentric (beta, gamma)."""
+    camera = PinholeCamera(Float3(0.0, 1.6, 5.0), Float3(0.0, 0.9, 0.0), Float3(0.0, 1.0, 0.0),
+                           d=1.6, aspect=512 / 384)
+    scene = Scene(camera)
+    scene.background = BACKGROUND
+    scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.7, 0.7, 0.6), Matte()))
+    tiles = ImageTexture(texture_path("tiles16.png"), filter="bilinear", address="repeat")
+    globe = load_obj(mesh_path("globe.obj"), material=Matte(cd=tiles))
+    scene.shapes.append(_placed(Mesh(globe.vertices, globe.faces, globe.colors, normals=globe.normals,
+                                     material=globe.materials, uvs=globe.uvs * (2.0, 1.0)),
+                                0.9, (-1.0, 0.9, 0.0)))
+    plain = Mesh(globe.vertices, globe.faces, globe.colors, normals=globe.normals, material=globe.materials)
+    scene.shapes.append(_placed(plain, 0.6, (1.3, 0.6, 0.3)))
+    scene.lights.append(PointLight(Float3(3.0, 5.0, 4.0), Float3(40.0)))
     return scene
 
 

@@ -59,6 +59,11 @@ class Mesh:
     normals   None (flat shading: ``FlatMeshTriangle``) or (n, 3) vertex normals, non-zero
               and finite, stored normalised (smooth shading: ``SmoothMeshTriangle``).
     material  None (``Material()``), one Material for every face, or a sequence of m.
+    uvs       None or (n, 2) texture coordinates (u, v) per vertex, finite (an OBJ file's
+              ``vt``): a face's (u, v) at a point is its corners' interpolated with the
+              point's barycentric coordinates (Suffern ch. 29, UV mesh triangles,
+              ``interpolate_u``/``interpolate_v``); without them it is the barycentric
+              (beta, gamma) itself.
 
     Colours and materials are kept per face, ``colors`` (m, 3) and ``materials`` (a tuple of
     m: another material for a face is a new tuple).
@@ -69,10 +74,11 @@ class Mesh:
     again.
     """
 
-    def __init__(self, vertices, faces, color, normals=None, material=None):
+    def __init__(self, vertices, faces, color, normals=None, material=None, uvs=None):
         self.vertices = _rows_of_three(vertices, "Mesh.vertices", np.float64)
         self.faces = _face_indices(faces, len(self.vertices))
         self.normals = None if normals is None else _unit_normals(normals, len(self.vertices))
+        self.uvs = None if uvs is None else _vertex_uvs(uvs, len(self.vertices))
         m = len(self.faces)
         self.colors = _per_face_colors(color, m)
         self.materials = _per_face_materials(material, m)
@@ -95,12 +101,12 @@ class Mesh:
                         "are mesh.triangles() (rtfgu.render does)")
 
     def geometry_key(self) -> str:
-        """A digest of the bytes of ``vertices``, ``faces`` and ``normals``, the geometry the
+        """A digest of the bytes of ``vertices``, ``faces``, ``normals`` and ``uvs``, what the
         faces of ``triangles()`` are made from. It is computed again on every call (the arrays
         hashed whole, no Python per face), so a change in place is seen. (A scene's BVH is
         kept by comparing the arrays themselves, rtfgu.layout._cached.)"""
         digest = hashlib.blake2b(digest_size=16)
-        for array in (self.vertices, self.faces, self.normals):
+        for array in (self.vertices, self.faces, self.normals, self.uvs):
             digest.update(b"-" if array is None else np.ascontiguousarray(array).tobytes())
         return digest.hexdigest()
 
@@ -163,6 +169,9 @@ class MeshTriangle(Shape):
             self._triangle = Triangle(v0, v1, v2, self.color, self.material)
         except ValueError as error:
             raise ValueError("Mesh.faces[%d]: %s" % (face, error)) from None
+        # The corners' (u, v) (Suffern's UV mesh triangles), or None: the barycentrics.
+        self.uvs = None if mesh.uvs is None else \
+            tuple((float(mesh.uvs[i, 0]), float(mesh.uvs[i, 1])) for i in (self.index0, self.index1, self.index2))
 
     def intersect_p(self, ray: Ray) -> bool:
         """The watertight test (rtfgu.robust.intersect_triangle_watertight, Woop, Benthin and
@@ -183,9 +192,19 @@ class MeshTriangle(Shape):
         """The face as a ``Triangle`` through its three vertices."""
         return self._triangle
 
-    def texcoord(self, position: Float3) -> tuple:
+    def barycentric(self, position: Float3) -> tuple:
         """The barycentric (beta, gamma) of the point, as ``Triangle.texcoord``."""
         return self._triangle.texcoord(position)
+
+    def texcoord(self, position: Float3) -> tuple:
+        """(u, v): the corners' uvs interpolated as Suffern's ``interpolate_u``/``interpolate_v``,
+        (1 - beta - gamma) u0 + beta u1 + gamma u2, or (beta, gamma) for a mesh without uvs."""
+        beta, gamma = self.barycentric(position)
+        if self.uvs is None:
+            return beta, gamma
+        (u0, v0), (u1, v1), (u2, v2) = self.uvs
+        alpha = 1.0 - beta - gamma
+        return alpha * u0 + beta * u1 + gamma * u2, alpha * v0 + beta * v1 + gamma * v2
 
 
 class FlatMeshTriangle(MeshTriangle):
@@ -211,7 +230,7 @@ class SmoothMeshTriangle(MeshTriangle):
                                      for i in (self.index0, self.index1, self.index2))
 
     def normal_at(self, position: Float3) -> Float3:
-        beta, gamma = self.texcoord(position)
+        beta, gamma = self.barycentric(position)
         n = self.n0 * (1.0 - beta - gamma) + self.n1 * beta + self.n2 * gamma
         if n.length_squared() == 0.0:
             return self._triangle.normal_at(position)
@@ -269,6 +288,20 @@ def _unit_normals(normals, num_vertices: int) -> np.ndarray:
     if len(bad):
         raise ValueError("Mesh.normals[%d] is the zero vector" % bad[0])
     return array / length[:, None]
+
+
+def _vertex_uvs(uvs, num_vertices: int) -> np.ndarray:
+    try:
+        array = np.asarray(uvs, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError("Mesh.uvs must be an (n, 2) array of numbers") from None
+    if array.shape != (num_vertices, 2):
+        raise ValueError("Mesh.uvs must have one (u, v) row per vertex (%d, 2), got shape %s"
+                         % (num_vertices, array.shape))
+    bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
+    if len(bad):
+        raise ValueError("Mesh.uvs[%d] must be finite, got %s" % (bad[0], tuple(array[bad[0]])))
+    return array
 
 
 def _per_face_colors(color, m: int) -> np.ndarray:

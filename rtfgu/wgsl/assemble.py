@@ -232,6 +232,7 @@ MESH_BINDINGS = {
     "mesh_vertices": lambda flat: flat.mesh.vertices,
     "mesh_faces": lambda flat: flat.mesh.faces,
     "mesh_normals": lambda flat: flat.mesh.normals,
+    "mesh_uvs": lambda flat: flat.mesh.uvs,
     "bvh_nodes": lambda flat: flat.mesh.bvh.nodes,
 }
 
@@ -369,6 +370,8 @@ def _bindings(flat, features, scene_buffer: str) -> list:
                 wanted.append(("mesh_faces", "array<vec4i>", mesh.faces, False))
                 if mesh.normals is not None:
                     wanted.append(("mesh_normals", "array<f32>", mesh.normals, False))
+                if mesh.uvs is not None and "textures" in features:
+                    wanted.append(("mesh_uvs", "array<f32>", mesh.uvs, False))
                 wanted.append(("bvh_nodes", "array<BVHNode>", mesh.bvh.nodes, False))
                 continue
             count = "NUM_" + kind.table.upper()

@@ -4,6 +4,8 @@
 //   mesh_vertices  3 floats per vertex
 //   mesh_faces     vec4i per face: [i0, i1, i2, place in Scene.shapes], in BVH leaf order
 //   mesh_normals   3 floats per vertex (zero for a flat mesh's), only if a mesh is smooth
+//   mesh_uvs       (u, v, 1) per vertex ((0, 0, 0) for a mesh without uvs), only if a mesh
+//                  has uvs and the scene has textures
 //   bvh_nodes      the BVH (rtfgu.accelerators.flat_bvh): a leaf has b = its face count and
 //                  a = its first face; an inner node b = 0 and its children at a and a + 1.
 // With the feature bvh_spheres the BVH holds the spheres too: a row [-1, row in spheres, 0,
@@ -172,10 +174,27 @@ fn mesh_normal_at(i: i32) -> vec3f
 // #endif
 
 // #if textures
+// MeshTriangle.texcoord: the barycentrics, or with uvs the corners' (u, v) interpolated with
+// them (Suffern's UV mesh triangles).
 fn texcoord_mesh(p: vec3f, f: u32) -> vec2f
 {
-    return face_barycentrics(f, p);
+    let b = face_barycentrics(f, p);
+    // #if uv_mesh
+    let face = vec3u(mesh_faces[f].xyz);
+    if (mesh_uvs[3u * face.x + 2u] != 0.0) {
+        let alpha = 1.0 - b.x - b.y;
+        return alpha * mesh_uv(face.x) + b.x * mesh_uv(face.y) + b.y * mesh_uv(face.z);
+    }
+    // #endif
+    return b;
 }
+
+// #if uv_mesh
+fn mesh_uv(i: u32) -> vec2f
+{
+    return vec2f(mesh_uvs[3u * i], mesh_uvs[3u * i + 1u]);
+}
+// #endif
 // #endif
 
 // The nearest face hit before (*r).tmax, nearer child first; of equal ts the face earlier in
