@@ -128,6 +128,15 @@ PLANTED = [
                                  "11.6": "should be"}),
     ("a11_shade_no_tir", "a11", {"11.3": "only the reflected ray goes on", "11.6": "only the reflected ray goes on"}),
     ("a11_shade_weights_swapped", "a11", {"11.3": "should be", "11.4": "pixels", "11.6": "should be"}),
+    ("a12_triangle_no_sqrt", "a12", {"12.1": "without the square root of u", "12.2": "not uniform by area",
+                                     "12.3": "should be", "12.6": "pixels"}),
+    ("a12_G_unsquared", "a12", {"12.4": "divides by the distance squared", "12.6": "pixels",
+                                "12.8": "divides by the distance squared"}),
+    # L G / pdf is computed in one expression (incident): a wrong pdf alone leaves the image.
+    ("a12_pdf_area", "a12", {"12.4": "the density 1 / A", "12.8": "the density 1 / A"}),
+    ("a12_incident_no_cosine", "a12", {"12.4": "should be", "12.6": "pixels", "12.8": "should be"}),
+    ("a12_direction_to_corner", "a12", {"12.3": "should be", "12.6": "pixels"}),
+    ("a12_tracer_shade", "a12", {"12.5": "should be"}),
     # Each passes every test but the contract's: the distributions and means are right.
     ("a09_own_rng", "a09", {"9.6": "gave another direction the second time"}),
     ("a09_tuned_pdf", "a09", {"9.7": "pdf must be their density (n . w_i) / pi"}),

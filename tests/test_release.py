@@ -143,11 +143,13 @@ TWIN_NAMES = {
     "a07": ("texel", "_texel", "get_color", "texture_image_texture"),
     "a08": ("bbox_hit", "hit_bbox", "box_hit", "box_entry", "slab_test", "intersect_bbox", "intersect_box",
             "intersect_bvh", "bvh_intersect", "traverse_bvh", "bvh_closest", "mesh_closest"),
+    "a12": ("sample_area_light_area",),
 }
 # Block names too common to stand for their assignment in a twin's function names (BBox.hit,
 # BVH.intersect: intersect_disk is no BVH traversal; the book's BRDF and light methods f, L,
-# rho; Material.shade, Matte.ambient, reflect); their twins go by the names above.
-GENERIC_BLOCK_NAMES = {"hit", "intersect", "f", "L", "rho", "shade", "ambient", "reflect", "get_direction"}
+# rho; Material.shade, Matte.ambient, reflect; a shape's sample: every sampler samples); their
+# twins go by the names above.
+GENERIC_BLOCK_NAMES = {"hit", "intersect", "f", "L", "rho", "shade", "ambient", "reflect", "get_direction", "sample"}
 TWIN_FOLDERS = ("kernels", "wgsl", "hardcases")
 _DEF = re.compile(r"^\s*(?:def|fn)\s+(?P<name>\w+)\s*\(", re.M)
 

@@ -527,8 +527,59 @@ A11 = Assignment(
            "1-5 (your own or the revealed solutions). There is no image to hand in."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10, A11)
-ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10, A11)}
+A12 = Assignment(
+    id="a12_area_lights",
+    title="Area lights: sampling a shape, the geometry factor and soft shadows",
+    blocks=(
+        Block("shapes/triangle.py", "Triangle.sample",
+              "A point of the triangle uniform by area for (u, v) uniform in [0, 1)^2 (Suffern ch. 18; Shirley,\n"
+              "\"Graphics Gems III\"): the barycentric coordinates (1 - sqrt(u), v sqrt(u), (1 - v) sqrt(u)), that\n"
+              "is v0 + (e0 v + e1 (1 - v)) sqrt(u). Without the square root the points crowd toward v0."),
+        Block("shapes/rectangle.py", "Rectangle.sample",
+              "A point of the rectangle uniform by area (Suffern ch. 18.6, Rectangle::sample): p0 + u a + v b."),
+        Block("lights/area_light.py", "AreaLight.get_direction",
+              "Suffern's AreaLight::get_direction: with (u, v) the point of the unit square drawn (given), keep\n"
+              "the shape's point there and its unit normal, (self.sample_point, self.light_normal) =\n"
+              "self.geometry.sample_with_normal(u, v), and return the unit vector from sr.position toward\n"
+              "the point (the point's normal if the point lit is the point drawn, at distance 0)."),
+        Block("lights/area_light.py", "AreaLight.G",
+              "The geometry factor (Suffern ch. 18, AreaLight::G): cos(theta_l) / d^2, with d the distance from\n"
+              "sr.position to self.sample_point and cos(theta_l) = -n_l . w_i (self._cos_l(sr)) the cosine at\n"
+              "the light; 0 where the light is seen from behind (cos(theta_l) <= 0) or at d = 0."),
+        Block("lights/area_light.py", "AreaLight.pdf",
+              "The density of the point drawn, per unit area of the shape (Suffern ch. 18, AreaLight::pdf):\n"
+              "a point uniform by area has the density 1 / A (self.area)."),
+        Block("lights/area_light.py", "AreaLight.incident",
+              "L G / pdf in the order the numba and WGSL paths compute it: with to_light = sample_point -\n"
+              "sr.position, dist its length and cos_l = -n_l . to_light / dist, return\n"
+              "emission * (area * cos_l / (dist * dist)); Float3(0) where dist is not > 0 or cos_l is not > 0."),
+        Block("tracers/area_lighting.py", "AreaLighting.shade",
+              "Suffern's AreaLighting::trace_ray calls the material's area_light_shade at a hit (where Whitted\n"
+              "calls shade): return it."),
+    ),
+    task=("Make soft shadows (Suffern ch. 18, \"Area Lights\"; 02562 worksheets 5 and 7). An area light is a\n"
+          "shape that emits: each shading point draws one point of it, uniform by area, and the light it\n"
+          "receives from that point, L_e G / pdf with G = cos(theta_l) / d^2 and pdf = 1 / A, is an estimate\n"
+          "whose average over a pixel's samples is the light of the whole shape. Write the two shapes'\n"
+          "`sample`, the light's `get_direction`, `G`, `pdf` and `incident`, and the tracer that asks the\n"
+          "materials for their area-light shading. The tests check the points drawn (exactly at chosen\n"
+          "(u, v), and uniform by area over many: chi-square), the direction, G, pdf and L G / pdf at\n"
+          "chosen points against their exact values, the tracer's call, and Suffern's figure 18 scene\n"
+          "rendered by the lecture layer with AreaLighting."),
+    formulas=("- A point uniform by area (Suffern ch. 18; Shirley 1992): triangle v0 + (e0 v + e1 (1 - v)) sqrt(u),\n"
+              "  rectangle p0 + u a + v b; the density 1 / A\n"
+              "- The geometry factor (Suffern ch. 18, AreaLight::G): G = cos(theta_l) / d^2, cos(theta_l) = -n_l . w_i\n"
+              "- The estimate of the direct light: L_e G / pdf = L_e A cos(theta_l) / d^2, 0 from behind"),
+    slides=("Suffern ch. 18: Area Lights (AreaLight, Rectangle::sample, AreaLighting)",
+            "02562 worksheet 5: area lights as point lights at their centre; worksheet 7: sampling the light"),
+    time_limit=20.0,
+    extra=("Under RayCast and Whitted an area light stays worksheet 5's point light at the shape's centre\n"
+           "(not your code); AreaLighting, PathTrace and GlobalTrace draw points with it. The tests need\n"
+           "assignments 1-4 (your own or the revealed solutions). There is no image to hand in."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10, A11, A12)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10, A11, A12)}
 
 
 def register(assignment: Assignment) -> None:

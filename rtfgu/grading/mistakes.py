@@ -291,3 +291,39 @@ def write_known(assignment, reference_dir: Path = REFERENCE_DIR):
         return None
     path.write_text(json.dumps(known, indent=1, sort_keys=True) + "\n")
     return path
+
+
+def area_sample(inputs: dict) -> dict:
+    """A triangle's point at (u, v) without the square root (v0 + (e0 v + e1 (1 - v)) u: the
+    points crowd toward v0) and with the barycentrics taken as (u, v) directly (not uniform,
+    and off the triangle where u + v > 1)."""
+    if inputs["kind"] != "triangle":
+        return {}
+    (v0, v1, v2), u, v = inputs["corners"], inputs["u"], inputs["v"]
+    e0 = [v1[k] - v0[k] for k in range(3)]
+    e1 = [v2[k] - v0[k] for k in range(3)]
+    return {"no_sqrt": [v0[k] + (e0[k] * v + e1[k] * (1.0 - v)) * u for k in range(3)],
+            "direct": [v0[k] + e0[k] * u + e1[k] * v for k in range(3)]}
+
+
+def light_terms(inputs: dict) -> dict:
+    """G and pdf of an area light's point with the classic slips: G without its square
+    (cos / d), G without the light's cosine (1 / d^2), pdf = A instead of 1 / A."""
+    point, position = inputs["point"], inputs["position"]
+    d = [point[k] - position[k] for k in range(3)]
+    dist = math.sqrt(sum(x * x for x in d))
+    kind, corners = inputs["kind"], inputs["corners"]
+    if kind == "sphere":
+        c, r = corners[0], corners[1][0]
+        n = [(point[k] - c[k]) / r for k in range(3)]
+        area = 4.0 * math.pi * r * r
+    else:
+        origin = corners[0]
+        e0 = [corners[1][k] - origin[k] for k in range(3)] if kind == "triangle" else corners[1]
+        e1 = [corners[2][k] - origin[k] for k in range(3)] if kind == "triangle" else corners[2]
+        cross = [e0[1] * e1[2] - e0[2] * e1[1], e0[2] * e1[0] - e0[0] * e1[2], e0[0] * e1[1] - e0[1] * e1[0]]
+        length = math.sqrt(sum(x * x for x in cross))
+        n = [x / length for x in cross]
+        area = length / 2.0 if kind == "triangle" else math.sqrt(sum(x * x for x in e0)) * math.sqrt(sum(x * x for x in e1))
+    cos_l = -sum(n[k] * d[k] for k in range(3)) / dist
+    return {"G_unsquared": max(cos_l, 0.0) / dist, "G_no_cosine": 1.0 / (dist * dist), "pdf_area": area}

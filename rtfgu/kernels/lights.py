@@ -1,4 +1,4 @@
-# release: solves a04
+# release: solves a04 a12
 """The lights as the materials' light loop asks them (rtfgu/lights): sample_point_light (02562
 "Sampling light in the shader", Kepler's inverse square law) operation for operation as
 PointLight.get_direction and L, sample_directional as Directional's, and an area light's two

@@ -89,13 +89,15 @@ class AreaLight(Light):
     def get_direction(self, sr) -> Float3:
         if not self._sampled(sr):
             return self._centre().get_direction(sr)
-        u, v = sr.scene.light_sample(self, sr)
+        u, v = sr.scene.light_sample(self, sr)       # the point of the unit square this sample draws
+        ### BEGIN SOLUTION
         self.sample_point, self.light_normal = self.geometry.sample_with_normal(u, v)
         to_light = self.sample_point - sr.position
         dist = to_light.length()
         if not dist > 0.0:                   # the point lit is the point drawn: no direction
             return self.light_normal
         return to_light / dist
+        ### END SOLUTION
 
     def _cos_l(self, sr) -> float:
         to_light = self.sample_point - sr.position
@@ -116,17 +118,24 @@ class AreaLight(Light):
     def G(self, sr) -> float:
         if not self._sampled(sr):
             return 1.0
+        ### BEGIN SOLUTION
         d2 = (self.sample_point - sr.position).length_squared()
         return max(self._cos_l(sr), 0.0) / d2 if d2 > 0.0 else 0.0
+        ### END SOLUTION
 
     def pdf(self, sr) -> float:
-        return 1.0 / self.area if self._sampled(sr) else 1.0
+        if not self._sampled(sr):
+            return 1.0
+        ### BEGIN SOLUTION
+        return 1.0 / self.area
+        ### END SOLUTION
 
     def incident(self, sr) -> Float3:
         """L G / pdf = L_e A cos(theta_l) / |p' - x|^2 (0 from behind), in the order the
         numba and WGSL kernels compute it."""
         if not self._sampled(sr):
             return self.L(sr)
+        ### BEGIN SOLUTION
         to_light = self.sample_point - sr.position
         dist = to_light.length()
         if not dist > 0.0:
@@ -135,6 +144,7 @@ class AreaLight(Light):
         if not cos_l > 0.0:
             return Float3(0.0)
         return self.emission * (self.area * cos_l / (dist * dist))
+        ### END SOLUTION
 
     def distance(self, sr) -> float:
         if not self._sampled(sr):

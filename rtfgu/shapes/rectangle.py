@@ -76,7 +76,9 @@ class Rectangle(PlanarShape):
 
     def sample(self, u: float, v: float) -> Float3:
         """p0 + u a + v b: uniform by area for (u, v) uniform in [0, 1)^2."""
+        ### BEGIN SOLUTION
         return self.p0 + self.a * u + self.b * v
+        ### END SOLUTION
 
     def pdf(self, sr=None) -> float:
         return 1.0 / self.area

@@ -69,8 +69,10 @@ class Triangle(Shape):
     def sample(self, u: float, v: float) -> Float3:
         """A point uniform by area for (u, v) uniform in [0, 1)^2: barycentric coordinates
         (1 - sqrt(u), v sqrt(u), (1 - v) sqrt(u)) (Shirley, "Graphics Gems III")."""
+        ### BEGIN SOLUTION
         su = math.sqrt(u)
         return self.v0 + (self.e0 * v + self.e1 * (1.0 - v)) * su
+        ### END SOLUTION
 
     def pdf(self, sr=None) -> float:
         return 1.0 / self.area

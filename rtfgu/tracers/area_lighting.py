@@ -16,4 +16,7 @@ class AreaLighting(Whitted):
     samples_area_lights = True
 
     def shade(self, sr) -> Float3:
+        """The book's AreaLighting::trace_ray at a hit: the material's area_light_shade."""
+        ### BEGIN SOLUTION
         return sr.material.area_light_shade(sr)
+        ### END SOLUTION

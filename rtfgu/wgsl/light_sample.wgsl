@@ -1,3 +1,4 @@
+// release: solves a12
 // The random stream's dimensions of a path's vertex (rtfgu.sampling.random.path_dimension: vertex
 // depth draws 2 + depth * VERTEX_DIMENSIONS + k), and a point drawn on an area light, for the
 // tracers that sample lights (PathTrace, GlobalTrace, AreaLighting).

@@ -58,8 +58,11 @@ class Triangle(Shape):
     def sample(self, u: float, v: float) -> Float3:
         """A point uniform by area for (u, v) uniform in [0, 1)^2: barycentric coordinates
         (1 - sqrt(u), v sqrt(u), (1 - v) sqrt(u)) (Shirley, "Graphics Gems III")."""
-        su = math.sqrt(u)
-        return self.v0 + (self.e0 * v + self.e1 * (1.0 - v)) * su
+        # TODO a12: Triangle.sample
+        #   A point of the triangle uniform by area for (u, v) uniform in [0, 1)^2 (Suffern ch. 18; Shirley,
+        #   "Graphics Gems III"): the barycentric coordinates (1 - sqrt(u), v sqrt(u), (1 - v) sqrt(u)), that
+        #   is v0 + (e0 v + e1 (1 - v)) sqrt(u). Without the square root the points crowd toward v0.
+        raise NotImplementedError('a12: Triangle.sample')
 
     def pdf(self, sr=None) -> float:
         return 1.0 / self.area
