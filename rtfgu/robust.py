@@ -61,11 +61,19 @@ def intersect_sphere_robust(ray: Ray, center, radius: float) -> bool:
     Both divisions by a go through 1 / a, as in the render kernel
     (rtfgu.kernels.intersect.sphere_roots_robust, where 1 / a depends on the ray only and is
     computed once for all spheres): the two compute the same operations in the same order.
+
+    The direction is first scaled by the power of two s = 2^-e that brings its largest
+    component into [0.5, 1) (``direction_scale``), and the roots found for s d are scaled
+    back by s. Multiplying by a power of two is exact, so every operation below rounds as it
+    did for d itself and the roots are bit for bit those of d; but d . d no longer overflows
+    or underflows for a direction of any length (1e-150 or 1e150 in float64, 1e-30 or 1e30
+    in float32).
     """
     sphere = Sphere(center, radius, WHITE)  # refuses what the lecture's Sphere refuses
     center, radius = sphere.center, sphere.radius
     f = ray.origin - center
-    d = ray.direction
+    s = direction_scale(ray.direction)
+    d = ray.direction * s
     a = dot(d, d)
     inv_a = 1.0 / a
     b = -dot(f, d)
@@ -80,11 +88,17 @@ def intersect_sphere_robust(ray: Ray, center, radius: float) -> bool:
         # b' = 0 and disc = 0: the origin is the tangent point, both roots are 0.
         t0 = t1 = 0.0
     else:
-        t0 = c / q
-        t1 = q * inv_a
+        t0 = c / q * s
+        t1 = q * inv_a * s
     if t0 > t1:
         t0, t1 = t1, t0
     return _accept(ray, t0) or _accept(ray, t1)
+
+
+def direction_scale(d) -> float:
+    """The power of two 2^-e with e the exponent of d's largest component (math.frexp):
+    s d has its largest component in [0.5, 1); 1 for the zero vector."""
+    return math.ldexp(1.0, -math.frexp(max(abs(d.x), abs(d.y), abs(d.z)))[1])
 
 
 # --- plane ----------------------------------------------------------------------------

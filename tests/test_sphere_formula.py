@@ -122,7 +122,7 @@ def test_assembler_takes_intersect_sphere_from_the_formula_file():
     sources = {f: assemble(flat, formula=f) for f in ("slide", "robust")}
     assert "b * b - 4.0 * a * c" in sources["slide"].source
     assert "b * b - 4.0 * a * c" not in sources["robust"].source
-    assert "(b / a) * r.direction" in sources["robust"].source
+    assert "(b / a) * d" in sources["robust"].source
     for f, program in sources.items():
         assert program.source.count("fn intersect_sphere(") == 1
         assert SHAPE_BY_NAME["sphere"].formula_file(f) in program.pieces

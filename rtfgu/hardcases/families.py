@@ -164,6 +164,16 @@ def _sphere_direction_scale(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
+@family("sphere_direction_scale_extreme", "sphere", "sphere",
+        "unnormalised directions of length 1e-150..1e150 (d . d under- or overflows)")
+def _sphere_direction_scale_extreme(rng, n):
+    c = rng.uniform(-2, 2, (n, 3))
+    r = rng.uniform(0.5, 2.0, n)
+    o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(2, 10, n), r * rng.uniform(0, 1.3, n))
+    d = d * _log_uniform(rng, -150, 150, n)[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
 # --- planes ---------------------------------------------------------------------------
 
 _INTEGER_NORMALS = np.array([(0, 0, 1), (1, 2, 2), (3, 4, 0), (1, 1, 1), (2, -1, 2), (0, 3, 4),

@@ -105,7 +105,11 @@ def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
     q = b' + sign(b') sqrt(disc) subtract no two nearly equal numbers. The inputs are finite
     (compile_scene refuses anything else), so it needs no finiteness test (the hard cases'
     rtfgu.kernels.robust.batch adds one): a zero direction gives NaN, and NaN fails
-    every comparison."""
+    every comparison. The direction is scaled by a power of two first, and the roots back
+    (rtfgu.robust.direction_scale): exact, so the roots are bit for bit the same, but d . d
+    cannot overflow or underflow."""
+    s = math.ldexp(lit(1, radius), -math.frexp(max(abs(direction[0]), abs(direction[1]), abs(direction[2])))[1])
+    direction = scale(direction, s)
     a = dot(direction, direction)
     # Through 1 / a, which depends on the ray only: inlined in intersect_scene's loop over
     # the spheres it is computed once per ray, and a miss costs no division (two roundings
@@ -124,8 +128,8 @@ def sphere_roots_robust(temp, c, radius, direction, tmin, tmax):
         t0 = zero
         t1 = zero
     else:
-        t0 = c / q
-        t1 = q * inv_a
+        t0 = c / q * s
+        t1 = q * inv_a * s
     # The least t in range: the near root if it is, else the far one (a ray from inside).
     near = min(t0, t1)
     t = near if near >= tmin and near <= tmax else max(t0, t1)

@@ -11,15 +11,21 @@
 // The assembler (rtfgu/wgsl/assemble.py) takes intersect_sphere from this file instead of
 // intersect_sphere.wgsl when the formula is "robust"; both have the 02562 signature. Its
 // inputs are finite (compile_scene refuses anything else; the hard-case program,
-// hardcase_main.wgsl, makes non-finite input a miss before calling it).
+// hardcase_main.wgsl, makes non-finite input a miss before calling it). The direction is
+// scaled by the power of two that brings its largest component into [0.5, 1), and the roots
+// back (rtfgu.robust.direction_scale): exact, so the roots are those of the direction
+// itself, but w . w cannot overflow or underflow.
 
 fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: f32) -> bool
 {
     let f = r.origin - center;
-    let a = dot(r.direction, r.direction);
-    let b = -dot(f, r.direction);
+    let w = abs(r.direction);
+    let s = ldexp(1.0, -frexp(max(max(w.x, w.y), w.z)).exp);
+    let d = r.direction * s;
+    let a = dot(d, d);
+    let b = -dot(f, d);
     let c = dot(f, f) - radius * radius;
-    let l = f + (b / a) * r.direction;
+    let l = f + (b / a) * d;
     let disc = a * (radius * radius - dot(l, l));
     if (!(disc >= 0.0)) {
         return false;
@@ -33,8 +39,8 @@ fn intersect_sphere(r: Ray, hit: ptr<function, HitInfo>, center: vec3f, radius: 
     var t0 = 0.0;
     var t1 = 0.0;
     if (q != 0.0) {
-        t0 = c / q;
-        t1 = q / a;
+        t0 = c / q * s;
+        t1 = q / a * s;
     }
     // The least t in [tmin, tmax): the near root if it is in range, else the far one.
     let near = min(t0, t1);
