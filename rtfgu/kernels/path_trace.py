@@ -15,8 +15,9 @@ from ..layout import (MAT_ABSORPTION, MAT_DIFFUSE_SAMPLER, MAT_EMISSION, MAT_IOR
                       MAT_SPECULAR_SAMPLER)
 from ..materials.material import BASE_COLOR, DIELECTRIC, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR, TRANSPARENT
 from ..registry import LIGHTS
-from ..sampling.random import BOUNCE_U, CHOICE, ROULETTE, VERTEX_DIMENSIONS
+from ..sampling.random import BOUNCE_U, CHOICE, LOBE, ROULETTE, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
+from ..tracers.path_trace import ROULETTE_DEPTH
 from .environment import ENVIRONMENT, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, div, dot, lit, load3, mul, neg, scale
@@ -86,6 +87,13 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
     n_shadow = 0
     n_secondary = 0
     for depth in range(max_depth):
+        if depth > ROULETTE_DEPTH:
+            # Russian roulette on the throughput, for the ray from the vertex before (PathTrace).
+            q = max(throughput[0], throughput[1], throughput[2])
+            if q < one:
+                if not random_float(pixel, sample, 2 + (depth - 1) * VERTEX_DIMENSIONS + ROULETTE, seed, zero) < q:
+                    break
+                throughput = div(throughput, q)
         if depth > 0:
             n_secondary += 1
         t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if depth == 0 else -1,
@@ -118,12 +126,14 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
                 result = add(result, mul(throughput, light))
             if depth + 1 == max_depth:
                 break
+            # The lobe, in the ratio of the albedos (GlossyReflector.path_shade; a Matte's q_d is 1).
             three = lit(3.0, zero)
             q_d = (rho[0] + rho[1] + rho[2]) / three
             q_s = (specular[0] + specular[1] + specular[2]) / three
-            if q_d + q_s > one:
-                q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
-            xi = random_float(pixel, sample, first + ROULETTE, seed, zero)
+            if not q_d + q_s > zero:
+                break
+            q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
+            xi = random_float(pixel, sample, first + LOBE, seed, zero)
             # the chosen BRDF's own sampler's point, or the stream's (BRDF.sample_point)
             u, v = sampler_point(sampler_sets(lights[OWN_SAMPLES], lights[OWN_SHUFFLED]), materials, idx,
                                  MAT_DIFFUSE_SAMPLER if xi < q_d else MAT_SPECULAR_SAMPLER, pixel, sample,
@@ -138,7 +148,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
                     break
                 throughput = scale(mul(throughput, f), cos_theta / (pdf * q_d))
                 direction = w_i
-            elif xi < q_d + q_s:
+            elif q_s > zero:
                 w_i = lobe_direction(mirror(direction, normal), shininess, u, v)
                 cos_theta = dot(normal, w_i)
                 if not cos_theta > zero:

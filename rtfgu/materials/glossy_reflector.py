@@ -3,9 +3,9 @@ ch. 25, "Glossy Reflection").
 
 A diffuse part (kd cd / pi) and the normalised lobe ks cs (e + 2) / (2 pi) cos^e(alpha)
 about the mirror direction (rtfgu/brdfs/glossy_specular.py). The ray-cast tracers shade it
-as Phong; PathTrace also follows the light it reflects: Russian roulette picks the diffuse
-part with probability q_d = mean(kd cd), the lobe with q_s = mean(ks cs) (both scaled down
-if they add up to more than 1), or the end of the path; the lobe's direction is drawn with
+as Phong; PathTrace also follows the light it reflects: the path goes on through the diffuse
+part with probability q_d = mean(kd cd) / (mean(kd cd) + mean(ks cs)), through the lobe with
+q_s = 1 - q_d (Russian roulette, which may end it, is the tracer's); the lobe's direction is drawn with
 density (e + 1) / (2 pi) cos^e(alpha) (GlossySpecular.sample_f), so the throughput is
 multiplied by
 
@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from ..float3 import Float3, dot
 from ..ray import SPAWN_EPSILON, Ray
-from ..sampling.random import BOUNCE_U, ROULETTE, path_dimension, random_float
+from ..sampling.random import BOUNCE_U, LOBE, path_dimension, random_float
 from .material import GLOSSY_REFLECTOR, PathVertex
 from .matte import KA_02562, KD_02562
 from .phong import Phong
@@ -43,11 +43,13 @@ class GlossyReflector(Phong):
             return PathVertex(L)
         rho = self.diffuse_brdf.rho(sr, wo)
         specular = self.specular
+        # The lobe: diffuse or glossy with probabilities in the ratio of their albedos.
         q_d = (rho.x + rho.y + rho.z) / 3.0
         q_s = (specular.x + specular.y + specular.z) / 3.0
-        if q_d + q_s > 1.0:
-            q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
-        xi = random_float(sr.pixel, sr.sample, path_dimension(sr.depth, ROULETTE), sr.seed)
+        if not q_d + q_s > 0.0:
+            return PathVertex(L)
+        q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
+        xi = random_float(sr.pixel, sr.sample, path_dimension(sr.depth, LOBE), sr.seed)
         if xi < q_d:
             u, v = self.diffuse_brdf.sample_point(sr, BOUNCE_U)
             f, wi, pdf = self.diffuse_brdf.sample_f(sr, wo, u, v)
@@ -55,7 +57,7 @@ class GlossyReflector(Phong):
             if not (pdf > 0.0 and cos_theta > 0.0):
                 return PathVertex(L)
             return PathVertex(L, f, cos_theta / (pdf * q_d), Ray(sr.position, wi, SPAWN_EPSILON))
-        if xi < q_d + q_s:
+        if q_s > 0.0:
             u, v = self.specular_brdf.sample_point(sr, BOUNCE_U)
             _, wi, _ = self.specular_brdf.sample_f(sr, wo, u, v)
             cos_theta = dot(n, wi)

@@ -29,13 +29,15 @@ DIMENSIONS = {"pixel_set": PIXEL_SET, "lens_set": LENS_SET}
 
 # PathTrace: vertex ``depth`` of a path (0 where the eye ray lands) draws dimension
 # path_dimension(depth, k) for k = BOUNCE_U, BOUNCE_V (the next direction), ROULETTE (Russian
-# roulette), CHOICE (a dielectric's) and LIGHT_U + 2 j, LIGHT_V + 2 j (a point of the path's j-th area light, in the
-# order of Scene.lights); k below LIGHT_U is kept for the vertex's own numbers.
+# roulette: whether the path goes on from the vertex), CHOICE (a dielectric's), LOBE (a
+# GlossyReflector's lobe) and LIGHT_U + 2 j, LIGHT_V + 2 j (a point of the path's j-th area
+# light, in the order of Scene.lights); k below LIGHT_U is kept for the vertex's own numbers.
 VERTEX_DIMENSIONS = 1 << 16
 BOUNCE_U = 0
 BOUNCE_V = 1
 ROULETTE = 2
 CHOICE = 3          # a dielectric's choice between reflection and refraction
+LOBE = 4            # a GlossyReflector's choice between its diffuse and its glossy lobe
 LIGHT_U = 8
 LIGHT_V = 9
 

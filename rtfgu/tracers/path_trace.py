@@ -6,11 +6,19 @@ vertex the material's ``path_shade`` (rtfgu/materials) says what the path gains 
 how it goes on (a PathVertex): a Matte adds the light of every light source, reflected by
 f_r = kd cd / pi (next-event estimation, 02562 worksheet 5: a point or directional light as
 in the ray-cast tracers, an AreaLight through one point of it drawn by area, each unless
-shadowed), then continues with probability q = mean(kd cd) (Russian roulette, worksheet 7)
-along the direction ``Lambertian.sample_f`` draws, the throughput multiplied by
-f_r (n . w_i) / (pdf q); a GlossyReflector also samples its lobe; a mirror and a refraction
-continue along their ray, a Dielectric by Fresnel's choice; a flat colour ends the path
-showing its colour.
+shadowed), then continues along the direction ``Lambertian.sample_f`` draws, the throughput
+multiplied by f_r (n . w_i) / pdf; a GlossyReflector picks its diffuse part or its lobe; a
+mirror and a refraction continue along their ray, a Dielectric by Fresnel's choice; a flat
+colour ends the path showing its colour.
+
+Russian roulette (Arvo and Kirk 1990; worksheet 7) ends paths that carry little: from the
+vertex at depth ROULETTE_DEPTH on, a path whose throughput's largest component q is below 1
+goes on with probability q and its throughput is divided by q (PBRT-v4's PathIntegrator:
+from the second vertex, on the throughput). The estimate stays unbiased; a path of albedo-1
+surfaces is never ended (no variance added to a white furnace), and the first bounce, where
+most of the indirect light is, is always followed. (Earlier rtfgu ended a path at every
+vertex with probability 1 - mean(kd cd), worksheet 7's first roulette: the same expectation
+with more variance at the first bounces.)
 
 Emitted light is counted where the eye sees it and after a mirror or a refraction, and not
 after a diffuse bounce, whose light sources the bounce's vertex sampled already; so every
@@ -31,8 +39,11 @@ A path has at most ``max_depth`` vertices.
 from __future__ import annotations
 
 from ..float3 import Float3, dot
-from ..sampling.random import LIGHT_U, VERTEX_DIMENSIONS
+from ..sampling.random import LIGHT_U, ROULETTE, VERTEX_DIMENSIONS, path_dimension, random_float
 from .tracer import Tracer, check_max_depth
+
+# The first vertex (0 where the eye ray lands) whose continuation Russian roulette decides.
+ROULETTE_DEPTH = 1
 
 # The deepest path: vertex dimensions stay below 2^32 far beyond it.
 MAX_PATH_DEPTH = 1024
@@ -57,6 +68,14 @@ class PathTrace(Tracer):
         throughput = Float3(1.0)
         sees_emission = True        # the eye ray, or a ray after a mirror or a refraction
         for depth in range(depth, self.max_depth):
+            if depth > ROULETTE_DEPTH:
+                # Russian roulette on the throughput, for the ray from the vertex before.
+                q = max(throughput.x, throughput.y, throughput.z)
+                if q < 1.0:
+                    pixel, sample, seed = self.stream
+                    if not random_float(pixel, sample, path_dimension(depth - 1, ROULETTE), seed) < q:
+                        break
+                    throughput = throughput / q
             sr = self.hit(ray, depth)
             if sr is None:
                 result += throughput * self.world.background_radiance(ray.direction)

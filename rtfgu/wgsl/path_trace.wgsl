@@ -8,6 +8,9 @@
 const BOUNCE_U = 0u;
 const ROULETTE = 2u;
 const CHOICE = 3u;
+const LOBE = 4u;
+// The first vertex whose continuation Russian roulette decides (rtfgu.tracers.path_trace).
+const ROULETTE_DEPTH = 1u;
 
 // Duff et al. 2017's orthonormal basis: local (x, y, z) in the frame whose z is the unit axis.
 fn about(axis: vec3f, local: vec3f) -> vec3f
@@ -112,6 +115,16 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
     var throughput = vec3f(1.0);
     var sees_emission = true;
     for (var depth = 0u; depth < PATH_MAX_DEPTH; depth++) {
+        if (depth > ROULETTE_DEPTH) {
+            // Russian roulette on the throughput, for the ray from the vertex before (PathTrace).
+            let q = max(max(throughput.x, throughput.y), throughput.z);
+            if (q < 1.0) {
+                if (!(random_float(pixel, s, 2u + (depth - 1u) * VERTEX_DIMENSIONS + ROULETTE, uniforms.seed) < q)) {
+                    break;
+                }
+                throughput = throughput * (1.0 / q);
+            }
+        }
         var hit = empty_hit();
         if (!intersect_scene(&r, &hit)) {
             result += throughput * background_radiance(r.direction);
@@ -137,15 +150,16 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
             if (depth + 1u == PATH_MAX_DEPTH) {
                 break;
             }
-            // Russian roulette picks the lobe the path follows, or ends it.
+            // The lobe the path follows, in the ratio of the albedos (a Matte's q_d is 1).
             var q_d = (rho.x + rho.y + rho.z) / 3.0;
             var q_s = (specular.x + specular.y + specular.z) / 3.0;
-            if (q_d + q_s > 1.0) {
-                let total = q_d + q_s;
-                q_d = q_d / total;
-                q_s = q_s / total;
+            if (!(q_d + q_s > 0.0)) {
+                break;
             }
-            let xi = random_float(pixel, s, first + ROULETTE, uniforms.seed);
+            let total = q_d + q_s;
+            q_d = q_d / total;
+            q_s = q_s / total;
+            let xi = random_float(pixel, s, first + LOBE, uniforms.seed);
             // The chosen BRDF's own sampler's point, or the stream's (BRDF.sample_point).
             // #if own_sampler
             let m = materials[u32(hit_shape)];
@@ -166,7 +180,7 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
                     break;
                 }
                 throughput = throughput * f * (cos_theta / (pdf * q_d));
-            } else if (xi < q_d + q_s) {
+            } else if (q_s > 0.0) {
                 // #if glossy_reflector
                 let d = r.direction;
                 w_i = lobe_direction(d - n * (2.0 * dot(d, n)), hit.shininess, u, v);
