@@ -34,9 +34,8 @@ class Torus(Shape):
         self.a = positive(a, "Torus.a")
         self.b = positive(b, "Torus.b")
         if not self.b < self.a:
-            raise ValueError("Torus.b: the tube radius b = %r must be below the sweep radius a = %r "
-                             "(b >= a is a horn or spindle torus, which the ring torus's tests do not cover)"
-                             % (self.b, self.a))
+            raise ValueError("Torus.b, the tube radius, must be below Torus.a, the sweep radius, got a = %r, "
+                             "b = %r (b >= a is a horn or spindle torus, which is not a ring)" % (self.a, self.b))
         self._box = self.bounds()
 
     def intersect_p(self, ray: Ray) -> bool:
