@@ -1,18 +1,19 @@
 """The real roots of a quartic for the kernels: rtfgu.shapes.quartic (Schwarze's
 ``SolveQuartic``, Graphics Gems I, as Suffern's ``Torus::hit`` calls it, then Newton
 steps on each root), operation for operation, so that a float64 kernel rounds exactly as
-the lecture layer does; the constants are ``lit`` in the precision of the coefficients, and
-EQN_EPS is 1e-30 in float32 (1e-90 is 0 there)."""
+the lecture layer does; the constants are ``lit`` in the precision of the coefficients,
+EQN_EPS is 1e-30 in float32 (1e-90 is 0 there) and RESIDUAL 2^-16."""
 from __future__ import annotations
 
 import math
 
 from numba import njit
 
-from ..shapes.quartic import EQN_EPS, NEWTON_STEPS, PI_THIRD, THIRD, TWO_27THS
+from ..shapes.quartic import EQN_EPS, NEWTON_STEPS, PI_THIRD, RESIDUAL, THIRD, TWO_27THS
 from .float3 import lit, lit_per_precision
 
 EQN_EPS32 = 1e-30
+RESIDUAL32 = 2.0 ** -16
 
 
 @njit(cache=True, error_model="numpy")
@@ -87,6 +88,7 @@ def quartic_value(c0, c1, c2, c3, c4, t):
 
 @njit(cache=True, error_model="numpy")
 def polish_root(c0, c1, c2, c3, c4, t):
+    """(t, f(t)) after at most NEWTON_STEPS Newton steps, each kept only if |f| drops."""
     f = quartic_value(c0, c1, c2, c3, c4, t)
     for _ in range(NEWTON_STEPS):
         slope = ((lit(4.0, t) * c4 * t + lit(3.0, t) * c3) * t + lit(2.0, t) * c2) * t + c1
@@ -98,13 +100,36 @@ def polish_root(c0, c1, c2, c3, c4, t):
             break
         t = t_next
         f = f_next
-    return t
+    return t, f
+
+
+@njit(cache=True, error_model="numpy")
+def is_root(c0, c1, c2, c3, c4, t, f):
+    x = abs(t)
+    size = (((abs(c4) * x + abs(c3)) * x + abs(c2)) * x + abs(c1)) * x + abs(c0)
+    return abs(f) <= lit_per_precision(RESIDUAL32, RESIDUAL, t) * size
+
+
+@njit(cache=True, error_model="numpy")
+def _keep(c0, c1, c2, c3, c4, x, roots):
+    """roots = (count, s0, s1, s2, s3) with x polished and appended if it is a root."""
+    t, f = polish_root(c0, c1, c2, c3, c4, x)
+    n, s0, s1, s2, s3 = roots
+    if not is_root(c0, c1, c2, c3, c4, t, f):
+        return roots
+    if n == 0:
+        return 1, t, s1, s2, s3
+    if n == 1:
+        return 2, s0, t, s2, s3
+    if n == 2:
+        return 3, s0, s1, t, s3
+    return 4, s0, s1, s2, t
 
 
 @njit(cache=True, error_model="numpy")
 def solve_quartic(c0, c1, c2, c3, c4):
-    """(count, s0, s1, s2, s3): the real roots of c4 x^4 + ... + c0, each polished, unsorted
-    (rtfgu.shapes.quartic.solve_quartic)."""
+    """(count, s0, s1, s2, s3): the real roots of c4 x^4 + ... + c0, each polished and
+    verified, unsorted (rtfgu.shapes.quartic.solve_quartic)."""
     zero = lit(0.0, c0)
     one = lit(1.0, c0)
     half = lit(0.5, c0)
@@ -142,12 +167,13 @@ def solve_quartic(c0, c1, c2, c3, c4):
         s2 = b0 if n1 == 2 else b1
         s3 = b1
     sub = lit(0.25, c0) * A
+    roots = (0, zero, zero, zero, zero)
     if count > 0:
-        s0 = polish_root(c0, c1, c2, c3, c4, s0 - sub)
+        roots = _keep(c0, c1, c2, c3, c4, s0 - sub, roots)
     if count > 1:
-        s1 = polish_root(c0, c1, c2, c3, c4, s1 - sub)
+        roots = _keep(c0, c1, c2, c3, c4, s1 - sub, roots)
     if count > 2:
-        s2 = polish_root(c0, c1, c2, c3, c4, s2 - sub)
+        roots = _keep(c0, c1, c2, c3, c4, s2 - sub, roots)
     if count > 3:
-        s3 = polish_root(c0, c1, c2, c3, c4, s3 - sub)
-    return count, s0, s1, s2, s3
+        roots = _keep(c0, c1, c2, c3, c4, s3 - sub, roots)
+    return roots

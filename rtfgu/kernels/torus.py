@@ -5,7 +5,7 @@ for operation, so that a float64 kernel rounds exactly as the lecture layer does
 ``intersect_torus(origin, direction, tmin, tmax, a, b)`` returns the least root of the
 book's quartic in [tmin, tmax], or inf; the ray is first tested against the torus's box
 (``bbox_hit``, BBox.hit with the box Torus.bounds gives) and the quartic is written for the
-ray from where it enters it (rtfgu/shapes/torus.py says why). The roots come from
+ray from where it enters it, with a unit direction (rtfgu/shapes/torus.py says why). The roots come from
 rtfgu.kernels.quartic (Schwarze's SolveQuartic and Newton steps).
 """
 from __future__ import annotations
@@ -14,9 +14,8 @@ import math
 
 from numba import njit
 
-from ..accelerators.bbox import PAD
-from .float3 import add, lit, lit_per_precision, normalize, scale
-from .mesh import WIDEN32, WIDEN64
+from ..accelerators.bbox import PAD, WIDEN, WIDEN32
+from .float3 import add, div, length, lit, lit_per_precision, normalize, scale
 from .quartic import solve_quartic
 
 # A float32 box grows by 2^-20 of its size (as rtfgu.layout grows a sphere's), since PAD
@@ -27,7 +26,7 @@ PAD32 = 2.0 ** -20
 @njit(cache=True, error_model="numpy")
 def bbox_hit(origin, direction, tmin, tmax, p0, p1):
     """BBox.hit: the t at which the ray enters the box p0..p1 within [tmin, tmax], or inf."""
-    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    widen = lit_per_precision(WIDEN32, WIDEN, tmin)
     t0 = tmin
     t1 = tmax
     for k in range(3):
@@ -59,15 +58,16 @@ def torus_box(a, b):
 
 @njit(cache=True, error_model="numpy")
 def intersect_torus(origin, direction, tmin, tmax, a, b):
-    # Suffern's Torus::hit: the box, then the quartic c4 t^4 + ... + c0 for the ray from the
-    # box's entry o' = o + t_box d, and the least root t_box + s in range.
+    # Suffern's Torus::hit: the box, then the quartic c4 s^4 + ... + c0 for the ray from the
+    # box's entry o' = o + t_box d along d' = d / |d|, and the least t_box + s / |d| in range.
     p0, p1 = torus_box(a, b)
     t_box = bbox_hit(origin, direction, tmin, tmax, p0, p1)
     inf = lit(math.inf, tmin)
     if t_box == inf:
         return inf
-    d = direction
-    o = add(origin, scale(d, t_box))
+    o = add(origin, scale(direction, t_box))
+    size = length(direction)
+    d = div(direction, size)
     sum_d_sqrd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
     e = o[0] * o[0] + o[1] * o[1] + o[2] * o[2] - a * a - b * b
     f = o[0] * d[0] + o[1] * d[1] + o[2] * d[2]
@@ -82,7 +82,7 @@ def intersect_torus(origin, direction, tmin, tmax, a, b):
     t = inf
     for k in range(count):   # the least root in range; the roots are unsorted
         s = s0 if k == 0 else (s1 if k == 1 else (s2 if k == 2 else s3))
-        t_hit = t_box + s
+        t_hit = t_box + s / size
         if t_hit >= tmin and t_hit <= tmax and t_hit < t:
             t = t_hit
     return t

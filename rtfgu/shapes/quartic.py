@@ -11,16 +11,20 @@ method on the quartic as given, c4 t^4 + c3 t^3 + c2 t^2 + c1 t + c0, a step tak
 lowers |f(t)| (so a step near a double root, where f' is nearly 0, cannot throw the root
 away), at most NEWTON_STEPS times.
 
-rtfgu departs from the book's code in three places, each where rounding would otherwise give
-NaN or lose real roots. (1) The resolvent cubic's largest root z is taken (Schwarze's s[0],
-except when the cubic has a double root, where s[0] = 2u may be the smaller one); then
-u^2 = z^2 - r and v^2 = 2 z - p are >= 0 in exact arithmetic ((2 z - p)(z^2 - r) = q^2 / 4
-and z >= p / 2), so a negative value is rounding and is taken as 0, where the book returns
-no root: a ray through the torus's axis (q = 0, u = 0 exactly) lost all four roots to a
-u of -1e-16. (2) ``IsZero`` is |x| < EQN_EPS with EQN_EPS = 1e-90 (the book's) in float64
-and 1e-30 in float32 (Schwarze's bound for "results correct, a double root maybe twice";
-1e-90 is 0 in float32). (3) The argument of acos in the casus irreducibilis is clamped to
-[-1, 1]. The numba twin (rtfgu/kernels/quartic.py) does the same
+rtfgu departs from the book's code in four places, each where rounding would otherwise give
+NaN, lose real roots or make up some. (1) The resolvent cubic's largest root z is taken
+(Schwarze's s[0], except when the cubic has a double root, where s[0] = 2u may be the smaller
+one). (2) u^2 = z^2 - r and v^2 = 2 z - p are >= 0 in exact arithmetic ((2 z - p)(z^2 - r) =
+q^2 / 4 and z >= p / 2), so a negative value is taken as 0, where the book returns no root:
+a ray through the torus's hole (q = 0, u = 0 exactly) lost all four roots to a u of -1e-16,
+and in float32 a resolvent whose largest root rounding has lost (a near-double root that
+comes out as a complex pair) lost a ray's hit. (3) Every polished root is verified: it is
+kept only if |f(t)| <= RESIDUAL (2^-40; 2^-16 in float32) times |c4| |t|^4 + ... + |c0|,
+what rounding can leave of a root, so that a ray along the axis, whose quartic has two
+double complex roots ((t^2 + a^2 - b^2)^2 for o = 0), gets no real root out of (2).
+(4) ``IsZero`` is |x| < EQN_EPS with EQN_EPS = 1e-90 (the book's) in float64 and 1e-30 in
+float32 (Schwarze's bound for "results correct, a double root maybe twice"; 1e-90 is 0 in
+float32), and the argument of acos in the casus irreducibilis is clamped to [-1, 1]. The numba twin (rtfgu/kernels/quartic.py) does the same
 operations in the same order, so a float64 render equals the lecture layer's bit for bit;
 the WGSL twin is rtfgu/wgsl/solve_quartic.wgsl.
 
@@ -33,6 +37,7 @@ import math
 
 EQN_EPS = 1e-90
 NEWTON_STEPS = 3
+RESIDUAL = 2.0 ** -40
 THIRD = 1.0 / 3.0
 TWO_27THS = 2.0 / 27.0
 PI_THIRD = math.pi / 3.0
@@ -100,8 +105,9 @@ def quartic_value(c0: float, c1: float, c2: float, c3: float, c4: float, t: floa
     return (((c4 * t + c3) * t + c2) * t + c1) * t + c0
 
 
-def polish_root(c0: float, c1: float, c2: float, c3: float, c4: float, t: float) -> float:
-    """At most NEWTON_STEPS Newton steps t - f(t) / f'(t), each kept only if |f| drops."""
+def polish_root(c0: float, c1: float, c2: float, c3: float, c4: float, t: float) -> tuple:
+    """At most NEWTON_STEPS Newton steps t - f(t) / f'(t), each kept only if |f| drops:
+    (t, f(t))."""
     f = quartic_value(c0, c1, c2, c3, c4, t)
     for _ in range(NEWTON_STEPS):
         slope = ((4.0 * c4 * t + 3.0 * c3) * t + 2.0 * c2) * t + c1
@@ -112,7 +118,15 @@ def polish_root(c0: float, c1: float, c2: float, c3: float, c4: float, t: float)
         if not abs(f_next) < abs(f):
             break
         t, f = t_next, f_next
-    return t
+    return t, f
+
+
+def is_root(c0: float, c1: float, c2: float, c3: float, c4: float, t: float, f: float) -> bool:
+    """Whether f = f(t) is within RESIDUAL of the size of the terms, |c4| |t|^4 + ... + |c0|:
+    a rounding error, not a value of the quartic away from its roots."""
+    x = abs(t)
+    size = (((abs(c4) * x + abs(c3)) * x + abs(c2)) * x + abs(c1)) * x + abs(c0)
+    return abs(f) <= RESIDUAL * size
 
 
 def solve_quartic(c0: float, c1: float, c2: float, c3: float, c4: float) -> tuple:
@@ -145,5 +159,6 @@ def solve_quartic(c0: float, c1: float, c2: float, c3: float, c4: float) -> tupl
         n2, s2 = solve_quadric(z + u, v if q < 0.0 else -v, 1.0)
         roots = list(s1[:n1]) + list(s2[:n2])
     sub = 0.25 * A
-    roots = [polish_root(c0, c1, c2, c3, c4, x - sub) for x in roots]
+    polished = [polish_root(c0, c1, c2, c3, c4, x - sub) for x in roots]
+    roots = [t for t, f in polished if is_root(c0, c1, c2, c3, c4, t, f)]
     return len(roots), tuple(roots + [0.0] * (4 - len(roots)))

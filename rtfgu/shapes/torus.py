@@ -11,9 +11,11 @@ o + t d meets it where (the book's ``Torus::hit``, with e = o.o - a^2 - b^2 and 
 The book first tests the ray against the torus's bounding box (BBox.hit, Suffern ch. 19), then
 solves the quartic with Schwarze's ``SolveQuartic`` (rtfgu.shapes.quartic, which also polishes
 each root with Newton's method) and takes the least root in range. rtfgu departs from the book
-in one place, for the digits: the quartic is written for the ray from where it enters the box,
-o' = o + t_box d, and the hit is at t = t_box + s for its root s. A far origin gives
-coefficients of size |o|^4 whose leading digits cancel; from the box they are of size (a + b)^4.
+in one place, for the digits: the quartic is written for the ray from where it enters the box
+with a unit direction, o' = o + t_box d and d' = d / |d|, and the hit is at t = t_box + s / |d|
+for its root s. A far origin gives coefficients of size |o|^4 whose leading digits cancel; from
+the box they are of size (a + b)^4, and with |d'| = 1 the roots are distances of the size of
+the torus (in float32, a direction of length 1e3 left the closed form no correct digit).
 
 The normal is the gradient of the implicit function, the book's ``compute_normal``:
 (4 x (|p|^2 - a^2 - b^2), 4 y (|p|^2 - a^2 - b^2 + 2 a^2), 4 z (|p|^2 - a^2 - b^2)), normalised.
@@ -42,8 +44,9 @@ class Torus(Shape):
         t_box = self._box.hit(ray)
         if t_box == math.inf:
             return False
-        d = ray.direction
-        o = ray.origin + d * t_box
+        o = ray.origin + ray.direction * t_box
+        length = ray.direction.length()
+        d = ray.direction / length
         a, b = self.a, self.b
         sum_d_sqrd = d.x * d.x + d.y * d.y + d.z * d.z
         e = o.x * o.x + o.y * o.y + o.z * o.z - a * a - b * b
@@ -56,7 +59,7 @@ class Torus(Shape):
                                      sum_d_sqrd * sum_d_sqrd)
         t = math.inf
         for k in range(count):   # the least root in range; the roots are unsorted
-            t_hit = t_box + roots[k]
+            t_hit = t_box + roots[k] / length
             if ray.tmin <= t_hit < ray.tmax and t_hit < t:
                 t = t_hit
         if t == math.inf:

@@ -2,8 +2,9 @@
 // Ray-torus intersection (Suffern ch. 19, "Tori"; rtfgu.shapes.torus): the ring torus about
 // the y axis, sweep radius a, tube radius b. The ray is tested against the torus's box
 // (torus_box_entry, BBox.hit), then the book's quartic is written for the ray from where it
-// enters the box, o' = o + t_box d (coefficients of size (a + b)^4, not |o|^4), solved by
-// solve_quartic (solve_quartic.wgsl), and the least root in [tmin, tmax) is the hit. The
+// enters the box with a unit direction, o' = o + t_box d, d' = d / |d| (coefficients of size
+// (a + b)^4, not |o|^4), solved by solve_quartic (solve_quartic.wgsl), and the least
+// t_box + s / |d| in [tmin, tmax) is the hit. The
 // normal is the book's compute_normal, the gradient of the implicit function.
 fn intersect_torus(r: Ray, hit: ptr<function, HitInfo>, a: f32, b: f32) -> bool
 {
@@ -11,8 +12,9 @@ fn intersect_torus(r: Ray, hit: ptr<function, HitInfo>, a: f32, b: f32) -> bool
     if (t_box < 0.0) {
         return false;
     }
-    let d = r.direction;
-    let o = r.origin + d * t_box;
+    let o = r.origin + r.direction * t_box;
+    let size = length(r.direction);
+    let d = r.direction / size;
     let sum_d_sqrd = d.x * d.x + d.y * d.y + d.z * d.z;
     let e = o.x * o.x + o.y * o.y + o.z * o.z - a * a - b * b;
     let f = o.x * d.x + o.y * d.y + o.z * d.z;
@@ -25,7 +27,7 @@ fn intersect_torus(r: Ray, hit: ptr<function, HitInfo>, a: f32, b: f32) -> bool
     var found = false;
     var t = 0.0;
     for (var k = 0; k < roots.count; k++) {   // the least root in range; the roots are unsorted
-        let t_hit = t_box + roots.s[k];
+        let t_hit = t_box + roots.s[k] / size;
         if (t_hit >= r.tmin && t_hit < r.tmax && (!found || t_hit < t)) {
             found = true;
             t = t_hit;

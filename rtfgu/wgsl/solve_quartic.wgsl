@@ -1,12 +1,14 @@
 // The real roots of a quartic (rtfgu/shapes/quartic.py): Schwarze's SolveQuartic (Graphics
-// Gems I, 1990), as Suffern's Torus::hit calls it, with rtfgu's three departures (the
-// resolvent's largest root, u^2 and v^2 below 0 by rounding taken as 0, acos's argument
-// clamped; EQN_EPS is 1e-30 in f32), then at most QUARTIC_NEWTON_STEPS Newton steps on each
-// root, each kept only if |f| drops: f32's closed form keeps only a few digits.
+// Gems I, 1990), as Suffern's Torus::hit calls it, with rtfgu's departures (the resolvent's
+// largest root, u^2 and v^2 below 0 taken as 0, acos's argument clamped; EQN_EPS is 1e-30 in
+// f32), then at most QUARTIC_NEWTON_STEPS Newton steps on each root, each kept only if |f|
+// drops (f32's closed form keeps only a few digits), and a root kept only if its residual is
+// what rounding leaves (QUARTIC_RESIDUAL).
 
 const EQN_EPS: f32 = 1e-30;
 const QUARTIC_NEWTON_STEPS: i32 = 3;
 const PI_THIRD: f32 = 1.0471975511965976;
+const QUARTIC_RESIDUAL: f32 = 1.52587890625e-05;   // 2^-16
 
 // count real roots in s.x, s.y, ... (unsorted)
 struct Roots {
@@ -82,7 +84,9 @@ fn quartic_value(c: array<f32, 5>, t: f32) -> f32
     return (((c[4] * t + c[3]) * t + c[2]) * t + c[1]) * t + c[0];
 }
 
-fn polish_root(c: array<f32, 5>, t0: f32) -> f32
+// The root near t0 after the Newton steps, or a negative count's -1 in .y if |f| stays
+// above QUARTIC_RESIDUAL of |c4| |t|^4 + ... + |c0| (no root: rounding cannot leave that much).
+fn polish_root(c: array<f32, 5>, t0: f32) -> vec2f
 {
     var t = t0;
     var f = quartic_value(c, t);
@@ -99,7 +103,9 @@ fn polish_root(c: array<f32, 5>, t0: f32) -> f32
         t = t_next;
         f = f_next;
     }
-    return t;
+    let x = abs(t);
+    let size = (((abs(c[4]) * x + abs(c[3])) * x + abs(c[2])) * x + abs(c[1])) * x + abs(c[0]);
+    return vec2f(t, select(-1.0, 1.0, abs(f) <= QUARTIC_RESIDUAL * size));
 }
 
 // The real roots of c[4] x^4 + c[3] x^3 + c[2] x^2 + c[1] x + c[0] (c[4] != 0), each polished.
@@ -132,8 +138,13 @@ fn solve_quartic(c: array<f32, 5>) -> Roots
             roots.count += 1;
         }
     }
+    var kept = Roots(0, vec4f(0.0));
     for (var k = 0; k < roots.count; k++) {
-        roots.s[k] = polish_root(c, roots.s[k] - 0.25 * A);
+        let polished = polish_root(c, roots.s[k] - 0.25 * A);
+        if (polished.y > 0.0) {
+            kept.s[kept.count] = polished.x;
+            kept.count += 1;
+        }
     }
-    return roots;
+    return kept;
 }
