@@ -1,11 +1,13 @@
 """Hard cases: every family on every available path against its exact truth, and the claims
 the robust formulas make (watertight edges, parallel planes, spawned rays, far, small and
 tangent spheres in float32); disks through the rim and nearly parallel to them; rectangles
-through their edges and corners."""
+through their edges and corners; tori tangent to the tube, through the hole, far and along the
+axis."""
 from __future__ import annotations
 
 import math
 
+import mpmath
 import numpy as np
 import pytest
 
@@ -276,6 +278,52 @@ def test_open_cylinder_rims_and_tangents_against_the_exact_truth(results):
     family = build("open_cylinder_rim", "float64")
     wrong = np.isfinite(results["open_cylinder_rim", "reference-slide"].t) != family.truth_hit
     assert not wrong[1::2].any(), np.flatnonzero(wrong)
+
+
+# --- tori -----------------------------------------------------------------------------
+
+def test_torus_exact_truth_by_hand():
+    torus = (2.0, 1.0)
+    assert exact.torus((0, 0, 5), (0, 0, -1), 0.0, math.inf, *torus) == (2.0, 0.0)        # the outer equator
+    assert exact.torus((0, 0, 0), (0, 0, 1), 0.0, math.inf, *torus) == (1.0, 0.0)         # the inner one
+    assert exact.torus((0, 1, 5), (0, 0, -1), 0.0, math.inf, *torus) == (3.0, 0.0)        # tangent: a double root
+    above = math.nextafter(1.0, 2.0)
+    assert exact.torus((0, above, 5), (0, 0, -1), 0.0, math.inf, *torus) == exact.MISS   # 1 ulp above it
+    assert exact.torus((0, 5, 0), (0, -1, 0), 0.0, math.inf, *torus) == exact.MISS       # along the axis
+    assert exact.torus((0, 0, 5), (0, 0, -1), 0.0, 2.0, *torus) == exact.MISS            # tmax excluded
+    assert exact.torus((0, 0, 5), (0, 0, -1), 2.0, math.inf, *torus) == (2.0, 0.0)       # tmin included
+    # (|z| - 2)^2 + 1/4 = 1: t = 3 - sqrt(3/4)
+    hi, lo = exact.torus((0, 0.5, 5), (0, 0, -1), 0.0, math.inf, *torus)
+    with mpmath.workdps(50):
+        root = 3 - mpmath.sqrt(mpmath.mpf(3) / 4)
+        assert hi == float(root) and abs(mpmath.mpf(hi) + lo - root) < 1e-30
+
+
+TORUS_FAMILIES = [name for name, spec in FAMILIES.items() if spec.kind == "torus"]
+TORUS_PATHS = {"reference": ReferencePath("slide"), "numba64": NumbaPath("slide", "float64"),
+               "numba32": NumbaPath("slide", "float32")}
+
+
+@pytest.mark.parametrize("name", TORUS_FAMILIES)
+def test_torus_families_against_the_exact_truth(name):
+    """In float64 the lecture layer and numba (bit for bit the same) decide every torus ray
+    as the exact truth does; in float32 (numba and WGSL) the far rays and the rays along the
+    axis too, and the rays within 1e-4 b of a tangent to the tube mostly."""
+    paths = dict(TORUS_PATHS)
+    if WGSL_MISSING is None:
+        paths["wgsl32"] = WgslPath("slide")
+    got = {pid: evaluate(build(name, path.precision), path) for pid, path in paths.items()}
+    assert np.array_equal(got["numba64"].t, got["reference"].t), name
+    assert got["reference"].wrong == 0 and got["reference"].rel_err_max < 1e-12, got["reference"].row()
+    assert build(name, "float64").truth_hit.any() or name == "torus_axis"
+    for pid in paths:
+        if pid.endswith("32"):
+            r = got[pid]
+            assert r.nan == 0, r.row()
+            if name in ("torus_far", "torus_axis"):
+                assert r.wrong == 0 and r.rel_err_max < 1e-6, r.row()
+            else:
+                assert r.wrong <= r.rays // 5, r.row()
 
 
 # --- numba generic over float32 -------------------------------------------------------
