@@ -8,7 +8,8 @@ o + t d meets it where (the book's ``Torus::hit``, with e = o.o - a^2 - b^2 and 
     c4 = (d.d)^2,  c3 = 4 (d.d) f,  c2 = 2 (d.d) e + 4 f^2 + 4 a^2 d_y^2,
     c1 = 4 f e + 8 a^2 o_y d_y,  c0 = e^2 - 4 a^2 (b^2 - o_y^2).
 
-The book first tests the ray against the torus's bounding box (BBox.hit, Suffern ch. 19), then
+The book first tests the ray against the torus's bounding box (BBox.hit, Suffern ch. 19, which
+is assignment a08's: a student's torus works once a08 is solved), then
 solves the quartic with Schwarze's ``SolveQuartic`` (rtfgu.shapes.quartic, which also polishes
 each root with Newton's method) and takes the least root in range. rtfgu departs from the book
 in one place, for the digits: the quartic is written for the ray from where it enters the box
