@@ -596,3 +596,25 @@ def test_torus_tie_with_a_plane(path, torus_first):
     assert (hit.shape, hit.kind) == (0, first), "%s: the %s (Scene.shapes[%s]) won at t = %r" % (
         path.label, hit.kind, hit.shape, hit.t)
     assert hit.t == 4.0
+
+
+def test_torus_texture_coordinates_pick_the_checker_square_on_every_path(path):
+    """Torus.texcoord (u about the y axis, v about the tube from the outer equator) picks
+    the checker's square on every path: points of Torus(2, 1) at (phi, theta), seen along
+    their normals, far from a square's edge."""
+    from rtfgu.textures import Checker
+
+    red, blue = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0)
+    scene = _scene([Torus(2.0, 1.0, Float3(0.0), Material(cd=Checker(red, blue, size=0.125)))])
+    rays, want = [], []
+    for phi, theta in ((0.3, 0.2), (2.0, -0.5), (4.0, 1.2), (5.3, 0.55)):
+        n = (math.cos(theta) * math.sin(phi), math.sin(theta), math.cos(theta) * math.cos(phi))
+        p = ((2 + math.cos(theta)) * math.sin(phi), math.sin(theta), (2 + math.cos(theta)) * math.cos(phi))
+        rays.append((tuple(pc + 5 * nc for pc, nc in zip(p, n)), tuple(-c for c in n), 0.0, INF))
+        cells = (phi / (2 * math.pi) / 0.125, (theta % (2 * math.pi)) / (2 * math.pi) / 0.125)
+        assert all(0.01 < c - math.floor(c) < 0.99 for c in cells)   # far from an edge
+        want.append(red if (math.floor(cells[0]) + math.floor(cells[1])) % 2 == 0 else blue)
+    assert red in want and blue in want
+    for k, (bounces, colour) in enumerate(zip(path.trace(scene, rays), want)):
+        assert bounces[0].kind == "torus" and bounces[0].color == (colour.x, colour.y, colour.z), (
+            "%s ray %d: %r" % (path.label, k, bounces[0]))
