@@ -19,7 +19,8 @@ A shape kind named ``disk`` (``ShapeKind("disk", Disk, fields)``) promises:
 * WGSL: the file ``intersect_disk.wgsl`` with
   ``fn intersect_disk(r: Ray, hit: ptr<function, HitInfo>, <fields>) -> bool`` filling
   the hit as the 02562 slides do; a formula other than "slide" is the file
-  ``<formula>_disk.wgsl`` defining the same function.
+  ``<formula>_disk.wgsl`` defining the same function; ``wgsl_helpers`` names pieces of no
+  kind that the function calls (the torus's ``solve_quartic.wgsl``), joined before it.
 
 docs/adding_a_shape.md walks through it. Nothing here imports numba or wgpu: the kernels
 and the WGSL files are named, and loaded only by the paths that use them.

@@ -24,9 +24,11 @@ what rounding can leave of a root, so that a ray along the axis, whose quartic h
 double complex roots ((t^2 + a^2 - b^2)^2 for o = 0), gets no real root out of (2).
 (4) ``IsZero`` is |x| < EQN_EPS with EQN_EPS = 1e-90 (the book's) in float64 and 1e-30 in
 float32 (Schwarze's bound for "results correct, a double root maybe twice"; 1e-90 is 0 in
-float32), and the argument of acos in the casus irreducibilis is clamped to [-1, 1]. The numba twin (rtfgu/kernels/quartic.py) does the same
-operations in the same order, so a float64 render equals the lecture layer's bit for bit;
-the WGSL twin is rtfgu/wgsl/solve_quartic.wgsl.
+float32), and the argument of acos in the casus irreducibilis is clamped to [-1, 1].
+
+The numba twin (rtfgu/kernels/quartic.py) does the same operations in the same order, so a
+float64 render equals the lecture layer's bit for bit; the WGSL twin is
+rtfgu/wgsl/solve_quartic.wgsl.
 
 ``solve_quartic(c0, c1, c2, c3, c4)`` returns (count, roots): the ``count`` real roots,
 unsorted, in a tuple of four (the rest 0.0), as the book's (num, s[4]).
