@@ -114,7 +114,8 @@ def hardcases_markdown(rays: int = 200_000) -> str:
     """The hard-case section of docs/bench.md, measured now."""
     out = ["## Hard cases", "",
            "Seeded families from `rtfgu.hardcases`, %d rays each, with exact truth (rationals, "
-           "50-digit square roots). *wrong*: wrong hit/miss decisions (for secondary rays also "
+           "50-digit square roots; a torus's root isolated by Sturm's theorem in rationals, then at "
+           "50 digits). *wrong*: wrong hit/miss decisions (for secondary rays also "
            "self-hits and skipped real hits); *leaks*: true hits the path missed; *self/skip*: "
            "secondary rays that re-hit their own surface / passed the real hit just beyond; "
            "*rel. err.*: median and maximum |t - t_exact| / t_exact over rays both hit. "

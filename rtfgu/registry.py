@@ -19,7 +19,8 @@ A shape kind named ``disk`` (``ShapeKind("disk", Disk, fields)``) promises:
 * WGSL: the file ``intersect_disk.wgsl`` with
   ``fn intersect_disk(r: Ray, hit: ptr<function, HitInfo>, <fields>) -> bool`` filling
   the hit as the 02562 slides do; a formula other than "slide" is the file
-  ``<formula>_disk.wgsl`` defining the same function.
+  ``<formula>_disk.wgsl`` defining the same function; ``wgsl_helpers`` names pieces of no
+  kind that the function calls (the torus's ``solve_quartic.wgsl``), joined before it.
 
 docs/adding_a_shape.md walks through it. Nothing here imports numba or wgpu: the kernels
 and the WGSL files are named, and loaded only by the paths that use them.
@@ -38,6 +39,7 @@ from .shapes.open_cylinder import OpenCylinder
 from .shapes.plane import Plane
 from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
+from .shapes.torus import Torus
 from .shapes.triangle import Triangle
 from .textures import Checker, ImageTexture
 
@@ -66,6 +68,7 @@ class ShapeKind(_Rows):
     from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
     uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
     faces_ray: bool = False             # the normal depends on the ray's direction (Shape.hit_normal)
+    wgsl_helpers: tuple = ()            # WGSL: pieces of no kind its function calls, put before it
     # A mesh kind: its rows are the faces of meshes, found through the scene's BVH (which
     # may hold the spheres too, rtfgu.layout.FlatMesh) and not by a loop over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
     # ``numba_module``, WGSL ``mesh.wgsl``); its arrays are rtfgu.layout.FlatMesh's.
@@ -140,6 +143,9 @@ SHAPES = (
               faces_ray=True),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
+    # Suffern's torus: a quartic, solved by Schwarze's closed form (its WGSL piece with it).
+    ShapeKind("torus", Torus, (("a", 1), ("b", 1)), numba_module="rtfgu.kernels.torus",
+              wgsl_helpers=("solve_quartic.wgsl",)),
 )
 ROW_SHAPES = tuple(kind for kind in SHAPES if not kind.bvh)   # the kinds laid out a row per shape
 

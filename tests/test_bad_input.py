@@ -8,7 +8,7 @@ import pytest
 
 import rtfgu
 from rtfgu import (AreaLight, Box, Float3, Material, OpenCylinder, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
-                   Rectangle, Scene, Sphere, Triangle)
+                   Rectangle, Scene, Sphere, Torus, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
 
@@ -131,6 +131,21 @@ def test_box_corners(p0, p1, names):
 def test_open_cylinder_heights_and_radius(y0, y1, radius, names):
     with raises_naming(*names):
         OpenCylinder(y0, y1, radius, RED)
+
+
+@pytest.mark.parametrize("a, b, names", [
+    (2.0, -1.0, ("Torus.b",)),
+    (2.0, 0.0, ("Torus.b",)),
+    (0.0, 1.0, ("Torus.a",)),
+    (NAN, 1.0, ("Torus.a",)),
+    (2.0, INF, ("Torus.b",)),
+    (1.0, 1.0, ("Torus.b", "Torus.a", "below")),    # b = a: a horn torus
+    (1.0, 2.0, ("Torus.b", "Torus.a", "below")),    # b > a: a spindle torus
+    ("2", 1.0, ("Torus.a",)),
+], ids=["b_negative", "b_zero", "a_zero", "a_nan", "b_inf", "b_equals_a", "b_above_a", "a_string"])
+def test_torus_radii(a, b, names):
+    with raises_naming(*names):
+        Torus(a, b, RED)
 
 
 def test_area_light_names_the_shapes_it_takes():

@@ -18,9 +18,12 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
+import mpmath
+
 from rtfgu import (Box, Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OpenCylinder,
-                   OrthographicCamera, Phong, Plane, Ray, Rectangle, Reflective, Scene, Sphere, Transparent, Triangle, trace)
-from rtfgu.hardcases.exact import box_t
+                   OrthographicCamera, Phong, Plane, Ray, Rectangle, Reflective, Scene, Sphere, Torus, Transparent,
+                   Triangle, trace)
+from rtfgu.hardcases.exact import box_t, least_root, torus_quartic
 from rtfgu.lights import PointLight
 from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
 from rtfgu.ray import SPAWN_EPSILON
@@ -152,6 +155,25 @@ def exact_open_cylinder(shape, case):
     return None
 
 
+def exact_torus(shape, case):
+    """Suffern's Torus::hit exactly: the least real root of the book's quartic in
+    [tmin, tmax), decided by Sturm's theorem in fractions and given at 50 digits
+    (rtfgu.hardcases.exact.least_root); the normal is the gradient of
+    (|p|^2 + a^2 - b^2)^2 - 4 a^2 (x^2 + z^2), normalised, at 50 digits."""
+    o, d, a, b = F(case.origin), F(case.direction), Fraction(shape.a), Fraction(shape.b)
+    t = least_root(torus_quartic(o, d, a, b), Fraction(case.tmin), None if case.tmax == INF else Fraction(case.tmax))
+    if t is None:
+        return None
+    with mpmath.workdps(50):
+        tm = mpmath.mpf(t.numerator) / t.denominator if isinstance(t, Fraction) else t
+        p = [mpmath.mpf(oc.numerator) / oc.denominator + tm * mpmath.mpf(dc.numerator) / dc.denominator
+             for oc, dc in zip(o, d)]
+        k = p[0] ** 2 + p[1] ** 2 + p[2] ** 2 - mpmath.mpf(a) ** 2 - mpmath.mpf(b) ** 2
+        g = (p[0] * k, p[1] * (k + 2 * mpmath.mpf(a) ** 2), p[2] * k)
+        length = mpmath.sqrt(g[0] ** 2 + g[1] ** 2 + g[2] ** 2)
+        return t, tuple(x / length for x in g)
+
+
 def exact_triangle(shape, case):
     o, d = F(case.origin), F(case.direction)
     v0, e0, e1 = F(shape.v0), F(shape.e0), F(shape.e1)
@@ -197,7 +219,8 @@ class KindCases:
     shape: object        # a function of the material: the kind's shape for `cases`
     cases: tuple
     exact: object        # (shape, case) -> (t, normal) or None
-    coincident: object   # a function of the material: a shape whose first hit by TIE_RAY is at t = 2
+    coincident: object   # a function of the material: a shape whose first hit by TIE_RAY is at t = 2,
+                         # or None for a kind no such shape of which meets the ray transversally
 
 
 # Every tie shape is first hit by this ray at (0.25, 0.25, 0), t = 2.
@@ -295,6 +318,23 @@ SHAPE_CASES = {
               hits=False)),
         exact_open_cylinder,
         lambda m: OpenCylinder(-1.0, 1.0, 0.25, GREY, m)),
+    # Torus(2, 1): the outer equator at 3, the inner one at 1, the top of the tube at y = 1.
+    "torus": KindCases(
+        lambda m: Torus(2.0, 1.0, GREY, m),
+        (Case("hit on the outer equator", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("hit on the top of the tube", (2.0, 5.0, 0.0), (0.0, -1.0, 0.0)),
+         Case("oblique hit", (4.0, 3.0, 2.0), (-1.0, -1.25, -1.0)),
+         Case("hit from a far origin", (96.0, 0.5, 0.25), (-1.0, 0.0, 0.0)),
+         Case("hit on the inner equator from the centre", (0.0, 0.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("hit from inside the tube (the far root)", (2.0, 0.0, 0.0), (0.0, 0.25, 1.0)),
+         Case("near-grazing hit below the top of the tube", (0.0, 0.9375, 5.0), (0.0, 0.0, -1.0)),
+         Case("grazing miss above the top of the tube", (0.0, 1.0078125, 5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss through the hole along the axis", (0.0, 5.0, 0.0), (0.0, -1.0, 0.0), hits=False),
+         Case("miss through the hole near the inner rim", (0.5, 5.0, 0.0), (-0.125, -1.0, 0.0), hits=False),
+         Case("miss beside the torus", (3.25, 0.0, 5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("hit at tmax (the next root beyond it)", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_torus,
+        None),   # every torus about the y axis through TIE_RAY's hit point is tangent to the ray
     "mesh": KindCases(
         lambda m: mesh_face((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), m),
         (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),
@@ -529,6 +569,8 @@ def test_tie_earlier_shape_wins(path, first, second):
     for name in (first, second):
         if name not in SHAPE_CASES:
             pytest.fail("registered shape kind %s has no coincident shape in SHAPE_CASES" % name)
+        if SHAPE_CASES[name].coincident is None:
+            pytest.skip("the %s meets TIE_RAY only tangentially; test_torus_tie_with_a_plane covers it" % name)
     shapes = [SHAPE_CASES[name].coincident(Matte()) for name in (first, second)]
     for shape in shapes:  # the case itself: each shape alone is hit at exactly t = 2
         alone = SHAPE_CASES[shape_kind_of(shape)[1].name].exact(shape, Case("tie", *TIE_RAY))
@@ -538,3 +580,41 @@ def test_tie_earlier_shape_wins(path, first, second):
         "%s tie, %s before %s in Scene.shapes: the %s (Scene.shapes[%s]) won at t = %r"
         % (path.label, first, second, hit.kind, hit.shape, hit.t))
     assert hit.t == 2.0
+
+
+@pytest.mark.parametrize("torus_first", [True, False], ids=["torus before plane", "plane before torus"])
+def test_torus_tie_with_a_plane(path, torus_first):
+    """The tie rule for the torus, on a ray that meets it transversally: straight down onto
+    the top of the tube of Torus(2, 1) at (2, 1, 0), t = 4, where the plane y = 1 touches it."""
+    torus = Torus(2.0, 1.0, GREY, Matte())
+    plane = Plane((0.0, 1.0, 0.0), (0.0, 1.0, 0.0), GREY, Matte())
+    ray = ((2.0, 5.0, 0.0), (0.0, -1.0, 0.0), 0.0, INF)
+    assert exact_torus(torus, Case("tie", *ray))[0] == 4
+    shapes = [torus, plane] if torus_first else [plane, torus]
+    hit = path.trace(_scene(shapes), [ray])[0][0]
+    first = "torus" if torus_first else "plane"
+    assert (hit.shape, hit.kind) == (0, first), "%s: the %s (Scene.shapes[%s]) won at t = %r" % (
+        path.label, hit.kind, hit.shape, hit.t)
+    assert hit.t == 4.0
+
+
+def test_torus_texture_coordinates_pick_the_checker_square_on_every_path(path):
+    """Torus.texcoord (u about the y axis, v about the tube from the outer equator) picks
+    the checker's square on every path: points of Torus(2, 1) at (phi, theta), seen along
+    their normals, far from a square's edge."""
+    from rtfgu.textures import Checker
+
+    red, blue = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0)
+    scene = _scene([Torus(2.0, 1.0, Float3(0.0), Material(cd=Checker(red, blue, size=0.125)))])
+    rays, want = [], []
+    for phi, theta in ((0.3, 0.2), (2.0, -0.5), (4.0, 1.2), (5.3, 0.55)):
+        n = (math.cos(theta) * math.sin(phi), math.sin(theta), math.cos(theta) * math.cos(phi))
+        p = ((2 + math.cos(theta)) * math.sin(phi), math.sin(theta), (2 + math.cos(theta)) * math.cos(phi))
+        rays.append((tuple(pc + 5 * nc for pc, nc in zip(p, n)), tuple(-c for c in n), 0.0, INF))
+        cells = (phi / (2 * math.pi) / 0.125, (theta % (2 * math.pi)) / (2 * math.pi) / 0.125)
+        assert all(0.01 < c - math.floor(c) < 0.99 for c in cells)   # far from an edge
+        want.append(red if (math.floor(cells[0]) + math.floor(cells[1])) % 2 == 0 else blue)
+    assert red in want and blue in want
+    for k, (bounces, colour) in enumerate(zip(path.trace(scene, rays), want)):
+        assert bounces[0].kind == "torus" and bounces[0].color == (colour.x, colour.y, colour.z), (
+            "%s ray %d: %r" % (path.label, k, bounces[0]))

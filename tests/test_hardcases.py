@@ -1,11 +1,13 @@
 """Hard cases: every family on every available path against its exact truth, and the claims
 the robust formulas make (watertight edges, parallel planes, spawned rays, far, small and
 tangent spheres in float32); disks through the rim and nearly parallel to them; rectangles
-through their edges and corners."""
+through their edges and corners; tori tangent to the tube, through the hole, far and along the
+axis."""
 from __future__ import annotations
 
 import math
 
+import mpmath
 import numpy as np
 import pytest
 
@@ -278,14 +280,57 @@ def test_open_cylinder_rims_and_tangents_against_the_exact_truth(results):
     assert not wrong[1::2].any(), np.flatnonzero(wrong)
 
 
+# --- tori -----------------------------------------------------------------------------
+
+def test_torus_exact_truth_by_hand():
+    torus = (2.0, 1.0)
+    assert exact.torus((0, 0, 5), (0, 0, -1), 0.0, math.inf, *torus) == (2.0, 0.0)        # the outer equator
+    assert exact.torus((0, 0, 0), (0, 0, 1), 0.0, math.inf, *torus) == (1.0, 0.0)         # the inner one
+    assert exact.torus((0, 1, 5), (0, 0, -1), 0.0, math.inf, *torus) == (3.0, 0.0)        # tangent: a double root
+    above = math.nextafter(1.0, 2.0)
+    assert exact.torus((0, above, 5), (0, 0, -1), 0.0, math.inf, *torus) == exact.MISS   # 1 ulp above it
+    assert exact.torus((0, 5, 0), (0, -1, 0), 0.0, math.inf, *torus) == exact.MISS       # along the axis
+    assert exact.torus((0, 0, 5), (0, 0, -1), 0.0, 2.0, *torus) == exact.MISS            # tmax excluded
+    assert exact.torus((0, 0, 5), (0, 0, -1), 2.0, math.inf, *torus) == (2.0, 0.0)       # tmin included
+    # (|z| - 2)^2 + 1/4 = 1: t = 3 - sqrt(3/4)
+    hi, lo = exact.torus((0, 0.5, 5), (0, 0, -1), 0.0, math.inf, *torus)
+    with mpmath.workdps(50):
+        root = 3 - mpmath.sqrt(mpmath.mpf(3) / 4)
+        assert hi == float(root) and abs(mpmath.mpf(hi) + lo - root) < 1e-30
+
+
+TORUS_FAMILIES = [name for name, spec in FAMILIES.items() if spec.kind == "torus"]
+TORUS_PATHS = {"reference": ReferencePath("slide"), "numba64": NumbaPath("slide", "float64"),
+               "numba32": NumbaPath("slide", "float32")}
+
+
+@pytest.mark.parametrize("name", TORUS_FAMILIES)
+def test_torus_families_against_the_exact_truth(name):
+    """In float64 the lecture layer and numba (bit for bit the same) decide every torus ray
+    as the exact truth does; in float32 (numba and WGSL) the far rays and the rays along the
+    axis too, and the rays within 1e-4 b of a tangent to the tube mostly."""
+    paths = dict(TORUS_PATHS)
+    if WGSL_MISSING is None:
+        paths["wgsl32"] = WgslPath("slide")
+    got = {pid: evaluate(build(name, path.precision), path) for pid, path in paths.items()}
+    assert np.array_equal(got["numba64"].t, got["reference"].t), name
+    assert got["reference"].wrong == 0 and got["reference"].rel_err_max < 1e-12, got["reference"].row()
+    assert build(name, "float64").truth_hit.any() or name == "torus_axis"
+    for pid in paths:
+        if pid.endswith("32"):
+            r = got[pid]
+            assert r.nan == 0, r.row()
+            if name in ("torus_far", "torus_axis"):
+                assert r.wrong == 0 and r.rel_err_max < 1e-6, r.row()
+            else:
+                assert r.wrong <= r.rays // 5, r.row()
+
+
 # --- numba generic over float32 -------------------------------------------------------
 
 def test_numba_float32_kernels_stay_float32():
     """No named variable of a float32 specialisation is float64 (a bare literal would
     promote it), except the watertight test's deliberate double fallback."""
-    import io
-    import re
-
     from rtfgu.kernels import intersect as r
     from rtfgu.kernels import robust as k
 
@@ -306,13 +351,24 @@ def test_numba_float32_kernels_stay_float32():
     k.offset_ray_origin(o, (f(1e-6), f(1e-6), f(1e-6)), d, d)
     k.sphere_point_error(o, zero3)
     k.gamma(5, f(1))
+    checked = _check_float32_specialisations(
+        (r.intersect_sphere, r.sphere_roots, r.intersect_sphere_robust, r.sphere_roots_robust,
+         r.intersect_plane, k.plane_robust, r.intersect_triangle, k.triangle_robust,
+         r.intersect_disk, k.offset_ray_origin, k.sphere_point_error, k.gamma))
+    assert checked >= 9
+
+
+def _check_float32_specialisations(functions) -> int:
+    """Assert that no named variable of a float32 specialisation of ``functions`` is float64
+    (a line that names np.float64 on purpose aside); the number of specialisations checked."""
+    import io
+    import re
+
     named64 = re.compile(r"^#?\s*([A-Za-z_]\w*)(\.\d+)? = .* :: float64\s*$")
     checked = 0
-    for fn in (r.intersect_sphere, r.sphere_roots, r.intersect_sphere_robust, r.sphere_roots_robust,
-               r.intersect_plane, k.plane_robust, r.intersect_triangle, k.triangle_robust,
-               r.intersect_disk, k.offset_ray_origin, k.sphere_point_error, k.gamma):
+    for fn in functions:
         for sig in fn.signatures:
-            if "float32" not in str(sig[-1]):
+            if "float32" not in str(sig[-1]) and "float32" not in str(sig):
                 continue
             buf = io.StringIO()
             fn.inspect_types(signature=sig, file=buf)
@@ -324,4 +380,34 @@ def test_numba_float32_kernels_stay_float32():
                 bad = [l for l in lines if named64.match(l)]
                 assert not bad, "%s %s: %s" % (fn.__name__, sig, bad)
             checked += 1
-    assert checked >= 9
+    return checked
+
+
+def test_numba_float32_torus_kernels_stay_float32():
+    """The torus and its quartic solver in float32 stay float32: every constant is lit."""
+    from rtfgu.kernels import quartic as q
+    from rtfgu.kernels import textures as tx
+    from rtfgu.kernels import torus as k
+
+    f = np.float32
+    t = k.intersect_torus((f(0), f(0), f(5)), (f(0), f(0), f(-1)), f(0), f(np.inf), f(2), f(1))
+    assert t == f(2)
+    k.normal_torus((f(0), f(0), f(3)), f(2), f(1))
+    tx.texcoord_torus((f(0), f(0), f(3)), f(2), f(1))
+    q.solve_quartic(f(24), f(-50), f(35), f(-10), f(1))
+    q.solve_quartic(f(0), f(-6), f(11), f(-6), f(1))    # r = 0 after the shift: the cubic branch
+    # each function once on its own (a cached caller compiles no callee's specialisation)
+    k.bbox_hit((f(0), f(0), f(5)), (f(0), f(0), f(-1)), f(0), f(np.inf), (f(-3), f(-1), f(-3)), (f(3), f(1), f(3)))
+    k.torus_box(f(2), f(1))
+    q.solve_cubic(f(-6), f(11), f(-6), f(1))
+    q.solve_quadric(f(2), f(-3), f(1))
+    q.polish_root(f(24), f(-50), f(35), f(-10), f(1), f(1.1))
+    q.is_root(f(24), f(-50), f(35), f(-10), f(1), f(1), f(0))
+    q.quartic_value(f(24), f(-50), f(35), f(-10), f(1), f(1))
+    q.cbrt(f(-8))
+    q.is_zero(f(0))
+    q._keep(f(24), f(-50), f(35), f(-10), f(1), f(1.1), (0, f(0), f(0), f(0), f(0)))
+    checked = _check_float32_specialisations(
+        (k.intersect_torus, k.bbox_hit, k.torus_box, k.normal_torus, tx.texcoord_torus, q.solve_quartic,
+         q.solve_cubic, q.solve_quadric, q.polish_root, q.is_root, q.quartic_value, q.cbrt, q.is_zero, q._keep))
+    assert checked >= 14

@@ -1,6 +1,7 @@
 # release: solves a01 a03
 """Exact ground truth: rational arithmetic (``fractions.Fraction``) for every decision, and
-50-digit ``mpmath`` only for the square root of a sphere's hit distance.
+50-digit ``mpmath`` only for the square root of a sphere's hit distance and the root of a
+torus's quartic that Sturm's theorem has isolated.
 
 Every input float (float32 or float64) converts to a Fraction without rounding, so the
 truth is that of the very numbers a path receives, not of the values they approximate. No
@@ -11,6 +12,7 @@ ulp are measured against something much finer than themselves.
 from __future__ import annotations
 
 import math
+import warnings
 from fractions import Fraction as Q
 
 import mpmath
@@ -282,3 +284,113 @@ def open_cylinder(o, d, tmin, tmax, y0, y1, radius):
             with mpmath.workdps(DIGITS):
                 return dd_from_mpf((-_mpf(b) + sign * mpmath.sqrt(_mpf(disc))) / _mpf(a))
     return MISS
+
+
+# --- torus ----------------------------------------------------------------------------
+
+def torus_quartic(o, d, a, b) -> tuple:
+    """The coefficients (c0, ..., c4) of Suffern's quartic for the ray o + t d and the torus of
+    sweep radius a and tube radius b about the y axis (rtfgu.shapes.torus), in rationals."""
+    sum_d_sqrd = dot(d, d)
+    e = dot(o, o) - a * a - b * b
+    f = dot(o, d)
+    four_a_sqrd = 4 * a * a
+    return (e * e - four_a_sqrd * (b * b - o[1] * o[1]), 4 * f * e + 2 * four_a_sqrd * o[1] * d[1],
+            2 * sum_d_sqrd * e + 4 * f * f + four_a_sqrd * d[1] * d[1], 4 * sum_d_sqrd * f, sum_d_sqrd * sum_d_sqrd)
+
+
+def _poly_value(c, x):
+    value = 0
+    for coefficient in reversed(c):
+        value = value * x + coefficient
+    return value
+
+
+def _poly_rem(n, m):
+    """The remainder of n / m (coefficients lowest first, m's leading one non-zero)."""
+    n = list(n)
+    while len(n) >= len(m):
+        factor = n[-1] / m[-1]
+        shift = len(n) - len(m)
+        for k in range(len(m)):
+            n[shift + k] -= factor * m[k]
+        n.pop()
+    while n and n[-1] == 0:
+        n.pop()
+    return n
+
+
+def _sturm(c) -> list:
+    """Sturm's sequence p, p', -rem(p, p'), ... (coefficients lowest first)."""
+    seq = [list(c), [k * c[k] for k in range(1, len(c))]]
+    while len(seq[-1]) > 0:
+        r = _poly_rem(seq[-2], seq[-1])
+        if not r:
+            break
+        seq.append([-x for x in r])
+    return seq
+
+
+def _sign_changes(values) -> int:
+    signs = [v > 0 for v in values if v != 0]
+    return sum(1 for x, y in zip(signs, signs[1:]) if x != y)
+
+
+def _changes_at(seq, x) -> int:
+    if x is None:   # + infinity: the signs of the leading coefficients
+        return _sign_changes([p[-1] for p in seq])
+    return _sign_changes([_poly_value(p, x) for p in seq])
+
+
+def least_root(c, tmin: Q, tmax) -> Q | object | None:
+    """The least real root of the polynomial c (rationals, lowest first, c[-1] != 0) in
+    [tmin, tmax) (tmax a Fraction or None for infinity), or None: decided exactly by
+    Sturm's theorem (distinct roots in (lo, hi] = V(lo) - V(hi) where neither is a root),
+    the root isolated by bisection and then given by mpmath's polyroots at 50 digits."""
+    if _poly_value(c, tmin) == 0:
+        return tmin
+    seq = _sturm(c)
+    bound = 1 + max(abs(x / c[-1]) for x in c[:-1])   # Cauchy's bound on every root
+    hi = bound if tmax is None or tmax > bound else tmax
+    if hi <= tmin:
+        return None
+
+    def count(lo, up):   # distinct roots in (lo, up), up not a root or the hi end
+        n = _changes_at(seq, lo) - _changes_at(seq, up)
+        return n - (1 if _poly_value(c, up) == 0 else 0)
+
+    lo = tmin
+    if count(lo, hi) == 0:
+        return None
+    # bisect until the least root is the only one in (lo, hi) and the interval is narrow
+    for _ in range(200):
+        if count(lo, hi) == 1 and hi - lo <= Q(1, 2 ** 40) * max(1, abs(lo)):
+            break
+        mid = (lo + hi) / 2
+        if _poly_value(c, mid) == 0 and count(lo, mid) == 0:
+            return mid
+        if count(lo, mid) >= 1:
+            hi = mid
+        else:
+            lo = mid
+    with mpmath.workdps(DIGITS):
+        with warnings.catch_warnings():   # mpmath 1.4 would rather take the lowest first (asc=True)
+            warnings.simplefilter("ignore", DeprecationWarning)
+            roots = mpmath.polyroots([_mpf(x) for x in reversed(c)], maxsteps=200, extraprec=200)
+        middle = _mpf((lo + hi) / 2)
+        return min((mpmath.re(r) for r in roots), key=lambda r: abs(r - middle))
+
+
+def torus(o, d, tmin, tmax, a, b):
+    """Suffern's Torus::hit decided in rationals: the least root of the quartic in
+    [tmin, tmax) (least_root), as a double-double; a zero direction misses."""
+    if not (finite(*o, *d, a, b, tmin) and not math.isnan(tmax)):
+        return MISS
+    oq, dq = q3(o), q3(d)
+    c = torus_quartic(oq, dq, Q(float(a)), Q(float(b)))
+    if c[4] == 0:
+        return MISS
+    t = least_root(c, Q(float(tmin)), None if math.isinf(tmax) else Q(float(tmax)))
+    if t is None:
+        return MISS
+    return dd_from_fraction(t) if isinstance(t, Q) else dd_from_mpf(t)

@@ -543,6 +543,66 @@ def _open_cylinder_grazing(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([y0, y1, r])])
 
 
+# --- tori (Suffern ch. 19) ------------------------------------------------------------
+
+def _torus_radii(rng, n):
+    a = rng.uniform(1.0, 3.0, n)
+    return a, a * rng.uniform(0.1, 0.6, n)
+
+
+@family("torus_tangent_tube", "torus", "torus",
+        "rays nearly tangent to the tube: b 1e-8..1e-4 off a tangent line at a random point of the "
+        "surface (either side), origin 2..10 (a + b) back")
+def _torus_tangent_tube(rng, n):
+    a, b = _torus_radii(rng, n)
+    phi = rng.uniform(0, 2 * np.pi, n)
+    theta = rng.uniform(0, 2 * np.pi, n)
+    radial = np.column_stack([np.sin(phi), np.zeros(n), np.cos(phi)])
+    normal = radial * np.cos(theta)[:, None] + np.array([0.0, 1.0, 0.0]) * np.sin(theta)[:, None]
+    point = radial * (a + b * np.cos(theta))[:, None] + np.array([0.0, 1.0, 0.0]) * (b * np.sin(theta))[:, None]
+    off = rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -4, n) * b
+    d = _perpendicular(rng, normal)
+    o = point + normal * off[:, None] - d * ((a + b) * rng.uniform(2, 10, n))[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([a, b])])
+
+
+@family("torus_hole_rim", "torus", "torus",
+        "rays nearly along the axis (tilt up to 1e-3) through the hole at (a - b)(1 +- 1e-8..1e-3) from "
+        "the axis at y = 0: grazing the inner equator, inside or outside it")
+def _torus_hole_rim(rng, n):
+    a, b = _torus_radii(rng, n)
+    phi = rng.uniform(0, 2 * np.pi, n)
+    radial = np.column_stack([np.sin(phi), np.zeros(n), np.cos(phi)])
+    rho = (a - b) * (1.0 + rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -3, n))
+    target = radial * rho[:, None]
+    d = np.column_stack([np.zeros(n), -np.ones(n), np.zeros(n)]) + _random_unit(rng, n) * _log_uniform(rng, -9, -3, n)[:, None]
+    d[: n // 4] = (0.0, -1.0, 0.0)   # exactly along the axis
+    d = _unit(d) * rng.choice([-1.0, 1.0], n)[:, None]
+    o = target - d * (b * rng.uniform(2, 10, n))[:, None]
+    return dict(origins=o, directions=d, shapes=[np.column_stack([a, b])])
+
+
+@family("torus_far", "torus", "torus",
+        "origins 1e2..1e4 (a + b) away, aimed at a random point of the torus's box")
+def _torus_far(rng, n):
+    a, b = _torus_radii(rng, n)
+    target = rng.uniform(-1, 1, (n, 3)) * np.column_stack([a + b, b, a + b])
+    o = target + _random_unit(rng, n) * ((a + b) * _log_uniform(rng, 2, 4, n))[:, None]
+    return dict(origins=o, directions=target - o, shapes=[np.column_stack([a, b])])
+
+
+@family("torus_axis", "torus", "torus",
+        "rays along the axis (even rows: always a miss) and rays through the centre in random "
+        "directions, 2..10 (a + b) away (odd rows: the inner equator when nearly horizontal)")
+def _torus_axis(rng, n):
+    rows = np.arange(n)
+    a, b = _torus_radii(rng, n)
+    u = _random_unit(rng, n)
+    u[rows % 2 == 0] = np.column_stack([np.zeros(n), rng.choice([-1.0, 1.0], n), np.zeros(n)])[rows % 2 == 0]
+    o = u * ((a + b) * rng.uniform(2, 10, n))[:, None]
+    return dict(origins=o, directions=-u, shapes=[np.column_stack([a, b])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
 @family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")

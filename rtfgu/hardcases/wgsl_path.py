@@ -26,7 +26,8 @@ def program(kind: str, formula: str, spawn: bool = False):
     from ..wgsl.harness import batch_program
 
     pieces = ["ray.wgsl", "hitinfo.wgsl"]
-    pieces += [_piece(used, formula) for used in SHAPE_BY_NAME[kind].uses + (kind,)]
+    for used in SHAPE_BY_NAME[kind].uses + (kind,):
+        pieces += list(SHAPE_BY_NAME[used].wgsl_helpers) + [_piece(used, formula)]
     if spawn:
         pieces.append("robust_spawn.wgsl")
     pieces.append("hardcase_main.wgsl")

@@ -36,6 +36,7 @@ from .float3 import cross, lit, lit_per_precision, normalize, row3, sub
 from .intersect import (intersect_box, intersect_disk, intersect_open_cylinder, intersect_plane,
                         intersect_rectangle, intersect_sphere,
                         intersect_sphere_robust, intersect_triangle)
+from .torus import intersect_torus
 
 
 @njit(cache=True, error_model="numpy")
@@ -336,6 +337,11 @@ def open_cylinder_slide(o, d, tmin, tmax, shapes, i):
 
 
 @njit(cache=True, error_model="numpy")
+def torus_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_torus(o, d, tmin, tmax, shapes[i, 0], shapes[i, 1])
+
+
+@njit(cache=True, error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
     where ``finite`` says the input is not finite."""
@@ -387,5 +393,6 @@ ADAPTERS = {("sphere", "slide"): (sphere_slide, _any), ("sphere", "robust"): (sp
             ("triangle", "slide"): (triangle_slide, _any),
             ("triangle", "robust"): (triangle_robust_row, triangle_finite),
             ("disk", "slide"): (disk_slide, _any), ("rectangle", "slide"): (rectangle_slide, _any),
-            ("box", "slide"): (box_slide, _any), ("open_cylinder", "slide"): (open_cylinder_slide, _any)}
+            ("box", "slide"): (box_slide, _any), ("open_cylinder", "slide"): (open_cylinder_slide, _any),
+            ("torus", "slide"): (torus_slide, _any)}
 POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}

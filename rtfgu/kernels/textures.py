@@ -77,6 +77,22 @@ def texcoord_open_cylinder(position, y0, y1, radius):
 
 
 @njit(cache=True, error_model="numpy")
+def texcoord_torus(position, a, b):
+    """Torus.texcoord: u about the y axis, v about the tube (0 on the outer equator)."""
+    x = position[0]
+    y = position[1]
+    z = position[2]
+    two_pi = lit(2.0 * math.pi, a)
+    phi = math.atan2(x, z)
+    if phi < lit(0.0, a):
+        phi += two_pi
+    theta = math.atan2(y, math.sqrt(x * x + z * z) - a)
+    if theta < lit(0.0, a):
+        theta += two_pi
+    return phi / two_pi, theta / two_pi
+
+
+@njit(cache=True, error_model="numpy")
 def texcoord_sphere(position, center, radius):
     """Sphere.texcoord: Suffern's SphericalMap."""
     one = lit(1.0, radius)

@@ -10,6 +10,9 @@ show them: an open cylinder seen from above, so that its inside shows through th
 boxes, a rectangular floor and a rectangular mirror standing behind them, lit by one point
 light and traced by Whitted.
 
+``suffern_19_torus``: Suffern ch. 19's torus, a quartic solved by Schwarze's closed form: a
+Phong ring on the floor and a smaller Matte ring in its hole, lit by one point light.
+
 ``suffern_17_occlusion_regular`` and ``suffern_17_occlusion_multi_jittered``: Suffern ch.
 17's comparison of samplers for an AmbientOccluder's directions (set_sampler): the same 16
 directions at every point (Regular) band the shadow under the sphere; multi-jittered sets,
@@ -44,6 +47,7 @@ from ..shapes.disk import Disk
 from ..shapes.open_cylinder import OpenCylinder
 from ..shapes.rectangle import Rectangle
 from ..shapes.sphere import Sphere
+from ..shapes.torus import Torus
 from .registry import homework
 
 
@@ -83,6 +87,21 @@ def suffern_19_objects() -> Scene:
     scene.shapes.append(Box(Float3(-2.0, 0.0, 0.3), Float3(-1.2, 0.45, 1.1), Float3(0.2, 0.6, 0.2), Matte()))
     scene.lights.append(PointLight(Float3(-2.0, 5.0, 3.0), Float3(10 * math.pi, 10 * math.pi, 10 * math.pi)))
     scene.tracer = Whitted()
+    return scene
+
+
+@homework(512, 512)
+def suffern_19_torus() -> Scene:
+    """Suffern ch. 19's torus (the book's default Torus(2, 0.5) halved): a Phong ring
+    resting on the floor with a smaller Matte ring floating in its hole, both about the y
+    axis, seen from above so that the light shows through the holes onto the floor."""
+    camera = PinholeCamera(Float3(0.0, 3.2, 4.2), Float3(0.0, -0.1, 0.0), Float3(0.0, 1.0, 0.0), d=1.6)
+    scene = Scene(camera)
+    scene.background = Float3(0.1, 0.3, 0.6)
+    scene.shapes.append(Plane(Float3(0.0, -0.25, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.8, 0.8, 0.75), Matte()))
+    scene.shapes.append(Torus(1.0, 0.25, Float3(0.8, 0.2, 0.1), Phong(cs=Float3(0.4, 0.4, 0.4), exp=40.0)))
+    scene.shapes.append(Torus(0.5, 0.125, Float3(0.1, 0.5, 0.2), Matte()))
+    scene.lights.append(PointLight(Float3(-1.5, 5.0, 2.5), Float3(12 * math.pi, 12 * math.pi, 12 * math.pi)))
     return scene
 
 

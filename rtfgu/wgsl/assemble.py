@@ -90,6 +90,7 @@ def pieces(features, formula: str = "slide") -> list:
     if trace:
         for kind in _shape_kinds(f):
             chosen = formula if formula in kind.formulas else "slide"
+            out += [(helper, helper) for helper in kind.wgsl_helpers]
             out.append((kind.wgsl_file, kind.formula_file(chosen)))
     if trace and "textures" in f:
         out.append(("texcoord.wgsl", "texcoord.wgsl"))
@@ -133,7 +134,7 @@ def piece_names() -> list:
     names = ["ray.wgsl", "hitinfo.wgsl", "random.wgsl", "pixel_sample.wgsl"]
     names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
     names += ["concentric_map.wgsl"]
-    names += [kind.wgsl_file for kind in SHAPES]
+    names += [name for kind in SHAPES for name in kind.wgsl_helpers + (kind.wgsl_file,)]
     names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["light_sample.wgsl", "lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]

@@ -49,6 +49,20 @@ fn texcoord_open_cylinder(p: vec3f, y0: f32, y1: f32, radius: f32) -> vec2f
     return vec2f(phi / (2.0 * PI), (p.y - y0) / (y1 - y0));
 }
 // #endif
+// #if torus
+fn texcoord_torus(p: vec3f, a: f32, b: f32) -> vec2f
+{
+    var phi = atan2(p.x, p.z);
+    if (phi < 0.0) {
+        phi += 2.0 * PI;
+    }
+    var theta = atan2(p.y, sqrt(p.x * p.x + p.z * p.z) - a);
+    if (theta < 0.0) {
+        theta += 2.0 * PI;
+    }
+    return vec2f(phi / (2.0 * PI), theta / (2.0 * PI));
+}
+// #endif
 // #if sphere
 fn texcoord_sphere(p: vec3f, center: vec3f, radius: f32) -> vec2f
 {
