@@ -422,6 +422,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                 placed[id(m.texture)] = (k, len(texture_rows[tkind.name]))
                 texture_rows[tkind.name].append(pack_row(tkind.record, source))
                 features.update((tkind.name, "textures"))
+                if m.texture.uses_texcoord:
+                    features.add("texcoord")   # the paths compute the shape's (u, v)
             texture, texture_row = placed[id(m.texture)]
         limit = m.flat_limit(scene.tracer)
         if limit is not None:

@@ -39,7 +39,7 @@ from .shapes.plane import Plane
 from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
-from .textures import Checker, ImageTexture
+from .textures import Checker, Checker3D, ImageTexture
 
 
 class _Rows:
@@ -178,21 +178,28 @@ LIGHTS = (
 class TextureKind(_Rows):
     """A texture: the lecture class (rtfgu/textures/) with an attribute per field (the
     layout fills ``offset``, the texture's first texel in FlatScene.texels), numba
-    ``texture_<name>(table, row, texels, u, v)`` in rtfgu/kernels/textures.py and WGSL
-    ``fn texture_<name>(row: u32, uv: vec2f) -> vec3f`` in ``<name>.wgsl``, both returning
-    the colour at the shape's (u, v) (scaled by the texture's ``scale`` inside). Every shape
-    kind gives (u, v): numba ``texcoord_<shape>(position, *fields)``, WGSL ``fn
-    texcoord_<shape>`` in texcoord.wgsl (Shape.texcoord in the lecture layer)."""
+    ``texture_<name>(table, row, texels, u, v, position)`` in rtfgu/kernels/textures.py and
+    WGSL ``fn texture_<name>(row: u32, uv: vec2f, p: vec3f) -> vec3f`` in ``<name>.wgsl``,
+    both returning the colour at the hit point ``position`` whose texture coordinates on the
+    shape are (u, v) (Texture.color_at, the book's get_color(ShadeRec)). ``texcoord``: the
+    kind may read (u, v), so the paths compute them (a solid texture reads the point only
+    and gets zeros). Every shape kind gives (u, v): numba ``texcoord_<shape>(position,
+    *fields)``, WGSL ``fn texcoord_<shape>`` in texcoord.wgsl (Shape.texcoord in the
+    lecture layer). ``uses``: WGSL pieces the kind's piece calls, assembled before it."""
 
     name: str
     cls: type
     fields: tuple
+    texcoord: bool = True
+    uses: tuple = ()
 
 
 TEXTURES = (
     TextureKind("image_texture", ImageTexture, (("width", 1), ("height", 1), ("offset", 1),
                                                 ("filter_mode", 1), ("address_mode", 1), ("scale", 1))),
     TextureKind("checker", Checker, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1))),
+    TextureKind("checker3d", Checker3D, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1)),
+                texcoord=False),
 )
 
 SHAPE_BY_NAME = {kind.name: kind for kind in SHAPES}

@@ -3,8 +3,9 @@
 rtfgu/shapes/*.texcoord and rtfgu/textures/ (image_texture.py, checker.py).
 
 ``texcoord_<shape>(position, *fields)``: (u, v) of a point on that shape, its fields in the
-registry's order. ``texture_<kind>(table, row, texels, u, v)``: the colour of row ``row``
-of that texture kind's table at the shape's (u, v), scaled by the texture's ``scale``.
+registry's order. ``texture_<kind>(table, row, texels, u, v, position)``: the colour of row
+``row`` of that texture kind's table at the hit point ``position``, whose texture
+coordinates on the shape are (u, v) (Texture.color_at).
 """
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ import math
 from numba import njit
 
 from ..layout import TEXTURE_ADDRESSES, TEXTURE_FILTERS, offset
+from ..textures.checker3d import EPSILON as CHECKER3D_EPSILON
 from .float3 import add, cross, dot, lit, normalize, scale, sub
 from .intersect import box_face
 
@@ -26,6 +28,10 @@ CHECKER_COLOR1 = offset("Checker", "color1")
 CHECKER_SIZE = offset("Checker", "size")
 CHECKER_COLOR2 = offset("Checker", "color2")
 CHECKER_SCALE = offset("Checker", "scale")
+CHECKER3D_COLOR1 = offset("Checker3D", "color1")
+CHECKER3D_SIZE = offset("Checker3D", "size")
+CHECKER3D_COLOR2 = offset("Checker3D", "color2")
+CHECKER3D_SCALE = offset("Checker3D", "scale")
 NEAREST = TEXTURE_FILTERS["nearest"]
 REPEAT = TEXTURE_ADDRESSES["repeat"]
 
@@ -112,7 +118,7 @@ def _texel(texels, first, width, height, address, i, j):
 
 
 @njit(cache=True, error_model="numpy")
-def texture_image_texture(table, row, texels, u, v):
+def texture_image_texture(table, row, texels, u, v, position):
     """ImageTexture.color_at: nearest or bilinear, repeat or clamp (worksheet 3)."""
     rec = table[row]
     u = u * rec[IMAGE_SCALE]
@@ -150,7 +156,7 @@ def texture_image_texture(table, row, texels, u, v):
 
 
 @njit(cache=True, error_model="numpy")
-def texture_checker(table, row, texels, u, v):
+def texture_checker(table, row, texels, u, v, position):
     """Checker.color_at: colour1 where floor(u / size) + floor(v / size) is even."""
     rec = table[row]
     u = u * rec[CHECKER_SCALE]
@@ -159,3 +165,18 @@ def texture_checker(table, row, texels, u, v):
     if (int(math.floor(u / size)) + int(math.floor(v / size))) % 2 == 0:
         return rec[CHECKER_COLOR1], rec[CHECKER_COLOR1 + 1], rec[CHECKER_COLOR1 + 2]
     return rec[CHECKER_COLOR2], rec[CHECKER_COLOR2 + 1], rec[CHECKER_COLOR2 + 2]
+
+
+@njit(cache=True, error_model="numpy")
+def texture_checker3d(table, row, texels, u, v, position):
+    """Checker3D.color_at: colour1 where floor(x / size) + floor(y / size) + floor(z / size)
+    of the point (scaled, moved by the book's epsilon) is even."""
+    rec = table[row]
+    p = scale(position, rec[CHECKER3D_SCALE])
+    eps = lit(CHECKER3D_EPSILON, position[0])
+    size = rec[CHECKER3D_SIZE]
+    cells = (int(math.floor((p[0] + eps) / size)) + int(math.floor((p[1] + eps) / size))
+             + int(math.floor((p[2] + eps) / size)))
+    if cells % 2 == 0:
+        return rec[CHECKER3D_COLOR1], rec[CHECKER3D_COLOR1 + 1], rec[CHECKER3D_COLOR1 + 2]
+    return rec[CHECKER3D_COLOR2], rec[CHECKER3D_COLOR2 + 1], rec[CHECKER3D_COLOR2 + 2]

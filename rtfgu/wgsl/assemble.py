@@ -92,10 +92,13 @@ def pieces(features, formula: str = "slide") -> list:
             chosen = formula if formula in kind.formulas else "slide"
             out.append((kind.wgsl_file, kind.formula_file(chosen)))
     if trace and "textures" in f:
-        out.append(("texcoord.wgsl", "texcoord.wgsl"))
+        if "texcoord" in f:
+            out.append(("texcoord.wgsl", "texcoord.wgsl"))
+        used = []
         for kind in TEXTURES:
             if kind.name in f:
-                out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
+                used += [piece for piece in kind.uses if piece not in used] + [kind.name + ".wgsl"]
+        out += [(piece, piece) for piece in used]
     if sampled_lights:
         out.append(("light_sample.wgsl", "light_sample.wgsl"))
     if trace and _lit(f):
@@ -134,7 +137,8 @@ def piece_names() -> list:
     names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
     names += ["concentric_map.wgsl"]
     names += [kind.wgsl_file for kind in SHAPES]
-    names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
+    names += ["texcoord.wgsl"] + sorted({piece for kind in TEXTURES for piece in kind.uses})
+    names += [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["light_sample.wgsl", "lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
     return names + ["shade.wgsl", "intersect_scene.wgsl", "environment.wgsl", "hemisphere_map.wgsl",

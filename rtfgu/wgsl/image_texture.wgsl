@@ -20,7 +20,7 @@ fn texel(t: ImageTexture, i: i32, j: i32) -> vec3f
     return vec3f(texels[k], texels[k + 1u], texels[k + 2u]);
 }
 
-fn texture_image_texture(row: u32, uv: vec2f) -> vec3f
+fn texture_image_texture(row: u32, uv: vec2f, p: vec3f) -> vec3f
 {
     let t = image_textures[row];
     var u = uv.x * t.scale;

@@ -134,7 +134,7 @@ fn face_frame(f: u32) -> array<vec3f, 3>
     return array<vec3f, 3>(v0, mesh_vertex(face.y) - v0, mesh_vertex(face.z) - v0);
 }
 
-// #if smooth_mesh|textures
+// #if smooth_mesh|texcoord
 // The barycentric (beta, gamma) of p on face f (Triangle.texcoord).
 fn face_barycentrics(f: u32, p: vec3f) -> vec2f
 {
@@ -171,7 +171,7 @@ fn mesh_normal_at(i: i32) -> vec3f
 }
 // #endif
 
-// #if textures
+// #if texcoord
 fn texcoord_mesh(p: vec3f, f: u32) -> vec2f
 {
     return face_barycentrics(f, p);
