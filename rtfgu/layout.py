@@ -419,9 +419,16 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                         filter_mode=TEXTURE_FILTERS[m.texture.filter],
                         address_mode=TEXTURE_ADDRESSES[m.texture.address], scale=m.texture.scale)
                     texels.extend(m.texture.texels.reshape(-1).tolist())
+                elif "offset" in dict(tkind.fields):   # texels of its own (a marble's ramp)
+                    source = SimpleNamespace(**{name: getattr(m.texture, name) for name, _ in tkind.fields
+                                                if name not in ("offset", "width")},
+                                             offset=len(texels) // 3, width=m.texture.texels.shape[1])
+                    texels.extend(m.texture.texels.reshape(-1).tolist())
                 placed[id(m.texture)] = (k, len(texture_rows[tkind.name]))
                 texture_rows[tkind.name].append(pack_row(tkind.record, source))
                 features.update((tkind.name, "textures"))
+                if hasattr(m.texture, "noise_name"):
+                    features.update(("lattice_noise", m.texture.noise_name))   # which interpolation WGSL assembles
                 if m.texture.uses_texcoord:
                     features.add("texcoord")   # the paths compute the shape's (u, v)
             texture, texture_row = placed[id(m.texture)]

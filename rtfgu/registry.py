@@ -39,7 +39,7 @@ from .shapes.plane import Plane
 from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
-from .textures import Checker, Checker3D, ImageTexture
+from .textures import Checker, Checker3D, FBmTexture, ImageTexture, RampFBmTexture, WrappedFBmTexture
 
 
 class _Rows:
@@ -194,12 +194,27 @@ class TextureKind(_Rows):
     uses: tuple = ()
 
 
+# A LatticeNoise in a texture's row (rtfgu/textures/noise_texture.py): LinearNoise 0 or
+# CubicNoise 1, and the parameters of its sums; WGSL: the lattice's tables, the noise the
+# scene uses (each piece cut to its feature, "linear_noise" or "cubic_noise") and the sums.
+NOISE_FIELDS = (("noise_id", 1), ("num_octaves", 1), ("lacunarity", 1), ("gain", 1), ("fbm_max", 1))
+NOISE_PIECES = ("lattice_tables.wgsl", "linear_noise.wgsl", "cubic_noise.wgsl", "lattice_noise.wgsl")
+
 TEXTURES = (
     TextureKind("image_texture", ImageTexture, (("width", 1), ("height", 1), ("offset", 1),
                                                 ("filter_mode", 1), ("address_mode", 1), ("scale", 1))),
     TextureKind("checker", Checker, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1))),
     TextureKind("checker3d", Checker3D, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1)),
                 texcoord=False),
+    # Suffern ch. 31: a noise texture's row ends with its noise's fields (NOISE_FIELDS).
+    TextureKind("fbm_texture", FBmTexture, (("color", 3), ("min_value", 1), ("max_value", 1), ("scale", 1))
+                + NOISE_FIELDS, texcoord=False, uses=NOISE_PIECES),
+    TextureKind("wrapped_fbm_texture", WrappedFBmTexture, (("color", 3), ("min_value", 1), ("max_value", 1),
+                                                           ("expansion_number", 1), ("scale", 1)) + NOISE_FIELDS,
+                texcoord=False, uses=NOISE_PIECES),
+    # The ramp's colours sit in FlatScene.texels from ``offset``, ``width`` of them.
+    TextureKind("ramp_fbm_texture", RampFBmTexture, (("offset", 1), ("width", 1), ("perturbation", 1), ("scale", 1))
+                + NOISE_FIELDS, texcoord=False, uses=NOISE_PIECES),
 )
 
 SHAPE_BY_NAME = {kind.name: kind for kind in SHAPES}

@@ -5,12 +5,18 @@ within float32 rounding."""
 from __future__ import annotations
 
 import math
+import re
 
+import numpy as np
 import pytest
 
 from rtfgu import Box, Float3, OrthographicCamera, Plane, Scene, Sphere
 from rtfgu.materials import Material
-from rtfgu.textures import Checker3D
+from rtfgu.noise import CubicNoise, LinearNoise
+from rtfgu.noise.lattice_noise import PERMUTATION_TABLE, VALUE_TABLE, lattice_value
+from rtfgu.textures import Checker3D, FBmTexture, RampFBmTexture, WrappedFBmTexture
+from rtfgu.textures.noise_texture import NOISE_IDS
+from wgsl_support import wgpu_device  # noqa: F401  (a fixture)
 
 RED, BLUE = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0)
 
@@ -55,3 +61,124 @@ def test_checker3d_parity_is_the_books(path):
 def test_a_non_positive_checker3d_size_names_the_field(size):
     with pytest.raises(ValueError, match=r"Checker3D\.size"):
         Checker3D(RED, BLUE, size=size)
+
+
+# ---------------------------------------------------------------------------- the noise
+def _points(n=400):
+    """Points over many lattice cells, negative coordinates and exact lattice points included."""
+    rng = np.random.default_rng(31)
+    points = rng.uniform(-40.0, 40.0, size=(n, 3))
+    points[:20] = np.round(points[:20])          # on lattice points
+    points[20:40, 0] = np.floor(points[20:40, 0])  # on a lattice plane
+    return points
+
+
+@pytest.mark.parametrize("cls", [LinearNoise, CubicNoise])
+def test_numba_noise_equals_the_lecture_layers_bit_for_bit(cls):
+    from rtfgu.kernels.noise import value_fbm, value_fractal_sum, value_noise, value_turbulence
+
+    noise = cls(num_octaves=4, lacunarity=2.5, gain=0.6)
+    kind = NOISE_IDS[cls.__name__]
+    for x, y, z in _points():
+        p = Float3(float(x), float(y), float(z))
+        q = (float(x), float(y), float(z))
+        assert value_noise(kind, q) == noise.value_noise(p), (cls.__name__, q)
+        assert value_fbm(kind, 4, 2.5, 0.6, noise.fbm_max, q) == noise.value_fbm(p), q
+        assert value_turbulence(kind, 4, noise.fbm_max, q) == noise.value_turbulence(p), q
+        assert value_fractal_sum(kind, 4, noise.fbm_max, q) == noise.value_fractal_sum(p), q
+
+
+def test_the_noise_interpolates_the_lattice_values():
+    """At a lattice point both noises are the lattice value; between, the linear noise is
+    the mean of two neighbours on an edge midpoint, and both stay in [-1, 1]."""
+    linear, cubic = LinearNoise(), CubicNoise()
+    for ix, iy, iz in ((0, 0, 0), (3, -2, 7), (-5, -1, -9)):
+        p = Float3(ix, iy, iz)
+        assert linear.value_noise(p) == cubic.value_noise(p) == lattice_value(ix, iy, iz)
+    mid = linear.value_noise(Float3(3.5, -2.0, 7.0))
+    assert mid == 0.5 * (lattice_value(3, -2, 7) + lattice_value(4, -2, 7))
+    values = [n.value_noise(Float3(*map(float, p))) for p in _points(200) for n in (linear, cubic)]
+    assert -1.0 <= min(values) < -0.3 and 0.3 < max(values) <= 1.0
+    assert len(set(VALUE_TABLE)) == 256
+
+
+def test_the_wgsl_lattice_tables_are_the_lecture_layers():
+    from rtfgu.wgsl.assemble import read_piece
+
+    text = read_piece("lattice_tables.wgsl")
+    perm = re.search(r"PERMUTATION_TABLE: array<u32, 256> = array<u32, 256>\((.*?)\);", text, re.S).group(1)
+    values = re.search(r"VALUE_TABLE: array<f32, 256> = array<f32, 256>\((.*?)\);", text, re.S).group(1)
+    assert [int(v.strip().rstrip("u")) for v in perm.split(",")] == list(PERMUTATION_TABLE)
+    assert [float(v) for v in values.split(",")] == list(VALUE_TABLE)
+
+
+_NOISE_MAIN = """
+@group(0) @binding(0) var<storage, read> points: array<vec4f>;
+@group(0) @binding(1) var<storage, read_write> out: array<vec4f>;
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3u)
+{
+    let i = id.x;
+    if (i >= arrayLength(&points)) {
+        return;
+    }
+    let p = points[i].xyz;
+    let kind = points[i].w;
+    out[i] = vec4f(value_noise(kind, p), value_fbm(kind, 4.0, 2.5, 0.6, FBM_MAX, p),
+                   value_turbulence(kind, 4.0, FBM_MAX, p), value_fractal_sum(kind, 4.0, FBM_MAX, p));
+}
+"""
+
+
+def test_wgsl_noise_is_the_lecture_layers_within_float32(wgpu_device):
+    from rtfgu.wgsl.harness import batch_program, run_batch
+
+    pieces = ["lattice_tables.wgsl", "linear_noise.wgsl", "cubic_noise.wgsl", "lattice_noise.wgsl", "noise_main.wgsl"]
+    for cls in (LinearNoise, CubicNoise):
+        noise = cls(num_octaves=4, lacunarity=2.5, gain=0.6)
+        main = _NOISE_MAIN.replace("FBM_MAX", repr(float(np.float32(noise.fbm_max))))
+        program = batch_program(pieces, features={"lattice_noise", "linear_noise", "cubic_noise"},
+                                overrides={"noise_main.wgsl": main})
+        # float32 points, so both sides see the same point
+        points = _points().astype(np.float32)
+        data = np.concatenate([points, np.full((len(points), 1), NOISE_IDS[cls.__name__], np.float32)], axis=1)
+        out = run_batch(program, [data.reshape(-1)], len(points))[:, 0, :]
+        for k, (x, y, z) in enumerate(points.astype(np.float64)):
+            p = Float3(x, y, z)
+            want = (noise.value_noise(p), noise.value_fbm(p), noise.value_turbulence(p), noise.value_fractal_sum(p))
+            assert np.allclose(out[k], want, rtol=0, atol=2e-5), (cls.__name__, (x, y, z), out[k], want)
+
+
+def _noise_scene():
+    """The noise textures, each on a sphere of its own, with both interpolations."""
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    textures = [FBmTexture(CubicNoise(num_octaves=6), Float3(0.9, 0.7, 0.3), scale=3.0),
+                FBmTexture(LinearNoise(num_octaves=3, gain=0.8), Float3(0.2, 0.9, 0.4), min_value=0.2, max_value=0.9),
+                WrappedFBmTexture(LinearNoise(num_octaves=5), Float3(1.0, 0.8, 0.6), expansion_number=7.0,
+                                  scale=2.0),
+                RampFBmTexture(CubicNoise(num_octaves=4), [(0.9, 0.9, 0.85), (0.5, 0.4, 0.3), (0.1, 0.1, 0.2),
+                                                          (0.7, 0.6, 0.5)], perturbation=4.0, scale=2.5)]
+    for k, texture in enumerate(textures):
+        scene.shapes.append(Sphere(Float3(10.0 * k, 0.0, 0.0), 1.0, Float3(0.0), Material(cd=texture)))
+    return scene, textures
+
+
+def test_noise_textures_on_every_path(path):
+    """Each path's colour at 25 points of each sphere against the lecture layer's: equal in
+    numba float64, within float32 rounding (and the band or ramp entry it picks) elsewhere."""
+    scene, textures = _noise_scene()
+    rays = []
+    for k in range(len(textures)):
+        for a in np.linspace(-0.8, 0.8, 5):
+            for b in np.linspace(-0.8, 0.8, 5):
+                rays.append(((10.0 * k + float(a), float(b), 5.0), (0.0, 0.0, -1.0)))
+    want = colours(path.reference, scene, rays)
+    got = colours(path, scene, rays)
+    assert len(set(want)) > 3 * len(textures)   # the noise varies over each sphere
+    off = [k for k, (g, w) in enumerate(zip(got, want)) if not np.allclose(g, w, rtol=0, atol=1e-4)]
+    if path.precision == "float64":
+        assert got == want
+    else:
+        # A wrapped band's edge or a ramp entry's may fall on the other side in float32.
+        assert len(off) <= 2, [(k, got[k], want[k]) for k in off]

@@ -11,11 +11,13 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from ..layout import TEXTURE_ADDRESSES, TEXTURE_FILTERS, offset
 from ..textures.checker3d import EPSILON as CHECKER3D_EPSILON
-from .float3 import add, cross, dot, lit, normalize, scale, sub
+from .float3 import add, cross, dot, lit, load3, normalize, scale, sub
+from .noise import row_fbm
 from .intersect import box_face
 
 IMAGE_WIDTH = offset("ImageTexture", "width")
@@ -32,6 +34,22 @@ CHECKER3D_COLOR1 = offset("Checker3D", "color1")
 CHECKER3D_SIZE = offset("Checker3D", "size")
 CHECKER3D_COLOR2 = offset("Checker3D", "color2")
 CHECKER3D_SCALE = offset("Checker3D", "scale")
+FBM_COLOR = offset("FBmTexture", "color")
+FBM_MIN = offset("FBmTexture", "min_value")
+FBM_MAX = offset("FBmTexture", "max_value")
+FBM_SCALE = offset("FBmTexture", "scale")
+FBM_NOISE = offset("FBmTexture", "noise_id")
+WRAPPED_COLOR = offset("WrappedFBmTexture", "color")
+WRAPPED_MIN = offset("WrappedFBmTexture", "min_value")
+WRAPPED_MAX = offset("WrappedFBmTexture", "max_value")
+WRAPPED_EXPANSION = offset("WrappedFBmTexture", "expansion_number")
+WRAPPED_SCALE = offset("WrappedFBmTexture", "scale")
+WRAPPED_NOISE = offset("WrappedFBmTexture", "noise_id")
+RAMP_OFFSET = offset("RampFBmTexture", "offset")
+RAMP_WIDTH = offset("RampFBmTexture", "width")
+RAMP_PERTURBATION = offset("RampFBmTexture", "perturbation")
+RAMP_SCALE = offset("RampFBmTexture", "scale")
+RAMP_NOISE = offset("RampFBmTexture", "noise_id")
 NEAREST = TEXTURE_FILTERS["nearest"]
 REPEAT = TEXTURE_ADDRESSES["repeat"]
 
@@ -180,3 +198,41 @@ def texture_checker3d(table, row, texels, u, v, position):
     if cells % 2 == 0:
         return rec[CHECKER3D_COLOR1], rec[CHECKER3D_COLOR1 + 1], rec[CHECKER3D_COLOR1 + 2]
     return rec[CHECKER3D_COLOR2], rec[CHECKER3D_COLOR2 + 1], rec[CHECKER3D_COLOR2 + 2]
+
+
+@njit(cache=True, error_model="numpy")
+def texture_fbm_texture(table, row, texels, u, v, position):
+    """FBmTexture.color_at: value_fbm mapped to [min_value, max_value] times the colour, red
+    outside [0, 1]."""
+    rec = table[row]
+    p = scale(position, rec[FBM_SCALE])
+    value = row_fbm(rec, FBM_NOISE, p)
+    value = rec[FBM_MIN] + (rec[FBM_MAX] - rec[FBM_MIN]) * value
+    zero = lit(0.0, value)
+    one = lit(1.0, value)
+    if value < zero or value > one:
+        return one, zero, zero
+    return scale(load3(rec, FBM_COLOR), value)
+
+
+@njit(cache=True, error_model="numpy")
+def texture_wrapped_fbm_texture(table, row, texels, u, v, position):
+    """WrappedFBmTexture.color_at: the fractional part of expansion_number value_fbm."""
+    rec = table[row]
+    p = scale(position, rec[WRAPPED_SCALE])
+    noise = rec[WRAPPED_EXPANSION] * row_fbm(rec, WRAPPED_NOISE, p)
+    value = noise - np.floor(noise)
+    value = rec[WRAPPED_MIN] + (rec[WRAPPED_MAX] - rec[WRAPPED_MIN]) * value
+    return scale(load3(rec, WRAPPED_COLOR), value)
+
+
+@njit(cache=True, error_model="numpy")
+def texture_ramp_fbm_texture(table, row, texels, u, v, position):
+    """RampFBmTexture.color_at: the ramp's entry int(u (n - 1)), u = (1 + sin(y + a fbm)) / 2."""
+    rec = table[row]
+    p = scale(position, rec[RAMP_SCALE])
+    noise = row_fbm(rec, RAMP_NOISE, p)
+    y = p[1] + rec[RAMP_PERTURBATION] * noise
+    s = (lit(1.0, y) + math.sin(y)) / lit(2.0, y)
+    k = 3 * (int(rec[RAMP_OFFSET]) + int(s * (rec[RAMP_WIDTH] - lit(1.0, y))))
+    return texels[k], texels[k + 1], texels[k + 2]
