@@ -194,6 +194,11 @@ class TextureKind(_Rows):
     uses: tuple = ()
 
 
+# Suffern ch. 29's mappings of an ImageTexture (rtfgu/mappings/, Mapping.name): numba
+# rtfgu/kernels/mappings.py, WGSL the piece of each (cut to the mappings the scene uses).
+MAPPING_IDS = {"spherical_map": 0, "cylindrical_map": 1, "rectangular_map": 2, "light_probe": 3, "panoramic": 4}
+MAPPING_PIECES = ("spherical_map.wgsl", "cylindrical_map.wgsl", "rectangular_map.wgsl", "light_probe.wgsl")
+
 # A LatticeNoise in a texture's row (rtfgu/textures/noise_texture.py): LinearNoise 0 or
 # CubicNoise 1, and the parameters of its sums; WGSL: the lattice's tables, the noise the
 # scene uses (each piece cut to its feature, "linear_noise" or "cubic_noise") and the sums.
@@ -201,8 +206,10 @@ NOISE_FIELDS = (("noise_id", 1), ("num_octaves", 1), ("lacunarity", 1), ("gain",
 NOISE_PIECES = ("lattice_tables.wgsl", "linear_noise.wgsl", "cubic_noise.wgsl", "lattice_noise.wgsl")
 
 TEXTURES = (
+    # mapping_id: the image's Mapping (MAPPING_IDS), -1 for the shape's own (u, v).
     TextureKind("image_texture", ImageTexture, (("width", 1), ("height", 1), ("offset", 1),
-                                                ("filter_mode", 1), ("address_mode", 1), ("scale", 1))),
+                                                ("filter_mode", 1), ("address_mode", 1), ("scale", 1),
+                                                ("mapping_id", 1)), uses=MAPPING_PIECES),
     TextureKind("checker", Checker, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1))),
     TextureKind("checker3d", Checker3D, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1)),
                 texcoord=False),

@@ -14,7 +14,9 @@ from rtfgu import Box, Float3, OrthographicCamera, Plane, Scene, Sphere
 from rtfgu.materials import Material
 from rtfgu.noise import CubicNoise, LinearNoise
 from rtfgu.noise.lattice_noise import PERMUTATION_TABLE, VALUE_TABLE, lattice_value
-from rtfgu.textures import Checker3D, FBmTexture, RampFBmTexture, WrappedFBmTexture
+from rtfgu.layout import compile_scene
+from rtfgu.mappings import CylindricalMap, LightProbe, RectangularMap, SphericalMap
+from rtfgu.textures import Checker3D, FBmTexture, ImageTexture, RampFBmTexture, WrappedFBmTexture
 from rtfgu.textures.noise_texture import NOISE_IDS
 from wgsl_support import wgpu_device  # noqa: F401  (a fixture)
 
@@ -182,3 +184,82 @@ def test_noise_textures_on_every_path(path):
     else:
         # A wrapped band's edge or a ramp entry's may fall on the other side in float32.
         assert len(off) <= 2, [(k, got[k], want[k]) for k in off]
+
+
+# -------------------------------------------------------------------------- the mappings
+def test_the_mappings_give_the_books_coordinates():
+    s, c, r, probe, panorama = SphericalMap(), CylindricalMap(), RectangularMap(), LightProbe(), LightProbe(True)
+    assert s.get_texel_coordinates(Float3(0.0, 0.0, 1.0)) == (0.0, 0.5)
+    assert s.get_texel_coordinates(Float3(1.0, 0.0, 0.0)) == (0.25, 0.5)
+    assert s.get_texel_coordinates(Float3(0.0, 1.0, 0.0)) == (0.0, 1.0)
+    assert c.get_texel_coordinates(Float3(-1.0, 0.5, 0.0)) == (0.75, 0.75)
+    assert r.get_texel_coordinates(Float3(-1.0, 0.0, 1.0)) == (1.0, 0.0)
+    assert r.get_texel_coordinates(Float3(0.5, 0.0, -0.5)) == (0.25, 0.75)
+    assert probe.get_texel_coordinates(Float3(0.0, 0.0, 1.0)) == (0.5, 0.5)       # the centre
+    assert probe.get_texel_coordinates(Float3(1.0, 0.0, 0.0)) == (0.75, 0.5)      # alpha = pi / 2
+    assert probe.get_texel_coordinates(Float3(0.0, 0.0, -1.0)) == (1.0, 0.5)      # the rim
+    assert panorama.get_texel_coordinates(Float3(0.0, 0.0, -1.0)) == (0.5, 0.5)
+    assert panorama.get_texel_coordinates(Float3(0.0, -1.0, 0.0)) == (0.5, 0.25)
+
+
+def test_a_spherical_map_on_the_unit_sphere_is_the_spheres_own_texcoord():
+    sphere = Sphere(Float3(0.0), 1.0, Float3(0.0))
+    for x, y, z in np.random.default_rng(29).normal(size=(50, 3)):
+        p = Float3(x, y, z) / math.sqrt(x * x + y * y + z * z)
+        assert SphericalMap().get_texel_coordinates(p) == sphere.texcoord(p)
+
+
+MAP_TEXELS = np.array([[[0.125, 0.5, 1.0], [0.25, 0.0, 0.5], [1.0, 0.875, 0.0]],
+                       [[0.0, 0.25, 0.75], [0.5, 0.5, 0.5], [0.75, 0.125, 0.375]]])
+
+
+@pytest.mark.parametrize("mapping", [SphericalMap(), CylindricalMap(), RectangularMap(), LightProbe(),
+                                     LightProbe(panoramic=True)], ids=lambda m: m.name)
+def test_an_image_texture_through_each_mapping_on_every_path(path, mapping):
+    """A unit sphere about the origin (and the square of the plane y = 0 for the rectangular
+    map) seen at 25 points: the colours of the lecture layer, bit for bit in float64."""
+    texture = ImageTexture(texels=MAP_TEXELS, filter="bilinear", address="repeat", mapping=mapping)
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    if isinstance(mapping, RectangularMap):
+        scene.shapes.append(Plane(Float3(0.0), Float3(0.0, 1.0, 0.0), Float3(0.0), Material(cd=texture)))
+        rays = [((float(a), 3.0, float(b)), (0.0, -1.0, 0.0)) for a in np.linspace(-0.9, 0.9, 5)
+                for b in np.linspace(-0.9, 0.9, 5)]
+    else:
+        scene.shapes.append(Sphere(Float3(0.0), 1.0, Float3(0.0), Material(cd=texture)))
+        rays = [((float(a), float(b), 3.0 * side), (0.0, 0.0, -side)) for a in np.linspace(-0.8, 0.8, 4)
+                for b in np.linspace(-0.8, 0.8, 4) for side in (1.0, -1.0)]
+    want = colours(path.reference, scene, rays)
+    got = colours(path, scene, rays)
+    assert len(set(want)) > 8
+    if path.precision == "float64":
+        assert got == want
+    else:
+        assert np.allclose(got, want, rtol=0, atol=1e-4)
+    assert mapping.name in compile_scene(scene).features
+
+
+def test_a_mapped_texture_computes_no_shape_texcoord():
+    """Only the mappings a scene uses are assembled, and no shape's (u, v) without a texture
+    that reads them."""
+    from rtfgu.wgsl.assemble import pieces, scene_features
+
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes.append(Sphere(Float3(0.0), 1.0, Float3(0.0), Material(cd=ImageTexture(
+        texels=MAP_TEXELS, mapping=CylindricalMap()))))
+    scene.shapes.append(Sphere(Float3(3.0, 0.0, 0.0), 1.0, Float3(0.0), Material(cd=Checker3D(RED, BLUE))))
+    flat = compile_scene(scene)
+    features = scene_features(flat)
+    assert "texcoord" not in features and "cylindrical_map" in features
+    from rtfgu.wgsl.assemble import assemble
+
+    source = assemble(flat).source
+    assert "fn cylindrical_map" in source and "fn texture_checker3d" in source
+    for absent in ("fn spherical_map", "fn light_probe", "fn shape_texcoord", "fn value_noise", "fn texture_checker("):
+        assert absent not in source, absent
+
+
+def test_a_mapping_must_be_a_mapping():
+    with pytest.raises(ValueError, match=r"ImageTexture\.mapping"):
+        ImageTexture(texels=MAP_TEXELS, mapping="spherical")
+    with pytest.raises(ValueError, match=r"LightProbe\.panoramic"):
+        LightProbe(panoramic="yes")

@@ -19,6 +19,7 @@ from ..textures.checker3d import EPSILON as CHECKER3D_EPSILON
 from .float3 import add, cross, dot, lit, load3, normalize, scale, sub
 from .noise import row_fbm
 from .intersect import box_face
+from .mappings import mapped_coordinates
 
 IMAGE_WIDTH = offset("ImageTexture", "width")
 IMAGE_HEIGHT = offset("ImageTexture", "height")
@@ -26,6 +27,7 @@ IMAGE_OFFSET = offset("ImageTexture", "offset")
 IMAGE_FILTER = offset("ImageTexture", "filter_mode")
 IMAGE_ADDRESS = offset("ImageTexture", "address_mode")
 IMAGE_SCALE = offset("ImageTexture", "scale")
+IMAGE_MAPPING = offset("ImageTexture", "mapping_id")
 CHECKER_COLOR1 = offset("Checker", "color1")
 CHECKER_SIZE = offset("Checker", "size")
 CHECKER_COLOR2 = offset("Checker", "color2")
@@ -137,8 +139,12 @@ def _texel(texels, first, width, height, address, i, j):
 
 @njit(cache=True, error_model="numpy")
 def texture_image_texture(table, row, texels, u, v, position):
-    """ImageTexture.color_at: nearest or bilinear, repeat or clamp (worksheet 3)."""
+    """ImageTexture.color_at: nearest or bilinear, repeat or clamp (worksheet 3), at the
+    shape's (u, v) or its mapping's of the point."""
     rec = table[row]
+    mapping = int(rec[IMAGE_MAPPING])
+    if mapping >= 0:
+        u, v = mapped_coordinates(mapping, position)
     u = u * rec[IMAGE_SCALE]
     v = v * rec[IMAGE_SCALE]
     zero = lit(0.0, u)
