@@ -430,8 +430,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                 placed[id(m.texture)] = (k, len(texture_rows[tkind.name]))
                 texture_rows[tkind.name].append(pack_row(tkind.record, source))
                 features.update((tkind.name, "textures"))
-                if hasattr(m.texture, "noise_name"):
-                    features.update(("lattice_noise", m.texture.noise_name))   # which interpolation WGSL assembles
+                if hasattr(m.texture, "noise_features"):
+                    features.update(m.texture.noise_features)   # which noise WGSL assembles
                 if m.texture.uses_texcoord:
                     features.add("texcoord")   # the paths compute the shape's (u, v)
             texture, texture_row = placed[id(m.texture)]

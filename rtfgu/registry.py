@@ -39,7 +39,7 @@ from .shapes.plane import Plane
 from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
 from .shapes.triangle import Triangle
-from .textures import Checker, Checker3D, FBmTexture, ImageTexture, RampFBmTexture, WrappedFBmTexture
+from .textures import Checker, Checker3D, FBmTexture, ImageTexture, RampFBmTexture, Wood, WrappedFBmTexture
 
 
 class _Rows:
@@ -222,6 +222,11 @@ TEXTURES = (
     # The ramp's colours sit in FlatScene.texels from ``offset``, ``width`` of them.
     TextureKind("ramp_fbm_texture", RampFBmTexture, (("offset", 1), ("width", 1), ("perturbation", 1), ("scale", 1))
                 + NOISE_FIELDS, texcoord=False, uses=NOISE_PIECES),
+    TextureKind("wood", Wood, (("light_color", 3), ("ring_frequency", 1), ("dark_color", 3), ("ring_uneveness", 1),
+                               ("ring_noise", 1), ("ring_noise_frequency", 1), ("trunk_wobble", 1),
+                               ("trunk_wobble_frequency", 1), ("angular_wobble", 1), ("angular_wobble_frequency", 1),
+                               ("grain_frequency", 1), ("grainy", 1), ("ringy", 1), ("scale", 1)) + NOISE_FIELDS,
+                texcoord=False, uses=NOISE_PIECES),
 )
 
 SHAPE_BY_NAME = {kind.name: kind for kind in SHAPES}

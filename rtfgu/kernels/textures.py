@@ -17,7 +17,7 @@ from numba import njit
 from ..layout import TEXTURE_ADDRESSES, TEXTURE_FILTERS, offset
 from ..textures.checker3d import EPSILON as CHECKER3D_EPSILON
 from .float3 import add, cross, dot, lit, load3, normalize, scale, sub
-from .noise import row_fbm
+from .noise import row_fbm, value_noise, vector_fbm, vector_noise
 from .intersect import box_face
 from .mappings import mapped_coordinates
 
@@ -52,6 +52,21 @@ RAMP_WIDTH = offset("RampFBmTexture", "width")
 RAMP_PERTURBATION = offset("RampFBmTexture", "perturbation")
 RAMP_SCALE = offset("RampFBmTexture", "scale")
 RAMP_NOISE = offset("RampFBmTexture", "noise_id")
+WOOD_LIGHT = offset("Wood", "light_color")
+WOOD_DARK = offset("Wood", "dark_color")
+WOOD_RING_FREQUENCY = offset("Wood", "ring_frequency")
+WOOD_RING_UNEVENESS = offset("Wood", "ring_uneveness")
+WOOD_RING_NOISE = offset("Wood", "ring_noise")
+WOOD_RING_NOISE_FREQUENCY = offset("Wood", "ring_noise_frequency")
+WOOD_TRUNK_WOBBLE = offset("Wood", "trunk_wobble")
+WOOD_TRUNK_WOBBLE_FREQUENCY = offset("Wood", "trunk_wobble_frequency")
+WOOD_ANGULAR_WOBBLE = offset("Wood", "angular_wobble")
+WOOD_ANGULAR_WOBBLE_FREQUENCY = offset("Wood", "angular_wobble_frequency")
+WOOD_GRAIN_FREQUENCY = offset("Wood", "grain_frequency")
+WOOD_GRAINY = offset("Wood", "grainy")
+WOOD_RINGY = offset("Wood", "ringy")
+WOOD_SCALE = offset("Wood", "scale")
+WOOD_NOISE = offset("Wood", "noise_id")
 NEAREST = TEXTURE_FILTERS["nearest"]
 REPEAT = TEXTURE_ADDRESSES["repeat"]
 
@@ -242,3 +257,72 @@ def texture_ramp_fbm_texture(table, row, texels, u, v, position):
     s = (lit(1.0, y) + math.sin(y)) / lit(2.0, y)
     k = 3 * (int(rec[RAMP_OFFSET]) + int(s * (rec[RAMP_WIDTH] - lit(1.0, y))))
     return texels[k], texels[k + 1], texels[k + 2]
+
+
+@njit(cache=True, error_model="numpy")
+def smooth_step(a, b, x):
+    """rtfgu.textures.wood.smooth_step (a, b: Python floats, x of the kernel's precision)."""
+    if x < lit(a, x):
+        return lit(0.0, x)
+    if x >= lit(b, x):
+        return lit(1.0, x)
+    y = (x - lit(a, x)) / (lit(b, x) - lit(a, x))
+    return y * y * (lit(3.0, x) - lit(2.0, x) * y)
+
+
+@njit(cache=True, error_model="numpy")
+def smooth_pulse_train(e0, e1, e2, e3, period, x):
+    """rtfgu.textures.wood.smooth_pulse_train with the book's mod."""
+    b = lit(period, x)
+    n = int(x / b)
+    x = x - lit(n, x) * b
+    if x < lit(0.0, x):
+        x += b
+    return smooth_step(e0, e1, x) - smooth_step(e2, e3, x)
+
+
+@njit(cache=True, error_model="numpy")
+def texture_wood(table, row, texels, u, v, position):
+    """Wood.color_at, operation for operation."""
+    rec = table[row]
+    p = scale(position, rec[WOOD_SCALE])
+    noise = int(rec[WOOD_NOISE])
+    octaves = int(rec[WOOD_NOISE + 1])
+    offset3 = vector_fbm(noise, octaves, rec[WOOD_NOISE + 2], rec[WOOD_NOISE + 3],
+                         scale(p, rec[WOOD_RING_NOISE_FREQUENCY]))
+    ring_point = add(p, scale(offset3, rec[WOOD_RING_NOISE]))
+    zero = lit(0.0, p[0])
+    one = lit(1.0, p[0])
+    wobble = scale(vector_noise(noise, (zero, zero, p[1] * rec[WOOD_TRUNK_WOBBLE_FREQUENCY])), rec[WOOD_TRUNK_WOBBLE])
+    rx = ring_point[0] + wobble[0]
+    ry = ring_point[1]
+    rz = ring_point[2] + wobble[2]
+    r = math.sqrt(rx * rx + rz * rz) * rec[WOOD_RING_FREQUENCY]
+    f = rec[WOOD_ANGULAR_WOBBLE_FREQUENCY]
+    r += rec[WOOD_ANGULAR_WOBBLE] * smooth_step(0.0, 5.0, r) * value_noise(
+        noise, (f * rx, f * ry * lit(0.1, r), f * rz))
+    r += rec[WOOD_RING_UNEVENESS] * value_noise(noise, (r, r, r))
+    in_ring = smooth_pulse_train(0.1, 0.55, 0.7, 0.95, 1.0, r)
+    gx = p[0] * rec[WOOD_GRAIN_FREQUENCY]
+    gy = p[1] * rec[WOOD_GRAIN_FREQUENCY] * lit(0.05, r)
+    gz = p[2] * rec[WOOD_GRAIN_FREQUENCY]
+    dpgrain = lit(0.2, r)
+    grain = zero
+    amplitude = one
+    for i in range(2):
+        grain_valid = one - smooth_step(0.2, 0.6, dpgrain)
+        if grain_valid > zero:
+            g = grain_valid * value_noise(noise, (gx, gy, gz))
+            g *= lit(0.3, r) + lit(0.7, r) * in_ring
+            g = min(max(lit(0.8, r) - g, zero), one)
+            g = rec[WOOD_GRAINY] * smooth_step(0.5, 1.0, g * g)
+            if i == 0:
+                in_ring *= one - lit(0.4, r) * grain_valid
+            grain = amplitude * max(grain, g)
+        gx = lit(2.0, r) * gx
+        gy = lit(2.0, r) * gy
+        gz = lit(2.0, r) * gz
+        dpgrain *= lit(2.0, r)
+        amplitude *= lit(0.5, r)
+    final_value = (one - grain) * (in_ring * rec[WOOD_RINGY]) + grain * one
+    return add(scale(load3(rec, WOOD_LIGHT), one - final_value), scale(load3(rec, WOOD_DARK), final_value))

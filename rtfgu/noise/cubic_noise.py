@@ -4,7 +4,7 @@ then z, clamped to [-1, 1] (CubicNoise.cpp, after Peachey 2003)."""
 from __future__ import annotations
 
 from ..float3 import Float3
-from .lattice_noise import LatticeNoise, lattice_cell, lattice_value
+from .lattice_noise import VALUE_TABLE, VECTOR_TABLES, LatticeNoise, lattice_cell, lattice_value
 
 
 def four_knot_spline(x: float, knots) -> float:
@@ -18,6 +18,15 @@ def four_knot_spline(x: float, knots) -> float:
 
 class CubicNoise(LatticeNoise):
     def value_noise(self, p: Float3) -> float:
+        # Clamped: the spline may overshoot the knots.
+        return min(max(self.interpolate(p, VALUE_TABLE), -1.0), 1.0)
+
+    def vector_noise(self, p: Float3) -> Float3:
+        return Float3(*(self.interpolate(p, table) for table in VECTOR_TABLES))
+
+    @staticmethod
+    def interpolate(p: Float3, table) -> float:
+        """The 4 x 4 x 4 lattice values of ``table`` around p, tri-cubically."""
         ix, fx = lattice_cell(p.x)
         iy, fy = lattice_cell(p.y)
         iz, fz = lattice_cell(p.z)
@@ -25,7 +34,7 @@ class CubicNoise(LatticeNoise):
         for k in (-1, 0, 1, 2):
             yknots = []
             for j in (-1, 0, 1, 2):
-                xknots = [lattice_value(ix + i, iy + j, iz + k) for i in (-1, 0, 1, 2)]
+                xknots = [lattice_value(ix + i, iy + j, iz + k, table) for i in (-1, 0, 1, 2)]
                 yknots.append(four_knot_spline(fx, xknots))
             zknots.append(four_knot_spline(fy, yknots))
-        return min(max(four_knot_spline(fz, zknots), -1.0), 1.0)
+        return four_knot_spline(fz, zknots)

@@ -12,6 +12,9 @@ random stream's integer hash (rtfgu.sampling.random.pcg) instead::
 
     VALUE_TABLE[i] = 1 - 2 (pcg(i + 253) >> 8) 2^-24        (i = 0 .. 255, in [-1, 1))
 
+and the unit vectors of the vector noise (the book's multi-jittered directions) from the
+next 512 numbers of the same sequence (VECTOR_TABLE).
+
 A value of 24 bits is exact in float32 and float64, so every path holds the same 256
 numbers: this module for the lecture layer and numba (rtfgu/kernels/noise.py reads these
 tables), and the literal tables of rtfgu/wgsl/lattice_tables.wgsl (tests/test_solid_textures.py
@@ -57,13 +60,40 @@ PERMUTATION_TABLE = (
     137, 214, 145, 93, 92, 100, 245, 0, 216, 186, 60, 83, 105, 97, 204, 52,
 )
 
-VALUE_TABLE = tuple(1.0 - 2.0 * ((pcg(i + SEED) >> 8) * TO_UNIT) for i in range(TABLE_SIZE))
 
 
-def lattice_value(ix: int, iy: int, iz: int) -> float:
-    """The value at the lattice point (ix, iy, iz): VALUE_TABLE[INDEX(ix, iy, iz)]."""
+def lattice_float(k: int) -> float:
+    """The k-th number of the lattice: (pcg(k + 253) >> 8) 2^-24, in [0, 1), 24 bits."""
+    return (pcg(k + SEED) >> 8) * TO_UNIT
+
+
+VALUE_TABLE = tuple(1.0 - 2.0 * lattice_float(i) for i in range(TABLE_SIZE))
+
+
+def _unit_vector(r1: float, r2: float) -> tuple:
+    """The book's init_vector_table: (r1, r2) of the unit square to the unit sphere
+    (Pharr and Humphreys), normalised."""
+    z = 1.0 - 2.0 * r1
+    r = math.sqrt(1.0 - z * z)
+    phi = 2.0 * math.pi * r2
+    x = r * math.cos(phi)
+    y = r * math.sin(phi)
+    length = math.sqrt(x * x + y * y + z * z)
+    return x / length, y / length, z / length
+
+
+# The book draws its 256 unit vectors from a multi-jittered set seeded with rand(); here
+# (r1, r2) = (lattice_float(256 + j), lattice_float(512 + j)). Each component is a table of
+# its own, so a vector noise is three value noises over these tables.
+VECTOR_TABLE = tuple(_unit_vector(lattice_float(TABLE_SIZE + j), lattice_float(2 * TABLE_SIZE + j))
+                     for j in range(TABLE_SIZE))
+VECTOR_TABLES = tuple(tuple(v[c] for v in VECTOR_TABLE) for c in range(3))
+
+
+def lattice_value(ix: int, iy: int, iz: int, table=VALUE_TABLE) -> float:
+    """The value at the lattice point (ix, iy, iz): table[INDEX(ix, iy, iz)]."""
     perm = PERMUTATION_TABLE
-    return VALUE_TABLE[perm[(ix + perm[(iy + perm[iz & TABLE_MASK]) & TABLE_MASK]) & TABLE_MASK]]
+    return table[perm[(ix + perm[(iy + perm[iz & TABLE_MASK]) & TABLE_MASK]) & TABLE_MASK]]
 
 
 class LatticeNoise(ABC):
@@ -84,6 +114,21 @@ class LatticeNoise(ABC):
     @abstractmethod
     def value_noise(self, p: Float3) -> float:
         """The noise at p, in [-1, 1]: the lattice values interpolated."""
+
+    @abstractmethod
+    def vector_noise(self, p: Float3) -> Float3:
+        """The lattice's unit vectors interpolated at p (the book's vector_noise)."""
+
+    def vector_fbm(self, p: Float3) -> Float3:
+        """The sum of gain^j vector_noise(lacunarity^j p), not mapped (the book's vector_fbm)."""
+        amplitude = 1.0
+        frequency = 1.0
+        total = Float3(0.0)
+        for _ in range(self.num_octaves):
+            total = total + self.vector_noise(p * frequency) * amplitude
+            amplitude *= self.gain
+            frequency *= self.lacunarity
+        return total
 
     def value_fractal_sum(self, p: Float3) -> float:
         amplitude = 1.0

@@ -7,7 +7,8 @@ from .noise_texture import NoiseTexture
 from .ramp_fbm_texture import RampFBmTexture
 from .solid_texture import SolidTexture
 from .texture import Texture
+from .wood import Wood
 from .wrapped_fbm_texture import WrappedFBmTexture
 
 __all__ = ["Texture", "SolidTexture", "NoiseTexture", "ImageTexture", "Checker", "Checker3D", "FBmTexture",
-           "WrappedFBmTexture", "RampFBmTexture"]
+           "WrappedFBmTexture", "RampFBmTexture", "Wood"]

@@ -22,10 +22,14 @@ class NoiseTexture(SolidTexture):
     def noise_id(self) -> int:
         return NOISE_IDS[type(self.noise).__name__]
 
+    # Does get_color call the noise's vector_noise or vector_fbm?
+    uses_vector_noise = False
+
     @property
-    def noise_name(self) -> str:
-        """"linear_noise" or "cubic_noise": the WGSL pieces a scene needs."""
-        return {0: "linear_noise", 1: "cubic_noise"}[self.noise_id]
+    def noise_features(self) -> tuple:
+        """The WGSL features of the noise: its interpolation and, where used, vector noise."""
+        names = ("lattice_noise", {0: "linear_noise", 1: "cubic_noise"}[self.noise_id])
+        return names + ("vector_noise",) if self.uses_vector_noise else names
 
     num_octaves = property(lambda self: self.noise.num_octaves)
     lacunarity = property(lambda self: self.noise.lacunarity)

@@ -53,4 +53,32 @@ fn value_fbm(noise: f32, num_octaves: f32, lacunarity: f32, gain: f32, fbm_max: 
     }
     return (fbm + fbm_max) / (fbm_max + fbm_max);
 }
+// #if vector_noise
+fn vector_noise(noise: f32, p: vec3f) -> vec3f
+{
+    // #if linear_noise
+    if (noise == 0.0) {
+        return linear_vector_noise(p);
+    }
+    // #endif
+    // #if cubic_noise
+    return cubic_vector_noise(p);
+    // #else
+    return vec3f(0.0);
+    // #endif
+}
+
+fn vector_fbm(noise: f32, num_octaves: f32, lacunarity: f32, gain: f32, p: vec3f) -> vec3f
+{
+    var amplitude = 1.0;
+    var frequency = 1.0;
+    var sum = vec3f(0.0);
+    for (var j = 0; j < i32(num_octaves); j++) {
+        sum += vector_noise(noise, p * frequency) * amplitude;
+        amplitude *= gain;
+        frequency *= lacunarity;
+    }
+    return sum;
+}
+// #endif
 // #endif
