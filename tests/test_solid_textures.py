@@ -272,3 +272,43 @@ def test_a_mapping_must_be_a_mapping():
         ImageTexture(texels=MAP_TEXELS, mapping="spherical")
     with pytest.raises(ValueError, match=r"LightProbe\.panoramic"):
         LightProbe(panoramic="yes")
+
+
+# --------------------------------------------------------------------------- bad input
+@pytest.mark.parametrize("make, field", [
+    (lambda: LinearNoise(num_octaves=0), "LinearNoise.num_octaves"),
+    (lambda: CubicNoise(num_octaves=-2), "CubicNoise.num_octaves"),
+    (lambda: CubicNoise(num_octaves=2.5), "CubicNoise.num_octaves"),
+    (lambda: LinearNoise(lacunarity=0.0), "LinearNoise.lacunarity"),
+    (lambda: LinearNoise(gain=float("nan")), "LinearNoise.gain"),
+    (lambda: FBmTexture("noise"), "FBmTexture.noise"),
+    (lambda: FBmTexture(LinearNoise(), min_value=-1.0), "FBmTexture.min_value"),
+    (lambda: WrappedFBmTexture(LinearNoise(), expansion_number=0.0), "WrappedFBmTexture.expansion_number"),
+    (lambda: RampFBmTexture(CubicNoise(), "/no/such/ramp.png"), "RampFBmTexture.ramp: no such file"),
+    (lambda: RampFBmTexture(CubicNoise(), []), "RampFBmTexture.ramp"),
+    (lambda: RampFBmTexture(CubicNoise(), [(1.0, 0.0)]), r"RampFBmTexture.ramp\[0\]"),
+    (lambda: RampFBmTexture(CubicNoise(), 3), "RampFBmTexture.ramp"),
+    (lambda: Wood(ring_frequency=-1.0), "Wood.ring_frequency"),
+    (lambda: Wood(ring_frequncy=4.0), "Wood has no parameter ring_frequncy"),
+    (lambda: Checker3D(RED, BLUE, scale=0.0), "Checker3D.scale"),
+    (lambda: Checker3D((1.0, -1.0, 0.0), BLUE), "Checker3D.color1"),
+])
+def test_bad_noise_and_solid_textures_name_the_field(make, field):
+    with pytest.raises(ValueError, match=field.replace(".", r"\.") if "\\" not in field else field):
+        make()
+
+
+def test_a_ramp_file_that_is_not_an_image_names_the_field(tmp_path):
+    bad = tmp_path / "ramp.png"
+    bad.write_text("not an image")
+    with pytest.raises(ValueError, match=r"RampFBmTexture\.ramp: .*ramp\.png is not an image"):
+        RampFBmTexture(CubicNoise(), bad)
+
+
+def test_a_ramp_image_gives_its_top_row(tmp_path):
+    from PIL import Image
+
+    path = tmp_path / "ramp.png"
+    Image.fromarray(np.array([[[255, 0, 0], [0, 255, 0], [0, 0, 255]], [[9, 9, 9]] * 3], dtype=np.uint8)).save(path)
+    ramp = RampFBmTexture(CubicNoise(), path).ramp
+    assert ramp == [Float3(1.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.0, 0.0, 1.0)]
