@@ -52,7 +52,7 @@ import numpy as np
 from .cameras import FishEye, OrthographicCamera, PinholeCamera, Spherical, StereoCamera, ThinLens
 from .float3 import Float3
 from .ray import RAY_EPSILON
-from .registry import (LIGHTS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
+from .registry import (LIGHTS, MAPPING_IDS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
                        shape_kind_of, texture_kind_of)
 from .shapes.mesh import Mesh
 
@@ -420,11 +420,23 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                     source = SimpleNamespace(
                         width=m.texture.width, height=m.texture.height, offset=len(texels) // 3,
                         filter_mode=TEXTURE_FILTERS[m.texture.filter],
-                        address_mode=TEXTURE_ADDRESSES[m.texture.address], scale=m.texture.scale)
+                        address_mode=TEXTURE_ADDRESSES[m.texture.address], scale=m.texture.scale,
+                        mapping_id=-1 if m.texture.mapping is None else MAPPING_IDS[m.texture.mapping.name])
+                    if m.texture.mapping is not None:
+                        features.add(m.texture.mapping.name)
+                    texels.extend(m.texture.texels.reshape(-1).tolist())
+                elif "offset" in dict(tkind.fields):   # texels of its own (a marble's ramp)
+                    source = SimpleNamespace(**{name: getattr(m.texture, name) for name, _ in tkind.fields
+                                                if name not in ("offset", "width")},
+                                             offset=len(texels) // 3, width=m.texture.texels.shape[1])
                     texels.extend(m.texture.texels.reshape(-1).tolist())
                 placed[id(m.texture)] = (k, len(texture_rows[tkind.name]))
                 texture_rows[tkind.name].append(pack_row(tkind.record, source))
                 features.update((tkind.name, "textures"))
+                if hasattr(m.texture, "noise_features"):
+                    features.update(m.texture.noise_features)   # which noise WGSL assembles
+                if m.texture.uses_texcoord:
+                    features.add("texcoord")   # the paths compute the shape's (u, v)
             texture, texture_row = placed[id(m.texture)]
         limit = m.flat_limit(scene.tracer)
         if limit is not None:

@@ -41,7 +41,7 @@ from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
 from .shapes.torus import Torus
 from .shapes.triangle import Triangle
-from .textures import Checker, ImageTexture
+from .textures import Checker, Checker3D, FBmTexture, ImageTexture, RampFBmTexture, Wood, WrappedFBmTexture
 
 
 class _Rows:
@@ -184,21 +184,55 @@ LIGHTS = (
 class TextureKind(_Rows):
     """A texture: the lecture class (rtfgu/textures/) with an attribute per field (the
     layout fills ``offset``, the texture's first texel in FlatScene.texels), numba
-    ``texture_<name>(table, row, texels, u, v)`` in rtfgu/kernels/textures.py and WGSL
-    ``fn texture_<name>(row: u32, uv: vec2f) -> vec3f`` in ``<name>.wgsl``, both returning
-    the colour at the shape's (u, v) (scaled by the texture's ``scale`` inside). Every shape
-    kind gives (u, v): numba ``texcoord_<shape>(position, *fields)``, WGSL ``fn
-    texcoord_<shape>`` in texcoord.wgsl (Shape.texcoord in the lecture layer)."""
+    ``texture_<name>(table, row, texels, u, v, position)`` in rtfgu/kernels/textures.py and
+    WGSL ``fn texture_<name>(row: u32, uv: vec2f, p: vec3f) -> vec3f`` in ``<name>.wgsl``,
+    both returning the colour at the hit point ``position`` whose texture coordinates on the
+    shape are (u, v) (Texture.color_at, the book's get_color(ShadeRec)). ``texcoord``: the
+    kind may read (u, v), so the paths compute them (a solid texture reads the point only
+    and gets zeros). Every shape kind gives (u, v): numba ``texcoord_<shape>(position,
+    *fields)``, WGSL ``fn texcoord_<shape>`` in texcoord.wgsl (Shape.texcoord in the
+    lecture layer). ``uses``: WGSL pieces the kind's piece calls, assembled before it."""
 
     name: str
     cls: type
     fields: tuple
+    texcoord: bool = True
+    uses: tuple = ()
 
+
+# Suffern ch. 29's mappings of an ImageTexture (rtfgu/mappings/, Mapping.name): numba
+# rtfgu/kernels/mappings.py, WGSL the piece of each (cut to the mappings the scene uses).
+MAPPING_IDS = {"spherical_map": 0, "cylindrical_map": 1, "rectangular_map": 2, "light_probe": 3, "panoramic": 4}
+MAPPING_PIECES = ("spherical_map.wgsl", "cylindrical_map.wgsl", "rectangular_map.wgsl", "light_probe.wgsl")
+
+# A LatticeNoise in a texture's row (rtfgu/textures/noise_texture.py): LinearNoise 0 or
+# CubicNoise 1, and the parameters of its sums; WGSL: the lattice's tables, the noise the
+# scene uses (each piece cut to its feature, "linear_noise" or "cubic_noise") and the sums.
+NOISE_FIELDS = (("noise_id", 1), ("num_octaves", 1), ("lacunarity", 1), ("gain", 1), ("fbm_max", 1))
+NOISE_PIECES = ("lattice_tables.wgsl", "linear_noise.wgsl", "cubic_noise.wgsl", "lattice_noise.wgsl")
 
 TEXTURES = (
+    # mapping_id: the image's Mapping (MAPPING_IDS), -1 for the shape's own (u, v).
     TextureKind("image_texture", ImageTexture, (("width", 1), ("height", 1), ("offset", 1),
-                                                ("filter_mode", 1), ("address_mode", 1), ("scale", 1))),
+                                                ("filter_mode", 1), ("address_mode", 1), ("scale", 1),
+                                                ("mapping_id", 1)), uses=MAPPING_PIECES),
     TextureKind("checker", Checker, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1))),
+    TextureKind("checker3d", Checker3D, (("color1", 3), ("size", 1), ("color2", 3), ("scale", 1)),
+                texcoord=False),
+    # Suffern ch. 31: a noise texture's row ends with its noise's fields (NOISE_FIELDS).
+    TextureKind("fbm_texture", FBmTexture, (("color", 3), ("min_value", 1), ("max_value", 1), ("scale", 1))
+                + NOISE_FIELDS, texcoord=False, uses=NOISE_PIECES),
+    TextureKind("wrapped_fbm_texture", WrappedFBmTexture, (("color", 3), ("min_value", 1), ("max_value", 1),
+                                                           ("expansion_number", 1), ("scale", 1)) + NOISE_FIELDS,
+                texcoord=False, uses=NOISE_PIECES),
+    # The ramp's colours sit in FlatScene.texels from ``offset``, ``width`` of them.
+    TextureKind("ramp_fbm_texture", RampFBmTexture, (("offset", 1), ("width", 1), ("perturbation", 1), ("scale", 1))
+                + NOISE_FIELDS, texcoord=False, uses=NOISE_PIECES),
+    TextureKind("wood", Wood, (("light_color", 3), ("ring_frequency", 1), ("dark_color", 3), ("ring_uneveness", 1),
+                               ("ring_noise", 1), ("ring_noise_frequency", 1), ("trunk_wobble", 1),
+                               ("trunk_wobble_frequency", 1), ("angular_wobble", 1), ("angular_wobble_frequency", 1),
+                               ("grain_frequency", 1), ("grainy", 1), ("ringy", 1), ("scale", 1)) + NOISE_FIELDS,
+                texcoord=False, uses=NOISE_PIECES),
 )
 
 SHAPE_BY_NAME = {kind.name: kind for kind in SHAPES}

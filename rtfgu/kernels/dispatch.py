@@ -35,6 +35,9 @@ from pathlib import Path
 from .. import layout
 from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
 
+# The texels' place in the kernels' ``scene`` tuple; a table per texture kind follows.
+TEXELS = 3
+
 # Formula ids, the same for every kind; a kind without a formula uses its slide formula.
 FORMULAS = ("slide", "robust")
 
@@ -202,9 +205,14 @@ def _texcoord(kind) -> str:
 
 
 def _texture_lookup(texture) -> str:
-    return _overloaded("lookup_" + texture.name, "table, row, texels, u, v, fallback", "fallback",
-                       "    return texture_%s(table, row, texels, u, v)" % texture.name,
-                       "The colour of row ``row`` of the %s table at (u, v)" % texture.name)
+    # A kind that reads the shape's (u, v) computes them here, so a scene without such a
+    # kind compiles no texcoord; a solid texture gets zeros.
+    uv = ("    u, v = shape_texcoord(shapes, kind, shape_row, position)" if texture.texcoord else
+          "    u = v = position[0] * lit(0.0, position[0])")
+    return _overloaded("lookup_" + texture.name, "table, row, texels, shapes, kind, shape_row, position, fallback",
+                       "fallback",
+                       uv + "\n    return texture_%s(table, row, texels, u, v, position)" % texture.name,
+                       "The colour of row ``row`` of the %s table at ``position`` on the shape hit" % texture.name)
 
 
 def _normal(kind) -> str:
@@ -389,20 +397,22 @@ def source() -> str:
                           (0, 1, 2), extra=", direction"))
     parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
                           "position[0], position[0]", (0, 1, 5)))
-    # The colour of the surface hit: the material's, or its texture's at the hit.
-    texture_params = ", ".join(t.table for t in TEXTURES)
-    lookups = ["        if texture == %d:\n            return lookup_%s(%s, int(mat[MAT_TEXTURE_ROW]), texels, u, v, color)"
-               % (k, t.name, t.table) for k, t in enumerate(TEXTURES)]
+    # The colour of the surface hit: the material's, or its texture's at the hit. The
+    # kernels' ``scene`` holds the texels at TEXELS and a table per texture kind after them
+    # (rtfgu.kernels.render.scene_tuple).
+    lookups = ["        if texture == %d:\n            return lookup_%s(scene[%d], int(mat[MAT_TEXTURE_ROW]), "
+               "scene[%d], shapes, kind, row, position, color)" % (k, t.name, TEXELS + 1 + k, TEXELS)
+               for k, t in enumerate(TEXTURES)]
     parts.append(_overloaded(
-        "surface_color", "texels, %s, shapes, mat, kind, row, position" % texture_params,
+        "surface_color", "scene, shapes, mat, kind, row, position",
         "load3(mat, MAT_COLOR)",
         "\n".join(["    color = load3(mat, MAT_COLOR)",
                    "    texture = int(mat[MAT_TEXTURE])",
-                   "    if texture >= 0:",
-                   "        u, v = shape_texcoord(shapes, kind, row, position)"] + lookups
+                   "    if texture >= 0:"] + lookups
                   + ["    return color"]),
         "The colour of the surface hit: its texture's at the hit (Scene.intersect), else the "
-        "material's; ``texels`` is None in a scene without textures"))
+        "material's; the texture entries of ``scene`` are None in a scene without textures",
+        absent_on="scene.types[%d]" % TEXELS))
     for light in LIGHTS:
         if light.ray_cast:
             parts.append(_direct(light))

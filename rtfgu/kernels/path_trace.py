@@ -112,7 +112,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
         if shader == LAMBERTIAN or shader == GLOSSY_REFLECTOR:
             if facing > zero:
                 normal = neg(normal)
-            rho = scale(surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position),
+            rho = scale(surface_color(scene, shapes, mat, kind, row, position),
                         mat[MAT_KD])
             specular = (zero, zero, zero)
             if shader == GLOSSY_REFLECTOR:
@@ -175,7 +175,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             sees_emission = True
         else:
             if shader == BASE_COLOR:
-                color = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
+                color = surface_color(scene, shapes, mat, kind, row, position)
                 result = add(result, mul(throughput, color))
             break
         origin = position

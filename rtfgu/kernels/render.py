@@ -266,7 +266,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
             else:
                 normal = shape_normal(shapes, kind, row, position, direction)
             mat = materials[idx]
-            surface = surface_color(scene[3], scene[4], scene[5], shapes, mat, kind, row, position)
+            surface = surface_color(scene, shapes, mat, kind, row, position)
             color, has_hit, further, shadow_rays = shade(
                 shader, mat, surface, direction, (position, normal), lights, shapes, shadows,
                 bounces, formula, (2 + i * VERTEX_DIMENSIONS, stream[0], stream[1], stream[2], stream[3]))

@@ -3,18 +3,23 @@
 rtfgu/shapes/*.texcoord and rtfgu/textures/ (image_texture.py, checker.py).
 
 ``texcoord_<shape>(position, *fields)``: (u, v) of a point on that shape, its fields in the
-registry's order. ``texture_<kind>(table, row, texels, u, v)``: the colour of row ``row``
-of that texture kind's table at the shape's (u, v), scaled by the texture's ``scale``.
+registry's order. ``texture_<kind>(table, row, texels, u, v, position)``: the colour of row
+``row`` of that texture kind's table at the hit point ``position``, whose texture
+coordinates on the shape are (u, v) (Texture.color_at).
 """
 from __future__ import annotations
 
 import math
 
+import numpy as np
 from numba import njit
 
 from ..layout import TEXTURE_ADDRESSES, TEXTURE_FILTERS, offset
-from .float3 import add, cross, dot, lit, normalize, scale, sub
+from ..textures.checker3d import EPSILON as CHECKER3D_EPSILON
+from .float3 import add, cross, dot, lit, load3, normalize, scale, sub
+from .noise import row_fbm, value_noise, vector_fbm, vector_noise
 from .intersect import box_face
+from .mappings import mapped_coordinates
 
 IMAGE_WIDTH = offset("ImageTexture", "width")
 IMAGE_HEIGHT = offset("ImageTexture", "height")
@@ -22,10 +27,46 @@ IMAGE_OFFSET = offset("ImageTexture", "offset")
 IMAGE_FILTER = offset("ImageTexture", "filter_mode")
 IMAGE_ADDRESS = offset("ImageTexture", "address_mode")
 IMAGE_SCALE = offset("ImageTexture", "scale")
+IMAGE_MAPPING = offset("ImageTexture", "mapping_id")
 CHECKER_COLOR1 = offset("Checker", "color1")
 CHECKER_SIZE = offset("Checker", "size")
 CHECKER_COLOR2 = offset("Checker", "color2")
 CHECKER_SCALE = offset("Checker", "scale")
+CHECKER3D_COLOR1 = offset("Checker3D", "color1")
+CHECKER3D_SIZE = offset("Checker3D", "size")
+CHECKER3D_COLOR2 = offset("Checker3D", "color2")
+CHECKER3D_SCALE = offset("Checker3D", "scale")
+FBM_COLOR = offset("FBmTexture", "color")
+FBM_MIN = offset("FBmTexture", "min_value")
+FBM_MAX = offset("FBmTexture", "max_value")
+FBM_SCALE = offset("FBmTexture", "scale")
+FBM_NOISE = offset("FBmTexture", "noise_id")
+WRAPPED_COLOR = offset("WrappedFBmTexture", "color")
+WRAPPED_MIN = offset("WrappedFBmTexture", "min_value")
+WRAPPED_MAX = offset("WrappedFBmTexture", "max_value")
+WRAPPED_EXPANSION = offset("WrappedFBmTexture", "expansion_number")
+WRAPPED_SCALE = offset("WrappedFBmTexture", "scale")
+WRAPPED_NOISE = offset("WrappedFBmTexture", "noise_id")
+RAMP_OFFSET = offset("RampFBmTexture", "offset")
+RAMP_WIDTH = offset("RampFBmTexture", "width")
+RAMP_PERTURBATION = offset("RampFBmTexture", "perturbation")
+RAMP_SCALE = offset("RampFBmTexture", "scale")
+RAMP_NOISE = offset("RampFBmTexture", "noise_id")
+WOOD_LIGHT = offset("Wood", "light_color")
+WOOD_DARK = offset("Wood", "dark_color")
+WOOD_RING_FREQUENCY = offset("Wood", "ring_frequency")
+WOOD_RING_UNEVENESS = offset("Wood", "ring_uneveness")
+WOOD_RING_NOISE = offset("Wood", "ring_noise")
+WOOD_RING_NOISE_FREQUENCY = offset("Wood", "ring_noise_frequency")
+WOOD_TRUNK_WOBBLE = offset("Wood", "trunk_wobble")
+WOOD_TRUNK_WOBBLE_FREQUENCY = offset("Wood", "trunk_wobble_frequency")
+WOOD_ANGULAR_WOBBLE = offset("Wood", "angular_wobble")
+WOOD_ANGULAR_WOBBLE_FREQUENCY = offset("Wood", "angular_wobble_frequency")
+WOOD_GRAIN_FREQUENCY = offset("Wood", "grain_frequency")
+WOOD_GRAINY = offset("Wood", "grainy")
+WOOD_RINGY = offset("Wood", "ringy")
+WOOD_SCALE = offset("Wood", "scale")
+WOOD_NOISE = offset("Wood", "noise_id")
 NEAREST = TEXTURE_FILTERS["nearest"]
 REPEAT = TEXTURE_ADDRESSES["repeat"]
 
@@ -128,9 +169,13 @@ def _texel(texels, first, width, height, address, i, j):
 
 
 @njit(cache=True, error_model="numpy")
-def texture_image_texture(table, row, texels, u, v):
-    """ImageTexture.color_at: nearest or bilinear, repeat or clamp (worksheet 3)."""
+def texture_image_texture(table, row, texels, u, v, position):
+    """ImageTexture.color_at: nearest or bilinear, repeat or clamp (worksheet 3), at the
+    shape's (u, v) or its mapping's of the point."""
     rec = table[row]
+    mapping = int(rec[IMAGE_MAPPING])
+    if mapping >= 0:
+        u, v = mapped_coordinates(mapping, position)
     u = u * rec[IMAGE_SCALE]
     v = v * rec[IMAGE_SCALE]
     zero = lit(0.0, u)
@@ -166,7 +211,7 @@ def texture_image_texture(table, row, texels, u, v):
 
 
 @njit(cache=True, error_model="numpy")
-def texture_checker(table, row, texels, u, v):
+def texture_checker(table, row, texels, u, v, position):
     """Checker.color_at: colour1 where floor(u / size) + floor(v / size) is even."""
     rec = table[row]
     u = u * rec[CHECKER_SCALE]
@@ -175,3 +220,125 @@ def texture_checker(table, row, texels, u, v):
     if (int(math.floor(u / size)) + int(math.floor(v / size))) % 2 == 0:
         return rec[CHECKER_COLOR1], rec[CHECKER_COLOR1 + 1], rec[CHECKER_COLOR1 + 2]
     return rec[CHECKER_COLOR2], rec[CHECKER_COLOR2 + 1], rec[CHECKER_COLOR2 + 2]
+
+
+@njit(cache=True, error_model="numpy")
+def texture_checker3d(table, row, texels, u, v, position):
+    """Checker3D.color_at: colour1 where floor(x / size) + floor(y / size) + floor(z / size)
+    of the point (scaled, moved by the book's epsilon) is even."""
+    rec = table[row]
+    p = scale(position, rec[CHECKER3D_SCALE])
+    eps = lit(CHECKER3D_EPSILON, position[0])
+    size = rec[CHECKER3D_SIZE]
+    cells = (int(math.floor((p[0] + eps) / size)) + int(math.floor((p[1] + eps) / size))
+             + int(math.floor((p[2] + eps) / size)))
+    if cells % 2 == 0:
+        return rec[CHECKER3D_COLOR1], rec[CHECKER3D_COLOR1 + 1], rec[CHECKER3D_COLOR1 + 2]
+    return rec[CHECKER3D_COLOR2], rec[CHECKER3D_COLOR2 + 1], rec[CHECKER3D_COLOR2 + 2]
+
+
+@njit(cache=True, error_model="numpy")
+def texture_fbm_texture(table, row, texels, u, v, position):
+    """FBmTexture.color_at: value_fbm mapped to [min_value, max_value] times the colour, red
+    outside [0, 1]."""
+    rec = table[row]
+    p = scale(position, rec[FBM_SCALE])
+    value = row_fbm(rec, FBM_NOISE, p)
+    value = rec[FBM_MIN] + (rec[FBM_MAX] - rec[FBM_MIN]) * value
+    zero = lit(0.0, value)
+    one = lit(1.0, value)
+    if value < zero or value > one:
+        return one, zero, zero
+    return scale(load3(rec, FBM_COLOR), value)
+
+
+@njit(cache=True, error_model="numpy")
+def texture_wrapped_fbm_texture(table, row, texels, u, v, position):
+    """WrappedFBmTexture.color_at: the fractional part of expansion_number value_fbm."""
+    rec = table[row]
+    p = scale(position, rec[WRAPPED_SCALE])
+    noise = rec[WRAPPED_EXPANSION] * row_fbm(rec, WRAPPED_NOISE, p)
+    value = noise - np.floor(noise)
+    value = rec[WRAPPED_MIN] + (rec[WRAPPED_MAX] - rec[WRAPPED_MIN]) * value
+    return scale(load3(rec, WRAPPED_COLOR), value)
+
+
+@njit(cache=True, error_model="numpy")
+def texture_ramp_fbm_texture(table, row, texels, u, v, position):
+    """RampFBmTexture.color_at: the ramp's entry int(u (n - 1)), u = (1 + sin(y + a fbm)) / 2."""
+    rec = table[row]
+    p = scale(position, rec[RAMP_SCALE])
+    noise = row_fbm(rec, RAMP_NOISE, p)
+    y = p[1] + rec[RAMP_PERTURBATION] * noise
+    s = (lit(1.0, y) + math.sin(y)) / lit(2.0, y)
+    k = 3 * (int(rec[RAMP_OFFSET]) + int(s * (rec[RAMP_WIDTH] - lit(1.0, y))))
+    return texels[k], texels[k + 1], texels[k + 2]
+
+
+@njit(cache=True, error_model="numpy")
+def smooth_step(a, b, x):
+    """rtfgu.textures.wood.smooth_step (a, b: Python floats, x of the kernel's precision)."""
+    if x < lit(a, x):
+        return lit(0.0, x)
+    if x >= lit(b, x):
+        return lit(1.0, x)
+    y = (x - lit(a, x)) / (lit(b, x) - lit(a, x))
+    return y * y * (lit(3.0, x) - lit(2.0, x) * y)
+
+
+@njit(cache=True, error_model="numpy")
+def smooth_pulse_train(e0, e1, e2, e3, period, x):
+    """rtfgu.textures.wood.smooth_pulse_train with the book's mod."""
+    b = lit(period, x)
+    n = int(x / b)
+    x = x - lit(n, x) * b
+    if x < lit(0.0, x):
+        x += b
+    return smooth_step(e0, e1, x) - smooth_step(e2, e3, x)
+
+
+@njit(cache=True, error_model="numpy")
+def texture_wood(table, row, texels, u, v, position):
+    """Wood.color_at, operation for operation."""
+    rec = table[row]
+    p = scale(position, rec[WOOD_SCALE])
+    noise = int(rec[WOOD_NOISE])
+    octaves = int(rec[WOOD_NOISE + 1])
+    offset3 = vector_fbm(noise, octaves, rec[WOOD_NOISE + 2], rec[WOOD_NOISE + 3],
+                         scale(p, rec[WOOD_RING_NOISE_FREQUENCY]))
+    ring_point = add(p, scale(offset3, rec[WOOD_RING_NOISE]))
+    zero = lit(0.0, p[0])
+    one = lit(1.0, p[0])
+    wobble = scale(vector_noise(noise, (zero, zero, p[1] * rec[WOOD_TRUNK_WOBBLE_FREQUENCY])), rec[WOOD_TRUNK_WOBBLE])
+    rx = ring_point[0] + wobble[0]
+    ry = ring_point[1]
+    rz = ring_point[2] + wobble[2]
+    r = math.sqrt(rx * rx + rz * rz) * rec[WOOD_RING_FREQUENCY]
+    f = rec[WOOD_ANGULAR_WOBBLE_FREQUENCY]
+    r += rec[WOOD_ANGULAR_WOBBLE] * smooth_step(0.0, 5.0, r) * value_noise(
+        noise, (f * rx, f * ry * lit(0.1, r), f * rz))
+    r += rec[WOOD_RING_UNEVENESS] * value_noise(noise, (r, r, r))
+    in_ring = smooth_pulse_train(0.1, 0.55, 0.7, 0.95, 1.0, r)
+    gx = p[0] * rec[WOOD_GRAIN_FREQUENCY]
+    gy = p[1] * rec[WOOD_GRAIN_FREQUENCY] * lit(0.05, r)
+    gz = p[2] * rec[WOOD_GRAIN_FREQUENCY]
+    dpgrain = lit(0.2, r)
+    grain = zero
+    amplitude = one
+    for i in range(2):
+        grain_valid = one - smooth_step(0.2, 0.6, dpgrain)
+        if grain_valid > zero:
+            g = grain_valid * value_noise(noise, (gx, gy, gz))
+            g *= lit(0.3, r) + lit(0.7, r) * in_ring
+            g = min(max(lit(0.8, r) - g, zero), one)
+            g = rec[WOOD_GRAINY] * smooth_step(0.5, 1.0, g * g)
+            if i == 0:
+                in_ring *= one - lit(0.4, r) * grain_valid
+            grain = amplitude * max(grain, g)
+        gx = lit(2.0, r) * gx
+        gy = lit(2.0, r) * gy
+        gz = lit(2.0, r) * gz
+        dpgrain *= lit(2.0, r)
+        amplitude *= lit(0.5, r)
+    final_value = (one - grain) * (in_ring * rec[WOOD_RINGY]) + grain * one
+    return add(scale(load3(rec, WOOD_LIGHT), one - final_value), scale(load3(rec, WOOD_DARK), final_value))

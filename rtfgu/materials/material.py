@@ -137,7 +137,7 @@ class Material:
             return cd
         if cd is None:
             return shape.color
-        return cd.color_at(*shape.texcoord(position))
+        return cd.color_at(shape, position)
 
     specular = Float3(0.0)
     shininess = 0.0

@@ -93,10 +93,13 @@ def pieces(features, formula: str = "slide") -> list:
             out += [(helper, helper) for helper in kind.wgsl_helpers]
             out.append((kind.wgsl_file, kind.formula_file(chosen)))
     if trace and "textures" in f:
-        out.append(("texcoord.wgsl", "texcoord.wgsl"))
+        if "texcoord" in f:
+            out.append(("texcoord.wgsl", "texcoord.wgsl"))
+        used = []
         for kind in TEXTURES:
             if kind.name in f:
-                out.append((kind.name + ".wgsl", kind.name + ".wgsl"))
+                used += [piece for piece in kind.uses if piece not in used] + [kind.name + ".wgsl"]
+        out += [(piece, piece) for piece in used]
     if sampled_lights:
         out.append(("light_sample.wgsl", "light_sample.wgsl"))
     if trace and _lit(f):
@@ -135,7 +138,8 @@ def piece_names() -> list:
     names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
     names += ["concentric_map.wgsl"]
     names += [name for kind in SHAPES for name in kind.wgsl_helpers + (kind.wgsl_file,)]
-    names += ["texcoord.wgsl"] + [kind.name + ".wgsl" for kind in TEXTURES]
+    names += ["texcoord.wgsl"] + sorted({piece for kind in TEXTURES for piece in kind.uses})
+    names += [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["light_sample.wgsl", "lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]
     names += [kind.name + ".wgsl" for kind in SHADERS if kind.name != "base_color"]
     return names + ["shade.wgsl", "intersect_scene.wgsl", "environment.wgsl", "hemisphere_map.wgsl",
@@ -371,7 +375,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
                 wanted.append(("mesh_faces", "array<vec4i>", mesh.faces, False))
                 if mesh.normals is not None:
                     wanted.append(("mesh_normals", "array<f32>", mesh.normals, False))
-                if mesh.uvs is not None and "textures" in features:
+                if mesh.uvs is not None and "texcoord" in features:
                     wanted.append(("mesh_uvs", "array<f32>", mesh.uvs, False))
                 wanted.append(("bvh_nodes", "array<BVHNode>", mesh.bvh.nodes, False))
                 continue

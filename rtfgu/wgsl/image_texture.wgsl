@@ -20,11 +20,42 @@ fn texel(t: ImageTexture, i: i32, j: i32) -> vec3f
     return vec3f(texels[k], texels[k + 1u], texels[k + 2u]);
 }
 
-fn texture_image_texture(row: u32, uv: vec2f) -> vec3f
+// The mapping's (u, v) of the point p (rtfgu.registry.MAPPING_IDS; Suffern ch. 29), each
+// mapping assembled only into a scene that uses it.
+fn mapped_coordinates(mapping: i32, p: vec3f) -> vec2f
+{
+    // #if spherical_map
+    if (mapping == 0) {
+        return spherical_map(p);
+    }
+    // #endif
+    // #if cylindrical_map
+    if (mapping == 1) {
+        return cylindrical_map(p);
+    }
+    // #endif
+    // #if rectangular_map
+    if (mapping == 2) {
+        return rectangular_map(p);
+    }
+    // #endif
+    // #if light_probe|panoramic
+    if (mapping >= 3) {
+        return light_probe(p, mapping == 4);
+    }
+    // #endif
+    return vec2f(0.0);
+}
+
+fn texture_image_texture(row: u32, uv: vec2f, p: vec3f) -> vec3f
 {
     let t = image_textures[row];
-    var u = uv.x * t.scale;
-    var v = uv.y * t.scale;
+    var st = uv;
+    if (t.mapping_id >= 0.0) {
+        st = mapped_coordinates(i32(t.mapping_id), p);
+    }
+    var u = st.x * t.scale;
+    var v = st.y * t.scale;
     if (u32(t.address_mode) == 0u) {
         u = u - floor(u);
         v = v - floor(v);

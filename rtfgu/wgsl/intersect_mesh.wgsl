@@ -5,7 +5,7 @@
 //   mesh_faces     vec4i per face: [i0, i1, i2, place in Scene.shapes], in BVH leaf order
 //   mesh_normals   3 floats per vertex (zero for a flat mesh's), only if a mesh is smooth
 //   mesh_uvs       (u, v, 1) per vertex ((0, 0, 0) for a mesh without uvs), only if a mesh
-//                  has uvs and the scene has textures
+//                  has uvs and a texture of the scene reads (u, v)
 //   bvh_nodes      the BVH (rtfgu.accelerators.flat_bvh): a leaf has b = its face count and
 //                  a = its first face; an inner node b = 0 and its children at a and a + 1.
 // With the feature bvh_spheres the BVH holds the spheres too: a row [-1, row in spheres, 0,
@@ -136,7 +136,7 @@ fn face_frame(f: u32) -> array<vec3f, 3>
     return array<vec3f, 3>(v0, mesh_vertex(face.y) - v0, mesh_vertex(face.z) - v0);
 }
 
-// #if smooth_mesh|textures
+// #if smooth_mesh|texcoord
 // The barycentric (beta, gamma) of p on face f (Triangle.texcoord).
 fn face_barycentrics(f: u32, p: vec3f) -> vec2f
 {
@@ -173,7 +173,7 @@ fn mesh_normal_at(i: i32) -> vec3f
 }
 // #endif
 
-// #if textures
+// #if texcoord
 // MeshTriangle.texcoord: the barycentrics, or with uvs the corners' (u, v) interpolated with
 // them (Suffern's UV mesh triangles).
 fn texcoord_mesh(p: vec3f, f: u32) -> vec2f

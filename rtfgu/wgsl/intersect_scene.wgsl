@@ -17,10 +17,14 @@ fn set_material(hit: ptr<function, HitInfo>, k: u32, kind: i32, row: u32)
     // #if textures
     // A texture's colour at the hit replaces the shape's (rtfgu.scene.Scene.intersect).
     if (m.texture >= 0.0) {
+        // #if texcoord
         let uv = shape_texcoord(kind, row, (*hit).position);
+        // #else
+        let uv = vec2f(0.0);      // only solid textures: they read the point
+        // #endif
         // #each texture
         if (i32(m.texture) == $ID) {
-            (*hit).color = texture_$kind(u32(m.texture_row), uv);
+            (*hit).color = texture_$kind(u32(m.texture_row), uv, (*hit).position);
         }
         // #end
     }
