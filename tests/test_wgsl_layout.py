@@ -190,3 +190,19 @@ def test_id_constants_come_from_the_layout():
         assert "const %s: i32 = %d;" % (name.upper(), shader_id) in text
     assert "const FAR = %rf;" % float(layout.FAR) in text
     assert "const PI = %rf;" % math.pi in text
+
+
+def test_a_scene_with_many_tables_keeps_to_webgpus_uniform_buffer_limit():
+    """The noise scene binds more small tables than WebGPU's 12 uniform buffers per stage
+    (Chromium refuses the pipeline otherwise): the largest go to storage, the rest stay."""
+    from rtfgu.layout import compile_scene
+    from rtfgu.scenes import SCENES
+    from rtfgu.wgsl.assemble import MAX_UNIFORM_BUFFERS, assemble
+
+    program = assemble(compile_scene(SCENES["suffern_31_noise"](), "float32"))
+    uniform = [b for b in program.bindings if b.kind == "uniform"]
+    assert len(uniform) + 1 <= MAX_UNIFORM_BUFFERS            # + the Uniforms at binding 0
+    moved = [b for b in program.bindings if b.kind == "storage" and b.size <= 65536
+             and b.name not in ("mesh_vertices", "mesh_faces", "mesh_normals", "mesh_uvs", "bvh_nodes")]
+    assert moved and min(b.size for b in moved) >= max(b.size for b in uniform if b.name != "camera")
+    assert len(uniform) + 1 == MAX_UNIFORM_BUFFERS             # only as many as needed moved

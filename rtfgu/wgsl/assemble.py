@@ -24,6 +24,7 @@ Only counts and kinds go into the program text; the scene's numbers go into buff
 """
 from __future__ import annotations
 
+import dataclasses
 import re
 from dataclasses import dataclass, field
 from importlib import resources
@@ -182,6 +183,8 @@ def each_kinds(flat, features, formula):
 STORAGE_ONLY = ("samples", "shuffled", "own_samples", "own_shuffled", "texels", "environment")
 # The largest uniform buffer binding WebGPU guarantees (maxUniformBufferBindingSize).
 MAX_UNIFORM_BYTES = 65536
+# WebGPU's default maxUniformBuffersPerShaderStage (the adapters here and Chromium's hold to it).
+MAX_UNIFORM_BUFFERS = 12
 SCENE_BUFFER_KINDS = ("uniform", "storage")
 
 
@@ -417,7 +420,12 @@ def _bindings(flat, features, scene_buffer: str) -> list:
         else:
             kind = scene_buffer if size <= MAX_UNIFORM_BYTES else "storage"
         result.append(Binding(number, name, wgsl_type, kind, size, is_index))
-    return result
+    # WebGPU's default limit of uniform buffers per shader stage counts ``uniforms`` too: the
+    # largest of the others go to storage until the rest fit (a browser holds to the default).
+    uniform = sorted((b for b in result if b.kind == "uniform" and b.name != "camera"), key=lambda b: -b.size)
+    excess = len(uniform) + 2 - MAX_UNIFORM_BUFFERS
+    moved = {b.name for b in uniform[:max(0, excess)]}
+    return [dataclasses.replace(b, kind="storage") if b.name in moved else b for b in result]
 
 
 def _header(flat, features, bindings) -> str:
