@@ -31,10 +31,14 @@ from dataclasses import dataclass
 from .lights import AmbientOccluder, AreaLight, Directional, PointLight
 from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR,
                                  PHONG, REFLECTIVE, TRANSPARENT)
+from .shapes.annulus import Annulus
 from .shapes.box import Box
+from .shapes.concave_part_sphere import ConcavePartSphere
+from .shapes.convex_part_sphere import ConvexPartSphere
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.open_cylinder import OpenCylinder
+from .shapes.open_part_cylinder import OpenPartCylinder
 from .shapes.plane import Plane
 from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
@@ -64,7 +68,8 @@ class ShapeKind(_Rows):
     formulas: tuple = ("slide",)        # the intersection formulas the kernels and WGSL provide
     numba_module: str = "rtfgu.kernels.intersect"
     from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
-    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
+    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls,
+                                        # or helper pieces (next_after: next_after.wgsl)
     faces_ray: bool = False             # the normal depends on the ray's direction (Shape.hit_normal)
     # A mesh kind: its rows are the faces of meshes, found through the scene's BVH (which
     # may hold the spheres too, rtfgu.layout.FlatMesh) and not by a loop over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
@@ -127,6 +132,9 @@ class LightKind(_Rows):
         return self.cls.drawn_by_ray_casting
 
 
+PART_SPHERE_FIELDS = (("center", 3), ("radius", 1), ("phi_min", 1), ("phi_max", 1), ("cos_theta_min", 1),
+                      ("cos_theta_max", 1))
+
 SHAPES = (
     ShapeKind("plane", Plane, (("point", 3), ("normal", 3))),
     ShapeKind("triangle", Triangle, (("v0", 3), ("e0", 3), ("e1", 3), ("n", 3))),
@@ -136,8 +144,20 @@ SHAPES = (
     ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3)), uses=("plane",)),
     ShapeKind("box", Box, (("p0", 3), ("p1", 3))),
     # Both sides of the open cylinder are seen: its normal turns toward the ray.
-    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere",),
+    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere", "next_after"),
               faces_ray=True),
+    # Suffern's part objects (ch. 19): the sphere's, the open cylinder's and the plane's tests
+    # with an angle or radius test (rtfgu/kernels/part_objects.py).
+    ShapeKind("convex_part_sphere", ConvexPartSphere, PART_SPHERE_FIELDS, numba_module="rtfgu.kernels.part_objects",
+              uses=("sphere", "next_after")),
+    ShapeKind("concave_part_sphere", ConcavePartSphere, PART_SPHERE_FIELDS,
+              numba_module="rtfgu.kernels.part_objects", uses=("sphere", "next_after", "convex_part_sphere")),
+    ShapeKind("open_part_cylinder", OpenPartCylinder, (("y0", 1), ("y1", 1), ("radius", 1), ("phi_min", 1),
+                                                        ("phi_max", 1)),
+              numba_module="rtfgu.kernels.part_objects", uses=("sphere", "next_after", "open_cylinder"),
+              faces_ray=True),
+    ShapeKind("annulus", Annulus, (("center", 3), ("normal", 3), ("inner_radius", 1), ("outer_radius", 1)),
+              numba_module="rtfgu.kernels.part_objects", uses=("plane",)),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
 )

@@ -18,6 +18,8 @@ from .paths import Path, slide_spawn
 
 
 def _piece(kind: str, formula: str) -> str:
+    if kind not in SHAPE_BY_NAME:      # a helper piece a kind uses (rtfgu.wgsl.assemble)
+        return kind + ".wgsl"
     return SHAPE_BY_NAME[kind].wgsl_file if formula == "slide" else "robust_%s.wgsl" % kind
 
 
