@@ -10,6 +10,9 @@ show them: an open cylinder seen from above, so that its inside shows through th
 boxes, a rectangular floor and a rectangular mirror standing behind them, lit by one point
 light and traced by Whitted.
 
+``suffern_19_parts``: Suffern ch. 19's part objects in compounds: a FlatRimmedBowl, a
+SolidCylinder and a sphere shell with a quarter cut away (its inside a ConcavePartSphere).
+
 ``suffern_17_occlusion_regular`` and ``suffern_17_occlusion_multi_jittered``: Suffern ch.
 17's comparison of samplers for an AmbientOccluder's directions (set_sampler): the same 16
 directions at every point (Regular) band the shadow under the sphere; multi-jittered sets,
@@ -40,9 +43,14 @@ from ..sampling.sampler import sampler_of
 from ..tracers import PathTrace, Whitted
 from ..scene import Scene
 from ..shapes.box import Box
+from ..shapes.compound import Compound
+from ..shapes.concave_part_sphere import ConcavePartSphere
+from ..shapes.convex_part_sphere import ConvexPartSphere
 from ..shapes.disk import Disk
+from ..shapes.flat_rimmed_bowl import FlatRimmedBowl
 from ..shapes.open_cylinder import OpenCylinder
 from ..shapes.rectangle import Rectangle
+from ..shapes.solid_cylinder import SolidCylinder
 from ..shapes.sphere import Sphere
 from .registry import homework
 
@@ -82,6 +90,30 @@ def suffern_19_objects() -> Scene:
                             Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
     scene.shapes.append(Box(Float3(-2.0, 0.0, 0.3), Float3(-1.2, 0.45, 1.1), Float3(0.2, 0.6, 0.2), Matte()))
     scene.lights.append(PointLight(Float3(-2.0, 5.0, 3.0), Float3(10 * math.pi, 10 * math.pi, 10 * math.pi)))
+    scene.tracer = Whitted()
+    return scene
+
+
+@homework(512, 512)
+def suffern_19_parts() -> Scene:
+    """Suffern ch. 19's part and compound objects: a FlatRimmedBowl (a ConvexPartSphere
+    outside, a ConcavePartSphere inside, an Annulus rim), a SolidCylinder (an OpenCylinder and
+    two Disks) and a sphere with a quarter cut away, shown as a shell whose inside is a
+    ConcavePartSphere, on a disk floor under one point light, traced by Whitted."""
+    camera = PinholeCamera(Float3(0.0, 3.4, 7.0), Float3(0.0, 0.5, 0.0), Float3(0.0, 1.0, 0.0), d=1.5)
+    scene = Scene(camera)
+    scene.background = Float3(0.1, 0.3, 0.6)
+    scene.shapes.append(Disk(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), 4.0, Float3(0.8, 0.8, 0.75), Matte()))
+    scene.shapes.append(FlatRimmedBowl(Float3(-1.5, 0.9, 0.2), 0.8, 0.9, Float3(0.9, 0.5, 0.1),
+                                       Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
+    scene.shapes.append(SolidCylinder(0.0, 1.2, 0.5, Float3(0.2, 0.6, 0.2), Matte()))
+    # The shell: every azimuth but 270..360 degrees (x < 0, z > 0, toward the camera).
+    shell = Compound()
+    shell.add_object(ConvexPartSphere(Float3(1.5, 0.8, 0.2), 0.8, 0.0, 270.0, 0.0, 180.0, Float3(0.1, 0.3, 0.8)))
+    shell.add_object(ConcavePartSphere(Float3(1.5, 0.8, 0.2), 0.72, 0.0, 270.0, 0.0, 180.0, Float3(0.9, 0.85, 0.2)))
+    shell.set_material(Matte())
+    scene.shapes.append(shell)
+    scene.lights.append(PointLight(Float3(-2.0, 5.0, 4.0), Float3(12 * math.pi, 12 * math.pi, 12 * math.pi)))
     scene.tracer = Whitted()
     return scene
 
