@@ -9,6 +9,7 @@ import math
 import numpy as np
 import pytest
 
+import rtfgu
 from rtfgu import Float3, Matte, OrthographicCamera, Phong, Ray, Scene, Sphere
 from rtfgu.hit_info import HitInfo
 from rtfgu.layout import compile_scene
@@ -123,3 +124,16 @@ def test_compound_on_every_path(path):
         first = bounce[0]
         assert (first.shape, first.kind) == (shape, kind), "%s: ray %s hit %r" % (path.label, ray, first)
         assert first.t == pytest.approx(t, rel=1e-6) and first.normal == pytest.approx(normal, abs=1e-6)
+
+
+def test_path_trace_renders_a_compound_on_every_path(path):
+    """PathTrace checks a compound's leaves' materials, and a compound path traces as its leaves."""
+    from rtfgu import PathTrace, PinholeCamera, PointLight
+    scene = Scene(PinholeCamera(Float3(0.0, 2.0, 4.0), Float3(0.0, 0.5, 0.0), Float3(0.0, 1.0, 0.0), d=1.5))
+    scene.shapes = [SolidCylinder(0.0, 1.0, 0.5, GREEN, Matte(ka=0.0, kd=1.0))]
+    scene.lights = [PointLight(Float3(1.0, 3.0, 2.0), Float3(20.0))]
+    scene.tracer = PathTrace(max_depth=2)
+    flat = _scene(*scene.shapes[0].objects)
+    flat.camera, flat.lights, flat.tracer = scene.camera, scene.lights, scene.tracer
+    a, b = (rtfgu.render(s, 8, 8, backend=path.backend, precision=path.precision, spp=2) for s in (scene, flat))
+    assert np.array_equal(a, b) and a.max() > 0.0
