@@ -18,6 +18,7 @@ from rtfgu.shapes.convex_part_sphere import ConvexPartSphere
 from rtfgu.shapes.flat_rimmed_bowl import FlatRimmedBowl
 from rtfgu.shapes.open_part_cylinder import OpenPartCylinder
 from rtfgu.shapes.solid_cylinder import SolidCylinder
+from rtfgu.shapes.thick_ring import ThickRing
 
 NAN = math.nan
 INF = math.inf
@@ -202,10 +203,13 @@ def test_annulus_fields(args, names):
     (lambda: FlatRimmedBowl((0, 0, 0), 1.0, 0.5, RED), ("FlatRimmedBowl.inner_radius", "FlatRimmedBowl.outer_radius")),
     (lambda: FlatRimmedBowl((0, 0, 0), 0.0, 0.5, RED), ("FlatRimmedBowl.inner_radius",)),
     (lambda: FlatRimmedBowl((NAN, 0, 0), 0.4, 0.5, RED), ("FlatRimmedBowl.center",)),
+    (lambda: ThickRing(0.0, 1.0, 1.0, 0.5, RED), ("ThickRing.inner_radius", "ThickRing.outer_radius")),
+    (lambda: ThickRing(1.0, 0.0, 0.5, 1.0, RED), ("ThickRing.bottom", "ThickRing.top")),
+    (lambda: ThickRing(0.0, 1.0, 0.0, 1.0, RED), ("ThickRing.inner_radius",)),
     (lambda: Compound().add_object("a sphere"), ("Compound.add_object", "Shape")),
     (lambda: Compound().set_material(None), ("Compound.set_material", "Material")),
 ], ids=["solid_cylinder_reversed", "solid_cylinder_radius", "bowl_radii_reversed", "bowl_inner_zero",
-        "bowl_center_nan", "compound_non_shape", "compound_non_material"])
+        "bowl_center_nan", "ring_radii_reversed", "ring_reversed", "ring_inner_zero", "compound_non_shape", "compound_non_material"])
 def test_compound_objects(make, names):
     with raises_naming(*names):
         make()

@@ -17,6 +17,7 @@ from rtfgu.shapes.compound import Compound
 from rtfgu.shapes.disk import Disk
 from rtfgu.shapes.flat_rimmed_bowl import FlatRimmedBowl
 from rtfgu.shapes.solid_cylinder import SolidCylinder
+from rtfgu.shapes.thick_ring import ThickRing
 
 RED, BLUE, GREEN = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0), Float3(0.0, 1.0, 0.0)
 DOWN = Float3(0.0, -1.0, 0.0)
@@ -137,3 +138,25 @@ def test_path_trace_renders_a_compound_on_every_path(path):
     flat.camera, flat.lights, flat.tracer = scene.camera, scene.lights, scene.tracer
     a, b = (rtfgu.render(s, 8, 8, backend=path.backend, precision=path.precision, spp=2) for s in (scene, flat))
     assert np.array_equal(a, b) and a.max() > 0.0
+
+
+# Rays at a ThickRing (y 0..1, radii 1 and 2; leaves: the inner wall, the outer wall, the
+# bottom and the top annulus), each with the leaf it hits first: the top from above, nothing
+# through the hole, the inner wall from the hole (its normal toward the ray), the outer wall.
+RING_RAYS = [
+    (((1.5, 3.0, 0.0), (0.0, -1.0, 0.0), 0.0, math.inf), 3, "annulus", 2.0, (0.0, 1.0, 0.0)),
+    (((0.5, 3.0, 0.0), (0.0, -1.0, 0.0), 0.0, math.inf), None, None, None, None),
+    (((0.0, 0.5, 0.0), (1.0, 0.0, 0.0), 0.0, math.inf), 0, "open_cylinder", 1.0, (-1.0, 0.0, 0.0)),
+    (((5.0, 0.5, 0.0), (-1.0, 0.0, 0.0), 0.0, math.inf), 1, "open_cylinder", 3.0, (1.0, 0.0, 0.0)),
+    (((1.5, -2.0, 0.0), (0.0, 1.0, 0.0), 0.0, math.inf), 2, "annulus", 2.0, (0.0, -1.0, 0.0)),
+]
+
+
+def test_thick_ring_on_every_path(path):
+    scene = _scene(ThickRing(0.0, 1.0, 1.0, 2.0, GREEN, Matte()))
+    bounces = path.trace(scene, [ray for ray, *_ in RING_RAYS])
+    for (ray, shape, kind, t, normal), bounce in zip(RING_RAYS, bounces):
+        first = bounce[0]
+        assert (first.shape, first.kind) == (shape, kind), "%s: ray %s hit %r" % (path.label, ray, first)
+        if shape is not None:
+            assert first.t == pytest.approx(t, rel=1e-6) and first.normal == pytest.approx(normal, abs=1e-6)
