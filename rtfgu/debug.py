@@ -34,6 +34,7 @@ from .float3 import Float3
 from .materials.material import SHADER_NAMES
 from .ray import Ray
 from .registry import SHAPES, shape_kind_of
+from .shapes.compound import Compound
 from .options import DEFAULT_FORMULAS, FORMULAS
 from .tracers.whitted import Whitted
 
@@ -99,6 +100,14 @@ def _miss(origin, direction, color, shader="background") -> Bounce:
     return Bounce(_f3(origin), _f3(direction), None, None, None, None, shader, _f3(color))
 
 
+def _numbered(scene) -> list:
+    """The shapes as the flat paths number them: a Compound's leaves in its place."""
+    out = []
+    for shape in scene.shapes:
+        out += shape.leaves() if isinstance(shape, Compound) else [shape]
+    return out
+
+
 class _Logged:
     """A shape of Scene.shapes that notes its place there whenever it reports a hit."""
 
@@ -108,7 +117,10 @@ class _Logged:
     def intersect_p(self, ray) -> bool:
         found = self._shape.intersect_p(ray)
         if found:
-            self._log.append(self._index)
+            index = self._index
+            if isinstance(self._shape, Compound):   # numbered as its leaves: the place of the leaf hit
+                index += self._shape.leaves().index(self._shape.hit_object)
+            self._log.append(index)
         return found
 
     def __getattr__(self, name):
@@ -138,8 +150,12 @@ class _Recording(Whitted):
         super().__init__()
         scene = scene.with_faces()      # a Mesh's faces, each in its place
         self.scene, self.out, self.log = scene, out, []
+        self.numbered = _numbered(scene)
         self.world = copy.copy(scene)
-        self.world.shapes = [_Logged(shape, i, self.log) for i, shape in enumerate(scene.shapes)]
+        self.world.shapes, i = [], 0
+        for shape in scene.shapes:
+            self.world.shapes.append(_Logged(shape, i, self.log))
+            i += len(shape.leaves()) if isinstance(shape, Compound) else 1
         self.world.tracer = self
 
     def trace_ray(self, ray, depth: int = 0) -> Float3:
@@ -156,7 +172,7 @@ class _Recording(Whitted):
         self.world.tracer = _Collect(self.samples_area_lights, sent)
         color = sr.material.shade(sr)
         self.world.tracer = self
-        kind = shape_kind_of(self.scene.shapes[index])[1]
+        kind = shape_kind_of(self.numbered[index])[1]
         self.out.append(_hit(origin, direction, index, kind.name if kind else None, sr.dist, sr.normal,
                              sr.material.shader, color))
         for next_ray in sent:
@@ -189,7 +205,7 @@ def _from_numba(records, miss: str) -> list:
 
 def _from_wgpu(scene, records) -> list:
     # debug_main.wgsl: (origin, t), (direction, shader), (normal, shape), (colour, what)
-    scene = scene.with_faces()      # the shape numbers count a Mesh's faces
+    shapes = _numbered(scene.with_faces())      # the shape numbers count a Mesh's faces
     out = []
     for (origin_t, direction_shader, normal_shape, color_what) in records:
         what = color_what[3]
@@ -197,7 +213,7 @@ def _from_wgpu(scene, records) -> list:
             break
         if what == 1.0:
             index = int(normal_shape[3])
-            kind = shape_kind_of(scene.shapes[index])[1] if 0 <= index < len(scene.shapes) else None
+            kind = shape_kind_of(shapes[index])[1] if 0 <= index < len(shapes) else None
             out.append(_hit(origin_t[:3], direction_shader[:3], index, kind.name if kind else None,
                             origin_t[3], normal_shape[:3], direction_shader[3], color_what[:3]))
         else:

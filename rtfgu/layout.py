@@ -377,6 +377,19 @@ def compile_camera(camera) -> tuple[int, np.ndarray]:
     return kind, np.array(pack_row(record, source), dtype=np.float64).reshape(CAMERA_ROWS, 4)
 
 
+def _leaves(shapes):
+    """(where, shape) of Scene.shapes with each Compound (rtfgu.shapes.compound) replaced by its
+    leaves, in order: a compound has no row of its own, its children take its place."""
+    from .shapes.compound import Compound
+
+    for p, shape in enumerate(shapes):
+        if isinstance(shape, Compound):
+            for k, child in enumerate(shape.leaves()):
+                yield "Scene.shapes[%d] (leaf %d of its %s)" % (p, k, type(shape).__name__), child
+        else:
+            yield "Scene.shapes[%d]" % p, shape
+
+
 def compile_scene(scene, precision: str = "float64") -> FlatScene:
     """Validate ``scene`` and lay it out in ``precision`` ("float64" or "float32")."""
     if precision not in DTYPES:
@@ -455,28 +468,28 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         return material_rows[key]
 
     i = 0   # the shape's index: its place in Scene.shapes, a Mesh counted as its faces
-    for p, shape in enumerate(scene.shapes):
+    for where, shape in _leaves(scene.shapes):
         if isinstance(shape, Mesh):
             # Its faces, m shapes from index i on, packed from its arrays (compile_mesh).
             mesh_faces.append((i, shape))
             places = np.empty(shape.num_triangles, dtype=np.int64)
             for face, m, faces in shape.surfaces():
-                places[faces] = material_row("Scene.shapes[%d].faces[%d]" % (p, face), m, shape.color(face))
+                places[faces] = material_row("%s.faces[%d]" % (where, face), m, shape.color(face))
             material_of_shape.append(places)
             features.add(MESH_KIND.name)
             i += shape.num_triangles
             continue
         _, kind = shape_kind_of(shape)
         if kind is None:
-            raise ValueError("Scene.shapes[%d]: the flat layout knows %s, got %s"
-                             % (p, ", ".join(k.record for k in SHAPES), type(shape).__name__))
+            raise ValueError("%s: the flat layout knows %s, got %s"
+                             % (where, ", ".join(k.record for k in SHAPES), type(shape).__name__))
         if kind.bvh:
             mesh_faces.append((i, shape))
         else:
             rows[kind.name][0].append(pack_row(kind.record, shape))
         rows[kind.name][1].append(i)
         features.add(kind.name)
-        material_of_shape.append(material_row("Scene.shapes[%d]" % p, shape.material, shape.color))
+        material_of_shape.append(material_row(where, shape.material, shape.color))
         i += 1
     material_of_shape = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int64))
                                         for x in material_of_shape] or [np.zeros(0, dtype=np.int64)])

@@ -19,8 +19,8 @@ A shape kind named ``disk`` (``ShapeKind("disk", Disk, fields)``) promises:
 * WGSL: the file ``intersect_disk.wgsl`` with
   ``fn intersect_disk(r: Ray, hit: ptr<function, HitInfo>, <fields>) -> bool`` filling
   the hit as the 02562 slides do; a formula other than "slide" is the file
-  ``<formula>_disk.wgsl`` defining the same function; ``wgsl_helpers`` names pieces of no
-  kind that the function calls (the torus's ``solve_quartic.wgsl``), joined before it.
+  ``<formula>_disk.wgsl`` defining the same function; ``uses`` names the kinds and the
+  helper pieces (the torus's ``solve_quartic``: ``solve_quartic.wgsl``) it calls.
 
 docs/adding_a_shape.md walks through it. Nothing here imports numba or wgpu: the kernels
 and the WGSL files are named, and loaded only by the paths that use them.
@@ -32,10 +32,14 @@ from dataclasses import dataclass
 from .lights import AmbientOccluder, AreaLight, Directional, PointLight
 from .materials.material import (BASE_COLOR, DIELECTRIC, EMISSIVE, GLOSSY, GLOSSY_REFLECTOR, LAMBERTIAN, MIRROR,
                                  PHONG, REFLECTIVE, TRANSPARENT)
+from .shapes.annulus import Annulus
 from .shapes.box import Box
+from .shapes.concave_part_sphere import ConcavePartSphere
+from .shapes.convex_part_sphere import ConvexPartSphere
 from .shapes.disk import Disk
 from .shapes.mesh import MeshTriangle
 from .shapes.open_cylinder import OpenCylinder
+from .shapes.open_part_cylinder import OpenPartCylinder
 from .shapes.plane import Plane
 from .shapes.rectangle import Rectangle
 from .shapes.sphere import Sphere
@@ -66,9 +70,9 @@ class ShapeKind(_Rows):
     formulas: tuple = ("slide",)        # the intersection formulas the kernels and WGSL provide
     numba_module: str = "rtfgu.kernels.intersect"
     from_eye: bool = False              # numba: rays from a pinhole eye share per-frame terms
-    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls
+    uses: tuple = ()                    # WGSL: kinds whose intersection functions this one calls,
+                                        # or helper pieces (next_after: next_after.wgsl)
     faces_ray: bool = False             # the normal depends on the ray's direction (Shape.hit_normal)
-    wgsl_helpers: tuple = ()            # WGSL: pieces of no kind its function calls, put before it
     # A mesh kind: its rows are the faces of meshes, found through the scene's BVH (which
     # may hold the spheres too, rtfgu.layout.FlatMesh) and not by a loop over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
     # ``numba_module``, WGSL ``mesh.wgsl``); its arrays are rtfgu.layout.FlatMesh's.
@@ -130,6 +134,9 @@ class LightKind(_Rows):
         return self.cls.drawn_by_ray_casting
 
 
+PART_SPHERE_FIELDS = (("center", 3), ("radius", 1), ("phi_min", 1), ("phi_max", 1), ("cos_theta_min", 1),
+                      ("cos_theta_max", 1))
+
 SHAPES = (
     ShapeKind("plane", Plane, (("point", 3), ("normal", 3))),
     ShapeKind("triangle", Triangle, (("v0", 3), ("e0", 3), ("e1", 3), ("n", 3))),
@@ -139,13 +146,25 @@ SHAPES = (
     ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3)), uses=("plane",)),
     ShapeKind("box", Box, (("p0", 3), ("p1", 3))),
     # Both sides of the open cylinder are seen: its normal turns toward the ray.
-    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere",),
+    ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere", "next_after"),
               faces_ray=True),
+    # Suffern's part objects (ch. 19): the sphere's, the open cylinder's and the plane's tests
+    # with an angle or radius test (rtfgu/kernels/part_objects.py).
+    ShapeKind("convex_part_sphere", ConvexPartSphere, PART_SPHERE_FIELDS, numba_module="rtfgu.kernels.part_objects",
+              uses=("sphere", "next_after")),
+    ShapeKind("concave_part_sphere", ConcavePartSphere, PART_SPHERE_FIELDS,
+              numba_module="rtfgu.kernels.part_objects", uses=("sphere", "next_after", "convex_part_sphere")),
+    ShapeKind("open_part_cylinder", OpenPartCylinder, (("y0", 1), ("y1", 1), ("radius", 1), ("phi_min", 1),
+                                                        ("phi_max", 1)),
+              numba_module="rtfgu.kernels.part_objects", uses=("sphere", "next_after", "open_cylinder"),
+              faces_ray=True),
+    ShapeKind("annulus", Annulus, (("center", 3), ("normal", 3), ("inner_radius", 1), ("outer_radius", 1)),
+              numba_module="rtfgu.kernels.part_objects", uses=("plane",)),
     # Suffern's mesh triangles (rtfgu.shapes.mesh): watertight, through the BVH.
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
     # Suffern's torus: a quartic, solved by Schwarze's closed form (its WGSL piece with it).
     ShapeKind("torus", Torus, (("a", 1), ("b", 1)), numba_module="rtfgu.kernels.torus",
-              wgsl_helpers=("solve_quartic.wgsl",)),
+              uses=("solve_quartic",)),
 )
 ROW_SHAPES = tuple(kind for kind in SHAPES if not kind.bvh)   # the kinds laid out a row per shape
 

@@ -62,12 +62,15 @@ class Scene:
     def intersect(self, ray: Ray, hit: HitInfo) -> bool:
         """``intersect_scene``: the slide's inner loop over the shapes; each hit shrinks
         ray.tmax, so the last shape that reports a hit is the nearest one. The hit records
-        the shape's material and the surface's colour there (Material.color_at)."""
+        the shape's material and the surface's colour there (Material.color_at); for a
+        Compound, those of the child hit."""
         hit_shape = None
         for shape in self.shapes:
             if shape.intersect_p(ray):
                 hit_shape = shape
         if hit_shape is not None:
+            # A Compound (rtfgu.shapes.compound) was hit where its child hit_object was.
+            hit_shape = getattr(hit_shape, "hit_object", None) or hit_shape
             hit.has_hit = True
             hit.dist = ray.tmax
             hit.position = ray(ray.tmax)

@@ -11,6 +11,14 @@ from rtfgu import (AreaLight, Box, Float3, Material, OpenCylinder, OrthographicC
                    Rectangle, Scene, Sphere, Torus, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
+from rtfgu.shapes.annulus import Annulus
+from rtfgu.shapes.compound import Compound
+from rtfgu.shapes.concave_part_sphere import ConcavePartSphere
+from rtfgu.shapes.convex_part_sphere import ConvexPartSphere
+from rtfgu.shapes.flat_rimmed_bowl import FlatRimmedBowl
+from rtfgu.shapes.open_part_cylinder import OpenPartCylinder
+from rtfgu.shapes.solid_cylinder import SolidCylinder
+from rtfgu.shapes.thick_ring import ThickRing
 
 NAN = math.nan
 INF = math.inf
@@ -146,6 +154,80 @@ def test_open_cylinder_heights_and_radius(y0, y1, radius, names):
 def test_torus_radii(a, b, names):
     with raises_naming(*names):
         Torus(a, b, RED)
+
+
+# Suffern's ch. 19 part objects: every field, the angles in degrees within their ranges and in order.
+PART_SPHERE = dict(center=(0, 0, 0), radius=1.0, phi_min=0.0, phi_max=360.0, theta_min=0.0, theta_max=180.0)
+
+
+@pytest.mark.parametrize("cls", [ConvexPartSphere, ConcavePartSphere])
+@pytest.mark.parametrize("changes, names", [
+    (dict(center=(0, NAN, 0)), ("center",)),
+    (dict(radius=0.0), ("radius",)),
+    (dict(radius=-1.0), ("radius",)),
+    (dict(phi_min=-10.0), ("phi_min", "[0, 360]")),
+    (dict(phi_max=361.0), ("phi_max", "[0, 360]")),
+    (dict(phi_min=90.0, phi_max=90.0), ("phi_min", "phi_max")),
+    (dict(phi_min=180.0, phi_max=90.0), ("phi_min", "phi_max")),
+    (dict(phi_max=NAN), ("phi_max",)),
+    (dict(theta_min=-1.0), ("theta_min", "[0, 180]")),
+    (dict(theta_max=270.0), ("theta_max", "[0, 180]")),
+    (dict(theta_min=120.0, theta_max=60.0), ("theta_min", "theta_max")),
+    (dict(theta_max="90"), ("theta_max",)),
+], ids=["center_nan", "radius_zero", "radius_negative", "phi_min_negative", "phi_max_above_360", "phi_equal",
+        "phi_reversed", "phi_max_nan", "theta_min_negative", "theta_max_above_180", "theta_reversed",
+        "theta_max_string"])
+def test_part_sphere_fields(cls, changes, names):
+    args = dict(PART_SPHERE, **changes)
+    with raises_naming(*(cls.__name__ + "." + n if n[0].isalpha() else n for n in names)):
+        cls(args["center"], args["radius"], args["phi_min"], args["phi_max"], args["theta_min"],
+            args["theta_max"], RED)
+
+
+@pytest.mark.parametrize("args, names", [
+    ((0.0, 1.0, 0.0, 0.0, 90.0), ("OpenPartCylinder.radius",)),
+    ((1.0, 0.0, 1.0, 0.0, 90.0), ("OpenPartCylinder.y0", "OpenPartCylinder.y1")),
+    ((NAN, 1.0, 1.0, 0.0, 90.0), ("OpenPartCylinder.y0",)),
+    ((0.0, 1.0, 1.0, -5.0, 90.0), ("OpenPartCylinder.phi_min", "[0, 360]")),
+    ((0.0, 1.0, 1.0, 0.0, 400.0), ("OpenPartCylinder.phi_max", "[0, 360]")),
+    ((0.0, 1.0, 1.0, 90.0, 45.0), ("OpenPartCylinder.phi_min", "OpenPartCylinder.phi_max")),
+], ids=["radius_zero", "y0_above_y1", "y0_nan", "phi_min_negative", "phi_max_above_360", "phi_reversed"])
+def test_open_part_cylinder_fields(args, names):
+    with raises_naming(*names):
+        OpenPartCylinder(*args, RED)
+
+
+@pytest.mark.parametrize("args, names", [
+    (((0, NAN, 0), (0, 1, 0), 0.5, 1.0), ("Annulus.center",)),
+    (((0, 0, 0), (0, 0, 0), 0.5, 1.0), ("Annulus.normal",)),
+    (((0, 0, 0), (0, 1, 0), -0.5, 1.0), ("Annulus.inner_radius",)),
+    (((0, 0, 0), (0, 1, 0), 0.5, 0.0), ("Annulus.outer_radius",)),
+    (((0, 0, 0), (0, 1, 0), 1.5, 1.0), ("Annulus.inner_radius", "Annulus.outer_radius")),
+    (((0, 0, 0), (0, 1, 0), 1.0, 1.0), ("Annulus.inner_radius", "Annulus.outer_radius")),
+    (((0, 0, 0), (0, 1, 0), 0.5, INF), ("Annulus.outer_radius",)),
+], ids=["center_nan", "normal_zero", "inner_negative", "outer_zero", "inner_above_outer", "inner_equals_outer",
+        "outer_inf"])
+def test_annulus_fields(args, names):
+    with raises_naming(*names):
+        Annulus(*args, RED)
+
+
+@pytest.mark.parametrize("make, names", [
+    (lambda: SolidCylinder(1.0, 0.0, 1.0, RED), ("SolidCylinder.bottom", "SolidCylinder.top")),
+    (lambda: SolidCylinder(0.0, 1.0, 0.0, RED), ("SolidCylinder.radius",)),
+    (lambda: FlatRimmedBowl((0, 0, 0), 1.0, 0.5, RED), ("FlatRimmedBowl.inner_radius", "FlatRimmedBowl.outer_radius")),
+    (lambda: FlatRimmedBowl((0, 0, 0), 0.0, 0.5, RED), ("FlatRimmedBowl.inner_radius",)),
+    (lambda: FlatRimmedBowl((NAN, 0, 0), 0.4, 0.5, RED), ("FlatRimmedBowl.center",)),
+    (lambda: ThickRing(0.0, 1.0, 1.0, 0.5, RED), ("ThickRing.inner_radius", "ThickRing.outer_radius")),
+    (lambda: ThickRing(1.0, 0.0, 0.5, 1.0, RED), ("ThickRing.bottom", "ThickRing.top")),
+    (lambda: ThickRing(0.0, 1.0, 0.0, 1.0, RED), ("ThickRing.inner_radius",)),
+    (lambda: Compound().add_object("a sphere"), ("Compound.add_object", "Shape")),
+    (lambda: Compound().set_material(None), ("Compound.set_material", "Material")),
+], ids=["solid_cylinder_reversed", "solid_cylinder_radius", "bowl_radii_reversed", "bowl_inner_zero",
+        "bowl_center_nan", "ring_radii_reversed", "ring_reversed", "ring_inner_zero", "compound_non_shape", "compound_non_material"])
+def test_compound_objects(make, names):
+    with raises_naming(*names):
+        make()
 
 
 def test_area_light_names_the_shapes_it_takes():

@@ -28,7 +28,12 @@ from rtfgu.lights import PointLight
 from rtfgu.materials.matte import KA_02562 as AMBIENT_FRACTION, KD_02562 as DIFFUSE_FRACTION
 from rtfgu.ray import SPAWN_EPSILON
 from rtfgu.registry import SHADERS, SHAPES, shape_kind_of
+from rtfgu.shapes.annulus import Annulus
+from rtfgu.shapes.concave_part_sphere import ConcavePartSphere
+from rtfgu.shapes.convex_part_sphere import ConvexPartSphere
 from rtfgu.shapes.mesh import Mesh
+from rtfgu.shapes.open_part_cylinder import OpenPartCylinder
+from rtfgu.shapes.part import azimuth
 
 INF = math.inf
 # How close a path's number must be to the exact one: a float64 path's to the last few
@@ -134,10 +139,10 @@ def exact_box(shape, case):
     return t, tuple(Fraction(-1 if face < 3 else 1) if k == face % 3 else Fraction(0) for k in range(3))
 
 
-def exact_open_cylinder(shape, case):
+def exact_open_cylinder(shape, case, part=lambda p: True):
     """Suffern's OpenCylinder::hit in fractions: the near root, then the far one, each with
-    its height in [y0, y1]; a ray parallel to the axis misses; the normal (x, 0, z) / r
-    turned toward the ray (-d . n < 0: flipped)."""
+    its height in [y0, y1] (and, for a part, ``part(p)``); a ray parallel to the axis misses;
+    the normal (x, 0, z) / r turned toward the ray (-d . n < 0: flipped)."""
     o, d, r = F(case.origin), F(case.direction), Fraction(shape.radius)
     a = d[0] * d[0] + d[2] * d[2]
     if a == 0:
@@ -149,7 +154,7 @@ def exact_open_cylinder(shape, case):
         return None
     for t in sorted(((-b - exact_sqrt(disc)) / (2 * a), (-b + exact_sqrt(disc)) / (2 * a))):
         p = tuple(oc + t * dc for oc, dc in zip(o, d))
-        if in_range(t, case) and Fraction(shape.y0) <= p[1] <= Fraction(shape.y1):
+        if in_range(t, case) and Fraction(shape.y0) <= p[1] <= Fraction(shape.y1) and part(p):
             n = (p[0] / r, Fraction(0), p[2] / r)
             return t, (tuple(-c for c in n) if dot(d, n) > 0 else n)
     return None
@@ -189,7 +194,7 @@ def exact_triangle(shape, case):
     return None
 
 
-def exact_sphere(shape, case):
+def exact_sphere(shape, case, part=lambda p: True):
     o, d, c = F(case.origin), F(case.direction), F(shape.center)
     r = Fraction(shape.radius)
     temp = sub(o, c)
@@ -198,9 +203,43 @@ def exact_sphere(shape, case):
     if disc < 0:
         return None
     for t in sorted(((-b - exact_sqrt(disc)) / (2 * a), (-b + exact_sqrt(disc)) / (2 * a))):
-        if in_range(t, case):
+        if in_range(t, case) and part(tuple(oc + t * dc - cc_ for oc, dc, cc_ in zip(o, d, c))):
             return t, tuple((oc + t * dc - cc_) / r for oc, dc, cc_ in zip(o, d, c))
     return None
+
+
+def phi_in_range(shape, p) -> bool:
+    """The book's azimuth test: phi = atan2(x, z) in [0, 2 pi) of the exact point (its
+    coordinates are small dyadic numbers, exact as floats) within the shape's [phi_min, phi_max]."""
+    return shape.phi_min <= azimuth(Float3(*(float(x) for x in p))) <= shape.phi_max
+
+
+def exact_part_sphere(shape, case):
+    """Suffern's ConvexPartSphere::hit in fractions: the near root, then the far one, each
+    when its point p - c has r cos(theta_max) <= y <= r cos(theta_min) (the cosines the
+    shape keeps, exactly) and its azimuth in range; a ConcavePartSphere's normal points in."""
+    r = Fraction(shape.radius)
+
+    def part(p):
+        return r * Fraction(shape.cos_theta_max) <= p[1] <= r * Fraction(shape.cos_theta_min) and phi_in_range(shape, p)
+
+    hit = exact_sphere(shape, case, part)
+    if hit is None or not isinstance(shape, ConcavePartSphere):
+        return hit
+    return hit[0], tuple(-c for c in hit[1])
+
+
+def exact_open_part_cylinder(shape, case):
+    return exact_open_cylinder(shape, case, lambda p: phi_in_range(shape, p))
+
+
+def exact_annulus(shape, case):
+    """The plane, then r_i^2 <= (p - c) . (p - c) <= r_o^2 (both rims belong to it)."""
+    hit = exact_plane(Plane(shape.center, shape.normal, GREY), case)
+    if hit is None:
+        return None
+    to_hit = sub(tuple(o + hit[0] * d for o, d in zip(F(case.origin), F(case.direction))), F(shape.center))
+    return hit if Fraction(shape.inner_radius) ** 2 <= dot(to_hit, to_hit) <= Fraction(shape.outer_radius) ** 2 else None
 
 
 def exact_mesh(shape, case):
@@ -335,6 +374,50 @@ SHAPE_CASES = {
          Case("hit at tmax (the next root beyond it)", (0.0, 0.0, 5.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
         exact_torus,
         None),   # every torus about the y axis through TIE_RAY's hit point is tangent to the ray
+    **{name: KindCases(
+        # The quarter of the sphere of radius 5 with x >= 0 (phi 0..180) and y <= 0 (theta 90..180).
+        lambda m, cls=cls: cls((0.0, 0.0, 0.0), 5.0, 0.0, 180.0, 90.0, 180.0, GREY, m),
+        (Case("hit within the angles", (9.0, -4.0, 0.0), (-1.0, 0.0, 0.0)),
+         Case("near root outside the angles, the far one within", (-9.0, -4.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("hit from inside (the far root)", (0.0, -4.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("hit on the rim phi = phi_max", (0.0, -3.0, -9.0), (0.0, 0.0, 1.0)),
+         Case("hit on the rim theta = theta_min (y = 0)", (3.0, 0.0, 9.0), (0.0, 0.0, -1.0)),
+         Case("both roots above the part (y > 0)", (9.0, 4.0, 0.0), (-1.0, 0.0, 0.0), hits=False),
+         Case("both roots beside the part (x < 0)", (-3.0, 0.0, 9.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beside the sphere", (6.0, -4.0, 9.0), (0.0, 0.0, -1.0), hits=False),
+         Case("hit at tmax (the far root outside the angles)", (9.0, -4.0, 0.0), (-1.0, 0.0, 0.0), tmax=6.0,
+              hits=False)),
+        exact_part_sphere,
+        lambda m, cls=cls: cls((0.25, 0.25, -1.0), 1.0, 0.0, 180.0, 0.0, 180.0, GREY, m))
+       for name, cls in (("convex_part_sphere", ConvexPartSphere), ("concave_part_sphere", ConcavePartSphere))},
+    "open_part_cylinder": KindCases(
+        # The half of the cylinder of radius 5 with x >= 0 (phi 0..180), y in [-1, 1].
+        lambda m: OpenPartCylinder(-1.0, 1.0, 5.0, 0.0, 180.0, GREY, m),
+        (Case("hit within the angles", (9.0, 0.0, 3.0), (-1.0, 0.0, 0.0)),
+         Case("near root outside the angles, the far one within (seen inside)", (-9.0, 0.0, 3.0),
+              (1.0, 0.0, 0.0)),
+         Case("hit on the rim phi = phi_max", (0.0, 0.0, -9.0), (0.0, 0.0, 1.0)),
+         Case("hit on the rim phi = phi_min", (0.0, 0.5, 9.0), (0.0, 0.0, -1.0)),
+         Case("both roots beside the part (x < 0)", (-3.0, 0.0, 9.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss above the rim", (9.0, 2.0, 3.0), (-1.0, 0.0, 0.0), hits=False),
+         Case("ray parallel to the axis", (4.0, -5.0, 3.0), (0.0, 1.0, 0.0), hits=False),
+         Case("hit at tmax (the far root outside the angles)", (9.0, 0.0, 3.0), (-1.0, 0.0, 0.0), tmax=5.0,
+              hits=False)),
+        exact_open_part_cylinder,
+        lambda m: OpenPartCylinder(-1.0, 1.0, 0.25, 0.0, 180.0, GREY, m)),
+    "annulus": KindCases(
+        lambda m: Annulus((0.0, 0.0, 0.0), (0.0, 0.0, 2.0), 0.5, 1.0, GREY, m),
+        (Case("hit", (0.75, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.0, 2.0), (0.25, 0.25, -1.0)),
+         Case("hit from behind", (0.0, -0.75, -1.0), (0.0, 0.0, 1.0)),
+         Case("hit on the inner rim", (0.5, 0.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("hit on the outer rim", (0.0, 1.0, 2.0), (0.0, 0.0, -1.0)),
+         Case("miss through the hole", (0.25, 0.25, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss beyond the outer rim", (1.0, 0.25, 2.0), (0.0, 0.0, -1.0), hits=False),
+         Case("ray parallel to the annulus", (0.75, 0.0, 1.0), (1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax", (0.75, 0.0, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
+        exact_annulus,
+        lambda m: Annulus((0.0, 0.0, 0.0), (0.0, 0.0, 1.0), 0.25, 1.0, GREY, m)),
     "mesh": KindCases(
         lambda m: mesh_face((0.0, 0.0, 0.0), (2.0, 0.0, 0.0), (0.0, 2.0, 0.0), m),
         (Case("hit", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0)),

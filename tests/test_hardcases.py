@@ -411,3 +411,40 @@ def test_numba_float32_torus_kernels_stay_float32():
         (k.intersect_torus, k.bbox_hit, k.torus_box, k.normal_torus, tx.texcoord_torus, q.solve_quartic,
          q.solve_cubic, q.solve_quadric, q.polish_root, q.is_root, q.quartic_value, q.cbrt, q.is_zero, q._keep))
     assert checked >= 14
+
+
+# --- part spheres and annuli (Suffern ch. 19) -------------------------------------------
+
+def test_part_sphere_and_annulus_exact_truth_by_hand():
+    # The quarter of the sphere of radius 5 with x >= 0 (phi 0..180) and y <= 0 (theta 90..180).
+    part = ((0, 0, 0), 5.0, 0.0, 180.0, 90.0, 180.0)
+    assert exact.convex_part_sphere((9, -4, 0), (-1, 0, 0), 0.0, math.inf, *part) == (6.0, 0.0)
+    assert exact.convex_part_sphere((-9, -4, 0), (1, 0, 0), 0.0, math.inf, *part) == (12.0, 0.0)  # the far root
+    assert exact.convex_part_sphere((0, -3, -9), (0, 0, 1), 0.0, math.inf, *part) == (5.0, 0.0)   # phi = 180
+    assert exact.convex_part_sphere((3, 0, 9), (0, 0, -1), 0.0, math.inf, *part) == (5.0, 0.0)    # theta = 90
+    # 1e-30 above the rim; within exact.ANGLE_TIE (1e-40 of r) a point counts as on it
+    assert exact.convex_part_sphere((3, 5e-30, 9), (0, 0, -1), 0.0, math.inf, *part) == exact.MISS
+    assert exact.convex_part_sphere((9, 4, 0), (-1, 0, 0), 0.0, math.inf, *part) == exact.MISS
+    assert exact.convex_part_sphere((9, -4, 0), (-1, 0, 0), 0.0, 6.0, *part) == exact.MISS        # far root x < 0
+    ring = ((0, 0, 0), (0, 0, 1), 0.5, 1.0)
+    assert exact.annulus((0.5, 0, 2), (0, 0, -1), 0.0, math.inf, *ring) == (2.0, 0.0)              # the inner rim
+    assert exact.annulus((math.nextafter(0.5, 0.0), 0, 2), (0, 0, -1), 0.0, math.inf, *ring) == exact.MISS
+    assert exact.annulus((0, 1, 2), (0, 0, -1), 0.0, math.inf, *ring) == (2.0, 0.0)                # the outer rim
+    assert exact.annulus((0.25, 0.25, 2), (0, 0, -1), 0.0, math.inf, *ring) == exact.MISS         # the hole
+
+
+@pytest.mark.parametrize("name", ["part_sphere_rim", "part_sphere_gap", "annulus_rim", "annulus_nearly_parallel"])
+def test_part_objects_against_the_exact_truth(name):
+    """numba float64 decides as the lecture layer, bit for bit; in float64 both decide every
+    ray a rim family aims 1e-8 or more off its rim (the odd rows), and every ray of the
+    others; the float32 paths run every ray."""
+    family = build(name, "float64")
+    reference = evaluate(family, ReferencePath("slide"))
+    assert np.array_equal(evaluate(family, NumbaPath("slide", "float64")).t, reference.t)
+    assert family.truth_hit.any() and not family.truth_hit.all()
+    wrong = np.isfinite(reference.t) != family.truth_hit
+    assert not (wrong[1::2] if name.endswith("rim") else wrong).any(), np.flatnonzero(wrong)
+    paths = [NumbaPath("slide", "float32")] + ([WgslPath("slide")] if WGSL_MISSING is None else [])
+    for path in paths:
+        r = evaluate(build(name, "float32"), path)
+        assert r.rays == family.size and r.nan == 0, r.row()

@@ -394,3 +394,62 @@ def torus(o, d, tmin, tmax, a, b):
     if t is None:
         return MISS
     return dd_from_fraction(t) if isinstance(t, Q) else dd_from_mpf(t)
+
+
+# --- part sphere and annulus (Suffern ch. 19, "Part objects") ---------------------------
+
+# Within this many degrees (or units of y / r) of a bound, a 50-digit angle is on the bound,
+# which belongs to the part: a point the inputs put exactly on a rim (atan2(0, -1) = 180).
+ANGLE_TIE = mpmath.mpf(10) ** -40
+
+
+def _in_part(o, d, center, radius, t, phi_min, phi_max, theta_min, theta_max) -> bool:
+    """Whether the point o + t d (t an mpf) of the sphere is within the part's angles, in
+    degrees as the constructor took them: the book's r cos(theta_max) <= y <= r cos(theta_min)
+    and phi = atan2(x, z) in [phi_min, phi_max], at 50 digits."""
+    with mpmath.workdps(DIGITS):
+        p = [mpmath.mpf(float(o[k])) + t * mpmath.mpf(float(d[k])) - mpmath.mpf(float(center[k])) for k in range(3)]
+        y = p[1] / mpmath.mpf(float(radius))
+        if y > mpmath.cos(mpmath.radians(float(theta_min))) + ANGLE_TIE:
+            return False
+        if y < mpmath.cos(mpmath.radians(float(theta_max))) - ANGLE_TIE:
+            return False
+        phi = mpmath.degrees(mpmath.atan2(p[0], p[2]))
+        if phi < 0:
+            phi += 360
+        return float(phi_min) - ANGLE_TIE <= phi <= float(phi_max) + ANGLE_TIE
+
+
+def convex_part_sphere(o, d, tmin, tmax, center, radius, phi_min, phi_max, theta_min, theta_max):
+    """The sphere's roots in [tmin, tmax) decided in rationals (``sphere``), the near one
+    first, each kept when its point is within the part's angles (``_in_part``)."""
+    if not (finite(*o, *d, *center, radius, phi_min, phi_max, theta_min, theta_max, tmin) and not math.isnan(tmax)):
+        return MISS
+    if float(radius) <= 0 or (d[0] == 0 and d[1] == 0 and d[2] == 0):
+        return MISS
+    roots = sphere_roots(o, d, center, radius)
+    if roots is None:
+        return MISS
+    t1, t2, (a, b, disc) = roots
+    for sign, t in ((-1, t1), (1, t2)):
+        if not _sqrt_ge(sign, disc, a * Q(float(tmin)) + b):
+            continue
+        if not math.isinf(tmax) and not _sqrt_lt(sign, disc, a * Q(float(tmax)) + b):
+            continue
+        if _in_part(o, d, center, radius, t, phi_min, phi_max, theta_min, theta_max):
+            return dd_from_mpf(t)
+    return MISS
+
+
+def annulus(o, d, tmin, tmax, center, normal, inner_radius, outer_radius):
+    """The plane of the annulus (``plane``), then r_i^2 <= (p - c) . (p - c) <= r_o^2 at
+    p = o + t d, in rationals: both rims belong to it (rtfgu.shapes.annulus)."""
+    if not finite(inner_radius, outer_radius):
+        return MISS
+    t = plane(o, d, tmin, tmax, center, normal)
+    if t == MISS:
+        return MISS
+    tq = _plane_t(o, d, center, normal)
+    to_hit = sub(tuple(oi + tq * di for oi, di in zip(q3(o), q3(d))), q3(center))
+    d2 = dot(to_hit, to_hit)
+    return t if Q(float(inner_radius)) ** 2 <= d2 <= Q(float(outer_radius)) ** 2 else MISS

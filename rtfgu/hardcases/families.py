@@ -603,6 +603,80 @@ def _torus_axis(rng, n):
     return dict(origins=o, directions=-u, shapes=[np.column_stack([a, b])])
 
 
+# --- part spheres and annuli (Suffern ch. 19, "Part objects") -------------------------
+
+def _part_angles(rng, n):
+    """Ranges of whole degrees, in steps of 15: phi within [0, 360], theta within [15, 165]
+    (a polar bound of 0 or 180 is a pole, a rim of one point whose azimuth is undefined)."""
+    phi_min = rng.integers(0, 20, n) * 15.0
+    phi_max = np.minimum(phi_min + rng.integers(1, 13, n) * 15.0, 360.0)
+    theta_min = rng.integers(1, 11, n) * 15.0
+    theta_max = np.minimum(theta_min + rng.integers(1, 9, n) * 15.0, 165.0)
+    return phi_min, phi_max, theta_min, theta_max
+
+
+def _on_sphere(c, r, phi_deg, theta_deg):
+    """The point of the sphere at azimuth phi (atan2(x, z)) and polar angle theta, in degrees."""
+    phi, theta = np.radians(phi_deg), np.radians(theta_deg)
+    return c + r[:, None] * np.column_stack([np.sin(theta) * np.sin(phi), np.cos(theta), np.sin(theta) * np.cos(phi)])
+
+
+@family("part_sphere_rim", "part_sphere", "convex_part_sphere",
+        "rays at a rim of the part (an azimuth or polar bound, whole degrees): on it as float64 "
+        "puts it (even rows) or 1e-8..1e-5 degrees off, from 1..4 r away")
+def _part_sphere_rim(rng, n):
+    rows = np.arange(n)
+    c = rng.uniform(-2, 2, (n, 3))
+    r = rng.uniform(0.5, 2.0, n)
+    phi_min, phi_max, theta_min, theta_max = _part_angles(rng, n)
+    off = np.where(rows % 2 == 1, rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -5, n), 0.0)
+    rim = rng.integers(0, 4, n)      # phi_min, phi_max, theta_min, theta_max
+    phi = np.where(rim == 0, phi_min, np.where(rim == 1, phi_max, rng.uniform(phi_min, phi_max))) \
+        + np.where(rim < 2, off, 0.0)
+    theta = np.where(rim == 2, theta_min, np.where(rim == 3, theta_max, rng.uniform(theta_min, theta_max))) \
+        + np.where(rim >= 2, off, 0.0)
+    target = _on_sphere(c, r, phi, theta)
+    o = target + _random_unit(rng, n) * (r * rng.uniform(1, 4, n))[:, None]
+    return dict(origins=o, directions=target - o,
+                shapes=[np.column_stack([c, r, phi_min, phi_max, theta_min, theta_max])])
+
+
+@family("part_sphere_gap", "part_sphere", "convex_part_sphere",
+        "rays into half a sphere (phi over 180 degrees) through its open side, aimed within "
+        "0.9 r of the centre: the near root is outside the part, the far one mostly within")
+def _part_sphere_gap(rng, n):
+    c = rng.uniform(-2, 2, (n, 3))
+    r = rng.uniform(0.5, 2.0, n)
+    phi_min = rng.integers(0, 13, n) * 15.0
+    phi_max = phi_min + 180.0
+    outside = _on_sphere(np.zeros((n, 3)), np.ones(n), phi_min - 90.0, rng.uniform(30.0, 150.0, n))
+    o = c + outside * (r * rng.uniform(2, 5, n))[:, None]
+    aim = c + _random_unit(rng, n) * (r * rng.uniform(0, 0.9, n))[:, None]
+    return dict(origins=o, directions=aim - o,
+                shapes=[np.column_stack([c, r, phi_min, phi_max, np.zeros(n), np.full(n, 180.0)])])
+
+
+@family("annulus_rim", "annulus", "annulus",
+        "rays through the inner or the outer rim: exactly (Pythagorean rim points, even rows) or "
+        "1e-8..1e-5 r off it")
+def _annulus_rim(rng, n):
+    disk = _disk_rim(rng, n)          # rays through the rim of radius r of a disk
+    rows = disk["shapes"][0]
+    r = rows[:, 6]
+    inner = rng.random(n) < 0.5       # that rim is the inner one (outer 2r) or the outer one (inner r/2)
+    return dict(origins=disk["origins"], directions=disk["directions"],
+                shapes=[np.column_stack([rows[:, :6], np.where(inner, r, r / 2), np.where(inner, 2 * r, r)])])
+
+
+@family("annulus_nearly_parallel", "annulus", "annulus",
+        "angle to the annulus's plane 1e-8..1e-1, aimed within 1.3 r_o, r_i = 0.2..0.8 r_o")
+def _annulus_nearly_parallel(rng, n):
+    disk = _disk_nearly_parallel(rng, n)
+    rows = disk["shapes"][0]
+    return dict(origins=disk["origins"], directions=disk["directions"],
+                shapes=[np.column_stack([rows[:, :6], rows[:, 6] * rng.uniform(0.2, 0.8, n), rows[:, 6]])])
+
+
 # --- large offsets and tiny scenes ----------------------------------------------------
 
 @family("offset_sphere", "offset", "sphere", "spheres 1e4..1e7 from the world origin")

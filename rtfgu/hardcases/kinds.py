@@ -12,7 +12,8 @@ flattened: a sphere (center, radius) is 4 floats, a triangle (v0, v1, v2) 9. Fro
 * the WGSL path runs ``rtfgu/wgsl/hardcase_main.wgsl`` with the feature ``<name>``, which
   reads the row with ``arg3``/``arg1`` and calls the kind's WGSL function.
 
-A kind without a robust formula (the disk, the rectangle, the box, the open cylinder, the torus) runs the slide formula only.
+A kind without a robust formula (the disk, the rectangle, the box, the open cylinder, the torus,
+the part sphere, the annulus) runs the slide formula only.
 """
 from __future__ import annotations
 
@@ -67,5 +68,8 @@ KINDS = {kind.name: kind for kind in (
     HardCaseKind("box", (3, 3)),
     HardCaseKind("open_cylinder", (1, 1, 1)),
     HardCaseKind("torus", (1, 1)),
+    # The angles in degrees, as the lecture constructor takes them.
+    HardCaseKind("convex_part_sphere", (3, 1, 1, 1, 1, 1)),
+    HardCaseKind("annulus", (3, 3, 1, 1)),
 )}
 assert set(KINDS) <= set(SHAPE_BY_NAME), "every hard-case kind is a kind of rtfgu.registry"

@@ -18,6 +18,8 @@ from .paths import Path, slide_spawn
 
 
 def _piece(kind: str, formula: str) -> str:
+    if kind not in SHAPE_BY_NAME:      # a helper piece a kind uses (rtfgu.wgsl.assemble)
+        return kind + ".wgsl"
     return SHAPE_BY_NAME[kind].wgsl_file if formula == "slide" else "robust_%s.wgsl" % kind
 
 
@@ -27,7 +29,7 @@ def program(kind: str, formula: str, spawn: bool = False):
 
     pieces = ["ray.wgsl", "hitinfo.wgsl"]
     for used in SHAPE_BY_NAME[kind].uses + (kind,):
-        pieces += list(SHAPE_BY_NAME[used].wgsl_helpers) + [_piece(used, formula)]
+        pieces.append(_piece(used, formula))
     if spawn:
         pieces.append("robust_spawn.wgsl")
     pieces.append("hardcase_main.wgsl")

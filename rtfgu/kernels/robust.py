@@ -23,7 +23,9 @@ Float3 tuples, as in the rest of rtfgu.kernels.
 The batch evaluators take one shape per ray as a row of the lecture constructor's
 arguments (rtfgu.hardcases.kinds): sphere (center, radius), plane (point, normal),
 triangle (v0, v1, v2: the vertices themselves, as watertightness needs the same floats in
-every triangle that shares them), disk (center, normal, radius), rectangle (p0, a, b), box (p0, p1), open cylinder (y0, y1, radius).
+every triangle that shares them), disk (center, normal, radius), rectangle (p0, a, b), box (p0, p1), open cylinder (y0, y1, radius),
+part sphere (center, radius, phi_min, phi_max, theta_min, theta_max in degrees), annulus
+(center, normal, inner_radius, outer_radius).
 """
 from __future__ import annotations
 
@@ -37,6 +39,7 @@ from .intersect import (intersect_box, intersect_disk, intersect_open_cylinder, 
                         intersect_rectangle, intersect_sphere,
                         intersect_sphere_robust, intersect_triangle)
 from .torus import intersect_torus
+from .part_objects import intersect_annulus, intersect_convex_part_sphere
 
 
 @njit(cache=True, error_model="numpy")
@@ -342,6 +345,24 @@ def torus_slide(o, d, tmin, tmax, shapes, i):
 
 
 @njit(cache=True, error_model="numpy")
+def convex_part_sphere_slide(o, d, tmin, tmax, shapes, i):
+    # The angles in degrees: radians and cosines in float64, then rounded to the rows'
+    # precision, as the lecture class computes them and compile_scene stores them.
+    radians = np.float64(math.pi / 180.0)
+    theta_min = np.float64(shapes[i, 6]) * radians
+    theta_max = np.float64(shapes[i, 7]) * radians
+    return intersect_convex_part_sphere(o, d, tmin, tmax, row3(shapes, i, 0), shapes[i, 3],
+                                        lit(np.float64(shapes[i, 4]) * radians, tmin),
+                                        lit(np.float64(shapes[i, 5]) * radians, tmin),
+                                        lit(math.cos(theta_min), tmin), lit(math.cos(theta_max), tmin))
+
+
+@njit(cache=True, error_model="numpy")
+def annulus_slide(o, d, tmin, tmax, shapes, i):
+    return intersect_annulus(o, d, tmin, tmax, row3(shapes, i, 0), row3(shapes, i, 3), shapes[i, 6], shapes[i, 7])
+
+
+@njit(cache=True, error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
     where ``finite`` says the input is not finite."""
@@ -394,5 +415,6 @@ ADAPTERS = {("sphere", "slide"): (sphere_slide, _any), ("sphere", "robust"): (sp
             ("triangle", "robust"): (triangle_robust_row, triangle_finite),
             ("disk", "slide"): (disk_slide, _any), ("rectangle", "slide"): (rectangle_slide, _any),
             ("box", "slide"): (box_slide, _any), ("open_cylinder", "slide"): (open_cylinder_slide, _any),
-            ("torus", "slide"): (torus_slide, _any)}
+            ("torus", "slide"): (torus_slide, _any),
+            ("convex_part_sphere", "slide"): (convex_part_sphere_slide, _any), ("annulus", "slide"): (annulus_slide, _any)}
 POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}

@@ -133,6 +133,28 @@ def texcoord_torus(position, a, b):
     return phi / two_pi, theta / two_pi
 
 
+def texcoord_open_part_cylinder(position, y0, y1, radius, phi_min, phi_max):
+    """OpenPartCylinder.texcoord: the whole cylinder's."""
+    return texcoord_open_cylinder(position, y0, y1, radius)
+
+
+@njit(cache=True, error_model="numpy")
+def texcoord_annulus(position, center, normal, inner_radius, outer_radius):
+    """Annulus.texcoord: the plane's coordinates about the centre, as the disk's."""
+    return texcoord_plane(position, center, normal)
+
+
+@njit(cache=True, error_model="numpy")
+def texcoord_convex_part_sphere(position, center, radius, phi_min, phi_max, cos_theta_min, cos_theta_max):
+    """ConvexPartSphere.texcoord: the whole sphere's."""
+    return texcoord_sphere(position, center, radius)
+
+
+@njit(cache=True, error_model="numpy")
+def texcoord_concave_part_sphere(position, center, radius, phi_min, phi_max, cos_theta_min, cos_theta_max):
+    return texcoord_sphere(position, center, radius)
+
+
 @njit(cache=True, error_model="numpy")
 def texcoord_sphere(position, center, radius):
     """Sphere.texcoord: Suffern's SphericalMap."""

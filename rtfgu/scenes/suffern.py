@@ -12,6 +12,8 @@ light and traced by Whitted.
 
 ``suffern_19_torus``: Suffern ch. 19's torus, a quartic solved by Schwarze's closed form: a
 Phong ring on the floor and a smaller Matte ring in its hole, lit by one point light.
+``suffern_19_parts``: Suffern ch. 19's part objects in compounds: a FlatRimmedBowl holding a
+ball, and a sphere shell with a quarter cut away (its inside a ConcavePartSphere).
 
 ``suffern_17_occlusion_regular`` and ``suffern_17_occlusion_multi_jittered``: Suffern ch.
 17's comparison of samplers for an AmbientOccluder's directions (set_sampler): the same 16
@@ -42,8 +44,13 @@ from ..sampling.regular import Regular
 from ..sampling.sampler import sampler_of
 from ..tracers import PathTrace, Whitted
 from ..scene import Scene
+from ..shapes.annulus import Annulus
 from ..shapes.box import Box
+from ..shapes.compound import Compound
+from ..shapes.concave_part_sphere import ConcavePartSphere
+from ..shapes.convex_part_sphere import ConvexPartSphere
 from ..shapes.disk import Disk
+from ..shapes.flat_rimmed_bowl import FlatRimmedBowl
 from ..shapes.open_cylinder import OpenCylinder
 from ..shapes.rectangle import Rectangle
 from ..shapes.sphere import Sphere
@@ -102,6 +109,34 @@ def suffern_19_torus() -> Scene:
     scene.shapes.append(Torus(1.0, 0.25, Float3(0.8, 0.2, 0.1), Phong(cs=Float3(0.4, 0.4, 0.4), exp=40.0)))
     scene.shapes.append(Torus(0.5, 0.125, Float3(0.1, 0.5, 0.2), Matte()))
     scene.lights.append(PointLight(Float3(-1.5, 5.0, 2.5), Float3(12 * math.pi, 12 * math.pi, 12 * math.pi)))
+    return scene
+
+
+@homework(512, 512)
+def suffern_19_parts() -> Scene:
+    """Suffern ch. 19's part objects in compounds: a FlatRimmedBowl (a ConvexPartSphere
+    outside, a ConcavePartSphere inside, an Annulus rim) holding a ball, and a sphere with a
+    quarter cut away, shown as a shell whose inside is a ConcavePartSphere, on a floor that
+    is an Annulus without a hole, under one point light, traced by Whitted (the SolidCylinder
+    is tests/test_compound.py's)."""
+    camera = PinholeCamera(Float3(0.0, 3.4, 7.0), Float3(0.0, 0.5, 0.0), Float3(0.0, 1.0, 0.0), d=1.5)
+    scene = Scene(camera)
+    scene.background = Float3(0.1, 0.3, 0.6)
+    scene.shapes.append(Annulus(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), 0.0, 4.0, Float3(0.8, 0.8, 0.75),
+                                Matte()))
+    scene.shapes.append(FlatRimmedBowl(Float3(-1.3, 0.9, 0.3), 0.8, 0.9, Float3(0.9, 0.5, 0.1),
+                                       Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)))
+    # A ball resting in the bowl: a part sphere of every angle.
+    scene.shapes.append(ConvexPartSphere(Float3(-1.3, 0.45, 0.3), 0.35, 0.0, 360.0, 0.0, 180.0,
+                                         Float3(0.8, 0.1, 0.1), Matte()))
+    # The shell: every azimuth but 270..360 degrees (x < 0, z > 0, toward the camera).
+    shell = Compound()
+    shell.add_object(ConvexPartSphere(Float3(1.3, 0.8, 0.2), 0.8, 0.0, 270.0, 0.0, 180.0, Float3(0.1, 0.3, 0.8)))
+    shell.add_object(ConcavePartSphere(Float3(1.3, 0.8, 0.2), 0.72, 0.0, 270.0, 0.0, 180.0, Float3(0.9, 0.85, 0.2)))
+    shell.set_material(Matte())
+    scene.shapes.append(shell)
+    scene.lights.append(PointLight(Float3(-2.0, 5.0, 4.0), Float3(12 * math.pi, 12 * math.pi, 12 * math.pi)))
+    scene.tracer = Whitted()
     return scene
 
 

@@ -31,12 +31,12 @@ from .sphere import Sphere
 class OpenCylinder(Shape):
     def __init__(self, y0: float, y1: float, radius: float, color, material=None):
         super().__init__(color, material)
-        self.y0 = _height(y0, "OpenCylinder.y0")
-        self.y1 = _height(y1, "OpenCylinder.y1")
+        name = type(self).__name__
+        self.y0 = _height(y0, name + ".y0")
+        self.y1 = _height(y1, name + ".y1")
         if not self.y0 < self.y1:
-            raise ValueError("OpenCylinder.y0 must be below OpenCylinder.y1, got y0 = %r, y1 = %r"
-                             % (self.y0, self.y1))
-        self.radius = positive(radius, "OpenCylinder.radius")
+            raise ValueError("%s.y0 must be below %s.y1, got y0 = %r, y1 = %r" % (name, name, self.y0, self.y1))
+        self.radius = positive(radius, name + ".radius")
         self._circle = Sphere(Float3(0.0, 0.0, 0.0), self.radius, color)
 
     def intersect_p(self, ray: Ray) -> bool:

@@ -96,22 +96,24 @@ class PathTrace(Tracer):
     def validate(self, scene) -> None:
         """Raise a ValueError naming the field if ``scene`` cannot be path traced."""
         from ..lights.area_light import AreaLight
+        from ..shapes.compound import Compound
         from ..shapes.mesh import Mesh
 
         lit = {id(light.shape) for light in scene.lights if isinstance(light, AreaLight)}
         if len(lit) > MAX_AREA_LIGHTS:
             raise ValueError("Scene.lights: %s samples at most %d area lights, got %d"
                              % (type(self).__name__, MAX_AREA_LIGHTS, len(lit)))
-        for i, shape in enumerate(scene.shapes):
-            if isinstance(shape, Mesh):
-                self._validate_mesh(i, shape, lit)
+        for i, top in enumerate(scene.shapes):
+            if isinstance(top, Mesh):
+                self._validate_mesh(i, top, lit)
                 continue
-            where = "Scene.shapes[%d].material (%s)" % (i, type(shape.material).__name__)
-            shape.material.check_path_trace(where, shape.color)
-            e = shape.material.emission
-            if max(e.x, e.y, e.z) > 0.0 and id(shape) not in lit:
-                raise ValueError("Scene.shapes[%d] emits (its material's emission is %r) but no AreaLight in "
-                                 "Scene.lights samples it: add AreaLight(scene.shapes[%d])" % (i, e, i))
+            for shape in top.leaves() if isinstance(top, Compound) else [top]:   # a Compound: its leaves
+                where = "Scene.shapes[%d].material (%s)" % (i, type(shape.material).__name__)
+                shape.material.check_path_trace(where, shape.color)
+                e = shape.material.emission
+                if max(e.x, e.y, e.z) > 0.0 and id(shape) not in lit:
+                    raise ValueError("Scene.shapes[%d] emits (its material's emission is %r) but no AreaLight in "
+                                     "Scene.lights samples it: add AreaLight(scene.shapes[%d])" % (i, e, i))
 
     @staticmethod
     def _validate_mesh(i: int, mesh, lit: set) -> None:

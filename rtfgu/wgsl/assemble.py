@@ -32,7 +32,7 @@ from importlib import resources
 import numpy as np
 
 from .. import layout
-from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
+from ..registry import LIGHTS, SHADERS, SHAPE_BY_NAME, SHAPES, TEXTURES
 from ..options import DEFAULT_FORMULAS
 from . import structs
 
@@ -70,6 +70,12 @@ def _shape_kinds(features):
     return [k for k in SHAPES if k.name in names]
 
 
+def _helpers(kinds) -> list:
+    """The WGSL pieces of helpers that ``kinds`` name in ``uses`` (a name that is no shape
+    kind: "next_after" is next_after.wgsl), in order of name."""
+    return sorted({name + ".wgsl" for kind in kinds for name in kind.uses if name not in SHAPE_BY_NAME})
+
+
 def pieces(features, formula: str = "slide") -> list:
     """(piece name, file read for it) in the stated order, for a scene with ``features``."""
     f = features
@@ -89,9 +95,10 @@ def pieces(features, formula: str = "slide") -> list:
     if "thin_lens" in f:
         out.append(("concentric_map.wgsl", "concentric_map.wgsl"))
     if trace:
+        for helper in _helpers(_shape_kinds(f)):
+            out.append((helper, helper))
         for kind in _shape_kinds(f):
             chosen = formula if formula in kind.formulas else "slide"
-            out += [(helper, helper) for helper in kind.wgsl_helpers]
             out.append((kind.wgsl_file, kind.formula_file(chosen)))
     if trace and "textures" in f:
         if "texcoord" in f:
@@ -138,7 +145,7 @@ def piece_names() -> list:
     names = ["ray.wgsl", "hitinfo.wgsl", "random.wgsl", "pixel_sample.wgsl"]
     names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
     names += ["concentric_map.wgsl"]
-    names += [name for kind in SHAPES for name in kind.wgsl_helpers + (kind.wgsl_file,)]
+    names += _helpers(SHAPES) + [kind.wgsl_file for kind in SHAPES]
     names += ["texcoord.wgsl"] + sorted({piece for kind in TEXTURES for piece in kind.uses})
     names += [kind.name + ".wgsl" for kind in TEXTURES]
     names += ["light_sample.wgsl", "lights.wgsl", "in_shadow.wgsl", "direct_light.wgsl", "continue_path.wgsl"]

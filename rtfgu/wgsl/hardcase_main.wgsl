@@ -2,7 +2,7 @@
 // The hard-case program (rtfgu/hardcases/wgsl_path.py, run by rtfgu/wgsl/harness.py): one
 // invocation per ray, against the shape in the ray's row. Features: the shape kind
 // (sphere, plane, triangle, disk, rectangle, box,
-// open_cylinder, torus), the formula (slide, robust), and spawn (PBRT's offset
+// open_cylinder, torus, convex_part_sphere, annulus), the formula (slide, robust), and spawn (PBRT's offset
 // origins of secondary rays instead of intersections). SHAPE_WIDTH is generated: the floats
 // of one row, the lecture constructor's arguments before the colour (rtfgu.hardcases.kinds).
 
@@ -74,6 +74,14 @@ fn hardcase_hit(r: Ray, hit: ptr<function, HitInfo>) -> bool
     // #endif
     // #if torus
     return intersect_torus(r, hit, arg1(0u), arg1(1u));
+    // #endif
+    // #if convex_part_sphere
+    // The angles in degrees: radians and cosines in f32 here (the render's come from the CPU).
+    return intersect_convex_part_sphere(r, hit, arg3(0u), arg1(3u), radians(arg1(4u)), radians(arg1(5u)),
+                                        cos(radians(arg1(6u))), cos(radians(arg1(7u))));
+    // #endif
+    // #if annulus
+    return intersect_annulus(r, hit, arg3(0u), arg3(3u), arg1(6u), arg1(7u));
     // #endif
 }
 

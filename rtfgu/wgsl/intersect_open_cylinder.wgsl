@@ -29,13 +29,3 @@ fn intersect_open_cylinder(r: Ray, hit: ptr<function, HitInfo>, y0: f32, y1: f32
     }
     return false;
 }
-
-// The least f32 above t (t finite): the far root is looked for beyond the near one.
-fn next_after(t: f32) -> f32
-{
-    if (t == 0.0) {
-        return bitcast<f32>(1u);
-    }
-    let bits = bitcast<u32>(t);
-    return bitcast<f32>(select(bits - 1u, bits + 1u, t > 0.0));
-}

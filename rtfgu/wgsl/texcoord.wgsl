@@ -1,9 +1,9 @@
 // Texture coordinates (u, v) of a point on each shape kind, as Shape.texcoord in the
 // lecture layer (rtfgu/shapes/): worksheet 3's plane frame, Suffern's SphericalMap, the
 // triangle's barycentrics, the rectangle's edge projections, the box's face frame and
-// Suffern's CylindricalMap. shape_texcoord picks the
+// Suffern's CylindricalMap (a part object's are its whole shape's). shape_texcoord picks the
 // function of the kind hit.
-// #if plane|disk
+// #if plane|disk|annulus
 fn texcoord_plane(p: vec3f, point: vec3f, normal: vec3f) -> vec2f
 {
     let n = normalize(normal);
@@ -39,7 +39,7 @@ fn texcoord_box(p: vec3f, p0: vec3f, p1: vec3f) -> vec2f
     return vec2f((p[i] - p0[i]) / (p1[i] - p0[i]), (p[j] - p0[j]) / (p1[j] - p0[j]));
 }
 // #endif
-// #if open_cylinder
+// #if open_cylinder|open_part_cylinder
 fn texcoord_open_cylinder(p: vec3f, y0: f32, y1: f32, radius: f32) -> vec2f
 {
     var phi = atan2(p.x, p.z);
@@ -63,7 +63,7 @@ fn texcoord_torus(p: vec3f, a: f32, b: f32) -> vec2f
     return vec2f(phi / (2.0 * PI), theta / (2.0 * PI));
 }
 // #endif
-// #if sphere
+// #if sphere|convex_part_sphere|concave_part_sphere
 fn texcoord_sphere(p: vec3f, center: vec3f, radius: f32) -> vec2f
 {
     let d = p - center;
@@ -73,6 +73,32 @@ fn texcoord_sphere(p: vec3f, center: vec3f, radius: f32) -> vec2f
         phi += 2.0 * PI;
     }
     return vec2f(phi / (2.0 * PI), 1.0 - theta / PI);
+}
+// #endif
+// #if annulus
+fn texcoord_annulus(p: vec3f, center: vec3f, normal: vec3f, inner_radius: f32, outer_radius: f32) -> vec2f
+{
+    return texcoord_plane(p, center, normal);
+}
+// #endif
+// #if open_part_cylinder
+fn texcoord_open_part_cylinder(p: vec3f, y0: f32, y1: f32, radius: f32, phi_min: f32, phi_max: f32) -> vec2f
+{
+    return texcoord_open_cylinder(p, y0, y1, radius);
+}
+// #endif
+// #if convex_part_sphere
+fn texcoord_convex_part_sphere(p: vec3f, center: vec3f, radius: f32, phi_min: f32, phi_max: f32,
+                               cos_theta_min: f32, cos_theta_max: f32) -> vec2f
+{
+    return texcoord_sphere(p, center, radius);
+}
+// #endif
+// #if concave_part_sphere
+fn texcoord_concave_part_sphere(p: vec3f, center: vec3f, radius: f32, phi_min: f32, phi_max: f32,
+                                cos_theta_min: f32, cos_theta_max: f32) -> vec2f
+{
+    return texcoord_sphere(p, center, radius);
 }
 // #endif
 // #if triangle
