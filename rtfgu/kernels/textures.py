@@ -133,6 +133,7 @@ def texcoord_torus(position, a, b):
     return phi / two_pi, theta / two_pi
 
 
+@njit(cache=True, error_model="numpy")
 def texcoord_open_part_cylinder(position, y0, y1, radius, phi_min, phi_max):
     """OpenPartCylinder.texcoord: the whole cylinder's."""
     return texcoord_open_cylinder(position, y0, y1, radius)
