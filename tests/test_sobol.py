@@ -274,6 +274,19 @@ def test_wgsl_is_close(reference):
     assert close.mean() >= 0.99, close.mean()
 
 
+def test_the_lens_draws_sobols_pairs():
+    """A ThinLens takes its lens points from the pair LENS_SET: numba float64 is the lecture
+    layer, and the image is not the one the stream's sets give."""
+    from rtfgu.scenes.sampling import suffern_depth_of_field
+
+    scene = suffern_depth_of_field()
+    scene.sampler = Sobol(4)
+    reference = render(scene, 12, 9, "reference", seed=2)
+    assert np.abs(render(scene, 12, 9, "numba", "float64", seed=2) - reference).max() <= 1e-9
+    scene.sampler = None
+    assert np.abs(render(scene, 12, 9, "numba", "float64", spp=4, seed=2) - reference).max() > 1e-3
+
+
 def test_three_samples_render_on_every_path():
     scene = sobol_scene(3)
     reference = render(scene, 6, 6, "reference", seed=1)
@@ -284,3 +297,11 @@ def test_three_samples_render_on_every_path():
 def test_bad_num_samples_is_named(bad):
     with pytest.raises(ValueError, match="Sobol.num_samples"):
         Sobol(bad)
+
+
+def test_a_light_or_brdf_takes_no_sobol_of_its_own():
+    from rtfgu import AmbientOccluder, Lambertian
+
+    for owner in (AmbientOccluder(), Lambertian()):
+        with pytest.raises(ValueError, match="Scene.sampler"):
+            owner.set_sampler(Sobol(4))

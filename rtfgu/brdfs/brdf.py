@@ -22,11 +22,9 @@ class BRDF:
     def set_sampler(self, sampler) -> None:
         """The book's ``set_sampler``: the points ``sample_f`` turns into directions come from
         this sampler (its own sets, rtfgu.sampling) instead of the random stream."""
-        from ..sampling.sampler import Sampler
+        from ..sampling.sobol import check_own_sampler
 
-        if sampler is not None and not isinstance(sampler, Sampler):
-            raise ValueError("%s.sampler must be a Sampler or None, got %r" % (type(self).__name__, sampler))
-        self.sampler = sampler
+        self.sampler = check_own_sampler(type(self).__name__, sampler)
 
     def sample_point(self, sr, u_dimension: int) -> tuple:
         """(u, v) in [0, 1)^2 for the direction drawn at ``sr``: the sampler's point for the

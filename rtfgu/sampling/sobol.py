@@ -101,6 +101,18 @@ def pair_sample(sampler, pixel: int, index: int, dimension: int, seed: int) -> t
     return random_float(pixel, index, dimension, seed), random_float(pixel, index, dimension + 1, seed)
 
 
+def check_own_sampler(owner: str, sampler):
+    """``sampler``, checked as the sampler a light or a BRDF has of its own (set_sampler): a
+    Sampler with sets, or None; a ValueError naming ``owner``'s field otherwise (a Sobol has
+    no sets: it is the scene's, and then every 2D draw's)."""
+    if sampler is not None and not isinstance(sampler, Sampler):
+        raise ValueError("%s.sampler must be a Sampler or None, got %r" % (owner, sampler))
+    if isinstance(sampler, Sobol):
+        raise ValueError("%s.sampler: a Sobol has no sets to draw from; set it as Scene.sampler, whose "
+                         "2D draws then all come from it" % owner)
+    return sampler
+
+
 class Sobol(Sampler):
     """Burley's shuffled, scrambled Sobol points (PBRT-v4's, not Suffern's): a pixel's
     sample ``index`` is sobol_pair(pixel, index, dimension, seed), with no sets to draw from.
@@ -109,7 +121,8 @@ class Sobol(Sampler):
     the ambient occluder's point; its 1D draws (Russian roulette, a dielectric's choice) stay
     on the independent stream.
 
-    ``samples`` holds ``num_sets`` sets (default one) for plots: set k is "pixel" k's points."""
+    ``samples`` holds ``num_sets`` sets (default one) for plots: set k is "pixel" k's points;
+    a light or a BRDF takes no Sobol as a sampler of its own (set_sampler says so)."""
 
     def __init__(self, num_samples: int = 1, num_sets: int = 1, seed: int = 0):
         super().__init__(num_samples, num_sets, seed)
