@@ -180,7 +180,7 @@ def test_every_power_of_two_prefix_is_a_0_k_2_net(pixel, dimension, seed):
     assert is_net(later, 8)
 
 
-def test_unscrambled_points_would_not_be_a_net_check():
+def test_the_net_check_can_fail():
     """The net check can fail: the same point twice, or points all in one half."""
     assert not is_net([(0, 0), (0, 0)], 1)
     assert not is_net([(0, 0), (1 << 30, 1 << 31)], 1)

@@ -290,7 +290,8 @@ class Program:
 def scene_features(flat) -> frozenset:
     """FlatScene.features plus what the assembly derives from it: "trace" when the path
     loop runs (not the ray-direction image), "shapes" when there is any shape, "sampler"
-    when the render has a sampler with sets (FlatScene.sampler), "sobol" when it is a Sobol, "continues" when a shader of the scene
+    when the render has a sampler with sets (FlatScene.sampler), "sobol" when it is a Sobol
+    (sobol.wgsl), "continues" when a shader of the scene
     continues the path (continue_path.wgsl)."""
     f = set(flat.features)
     if any(kind.continues and kind.name in f for kind in SHADERS):
