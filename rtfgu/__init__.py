@@ -17,7 +17,7 @@ from .hit_info import HitInfo
 from .renderer import render, render_passes, trace
 from .notebook import show
 from .cameras import FishEye, Spherical, StereoCamera, ThinLens
-from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Sampler
+from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Sampler, Sobol
 from .scene import Scene
 from .shapes import Shape
 from .shapes.mesh import Mesh
@@ -49,7 +49,7 @@ __all__ = [
     "EnvironmentLight",
     "Tracer", "RayCast", "Whitted", "AreaLighting", "PathTrace", "GlobalTrace",
     "trace", "render", "render_passes", "show", "write_png",
-    "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
+    "Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley", "Sobol",
     "Texture", "ImageTexture", "Checker",
 ] + [_kind.cls.__name__ for _kind in _SHAPES]
 

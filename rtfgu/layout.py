@@ -703,18 +703,26 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
 @dataclass
 class FlatSampler:
     """A sampler's sets as arrays: ``samples`` (num_sets * n, 2) in the render's float type,
-    ``shuffled`` int32 (num_sets * n), each set's order (rtfgu.sampling.sampler)."""
+    ``shuffled`` int32 (num_sets * n), each set's order (rtfgu.sampling.sampler). ``kind``
+    "sets" for Suffern's samplers; "sobol" for rtfgu.sampling.sobol.Sobol, whose points are
+    computed where they are drawn (sobol_pair) and whose arrays are empty."""
 
     samples: np.ndarray
     shuffled: np.ndarray
     num_samples: int
     num_sets: int
+    kind: str = "sets"
 
 
 def compile_sampler(sampler, precision: str = "float64"):
     """The FlatSampler of ``sampler``, or None for none (one sample at each pixel's centre)."""
+    from .sampling.sobol import Sobol
+
     if sampler is None:
         return None
+    if isinstance(sampler, Sobol):
+        return FlatSampler(np.zeros((0, 2), dtype=DTYPES[precision]), np.zeros(0, dtype=np.int32),
+                           sampler.num_samples, 0, "sobol")
     return FlatSampler(np.array(sampler.samples, dtype=DTYPES[precision]).reshape(-1, 2),
                        np.array(sampler.shuffled_indices, dtype=np.int32),
                        sampler.num_samples, sampler.num_sets)

@@ -81,9 +81,11 @@ class Scene:
 
     def light_sample(self, light, sr) -> tuple:
         """The point (u, v) of the unit square from which ``light`` draws at ``sr``: its
-        sampler's, or the random stream's in the path dimensions LIGHT_U + 2 j and the next,
+        sampler's, or the scene's pair (rtfgu.sampling.sobol.pair_sample: the stream's, or
+        Sobol's where the scene's sampler is a Sobol) in the path dimensions LIGHT_U + 2 j and the next,
         j the number of lights of its kind before it in ``lights``."""
-        from .sampling.random import LIGHT_U, path_dimension, random_float
+        from .sampling.random import LIGHT_U, path_dimension
+        from .sampling.sobol import pair_sample
 
         j = 0
         for other in self.lights:
@@ -93,8 +95,7 @@ class Scene:
         dimension = path_dimension(sr.depth, LIGHT_U + 2 * j)
         if light.sampler is not None:
             return light.sampler.sample_unit_square(sr.pixel, sr.sample, sr.seed, dimension)
-        return (random_float(sr.pixel, sr.sample, dimension, sr.seed),
-                random_float(sr.pixel, sr.sample, path_dimension(sr.depth, LIGHT_U + 2 * j + 1), sr.seed))
+        return pair_sample(self.sampler, sr.pixel, sr.sample, dimension, sr.seed)
 
     def validate(self) -> None:
         """Raise a ValueError naming the field if this scene cannot be rendered."""

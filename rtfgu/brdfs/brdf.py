@@ -22,22 +22,21 @@ class BRDF:
     def set_sampler(self, sampler) -> None:
         """The book's ``set_sampler``: the points ``sample_f`` turns into directions come from
         this sampler (its own sets, rtfgu.sampling) instead of the random stream."""
-        from ..sampling.sampler import Sampler
+        from ..sampling.sobol import check_own_sampler
 
-        if sampler is not None and not isinstance(sampler, Sampler):
-            raise ValueError("%s.sampler must be a Sampler or None, got %r" % (type(self).__name__, sampler))
-        self.sampler = sampler
+        self.sampler = check_own_sampler(type(self).__name__, sampler)
 
     def sample_point(self, sr, u_dimension: int) -> tuple:
         """(u, v) in [0, 1)^2 for the direction drawn at ``sr``: the sampler's point for the
-        pixel's sample, or the stream's numbers in path dimensions u_dimension and the next."""
-        from ..sampling.random import path_dimension, random_float
+        pixel's sample, or the scene's pair (rtfgu.sampling.sobol.pair_sample: the stream's numbers,
+        or Sobol's pair where the scene's sampler is a Sobol) in path dimensions u_dimension and the next."""
+        from ..sampling.random import path_dimension
+        from ..sampling.sobol import pair_sample
 
+        dimension = path_dimension(sr.depth, u_dimension)
         if self.sampler is not None:
-            return self.sampler.sample_unit_square(sr.pixel, sr.sample, sr.seed,
-                                                   path_dimension(sr.depth, u_dimension))
-        return (random_float(sr.pixel, sr.sample, path_dimension(sr.depth, u_dimension), sr.seed),
-                random_float(sr.pixel, sr.sample, path_dimension(sr.depth, u_dimension + 1), sr.seed))
+            return self.sampler.sample_unit_square(sr.pixel, sr.sample, sr.seed, dimension)
+        return pair_sample(getattr(sr.scene, "sampler", None), sr.pixel, sr.sample, dimension, sr.seed)
 
     def f(self, sr, wo, wi) -> Float3:
         return Float3(0.0)

@@ -61,11 +61,13 @@ def _coprime_stride(n: int) -> int:
     return stride
 
 
-def own_sets(flat):
-    """The last two entries of the kernels' ``lights``: the sets of the samplers lights and
-    BRDFs have of their own, samples and orders, both None where none has one
-    (rtfgu.kernels.sampling.sampler_point)."""
-    return flat.own_samples, flat.own_shuffled
+def own_sets(flat, sampler=None):
+    """The last three entries of the kernels' ``lights``: the sets of the samplers lights and
+    BRDFs have of their own, samples and orders, both None where none has one, and 1 where
+    the render's FlatSampler ``sampler`` is a Sobol, else None (the 2D draws' choice,
+    rtfgu.kernels.sampling.sampler_sets)."""
+    sobol = 1 if sampler is not None and sampler.kind == "sobol" else None
+    return flat.own_samples, flat.own_shuffled, sobol
 
 
 def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, seed: int = 0,
@@ -76,7 +78,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     range of sample indices to add."""
     formula_id = sphere_formula_id(formula)
     shapes = shape_arrays(flat)
-    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS) + own_sets(flat)
+    lights = tuple(flat.lights[k.name] if len(flat.lights[k.name]) else None for k in LIGHTS) + own_sets(flat, sampler)
     camera = np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH))
     camera64 = camera.astype(np.float64)
     eye = None
@@ -98,7 +100,9 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
                 int(samples[1]))
-    if sampler is not None:
+    if sampler is not None and sampler.kind == "sobol":
+        sampler = (sampler.num_samples,)
+    elif sampler is not None:
         sampler = (sampler.samples, sampler.shuffled, sampler.num_samples, sampler.num_sets)
     return ((width, height), (flat.camera_kind, camera, camera64), shapes, lights, scene, eye,
             settings, (cast, path), sampler, _coprime_stride(tiles)), tiles

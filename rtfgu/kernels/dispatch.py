@@ -426,7 +426,7 @@ def source() -> str:
          "    zero = lit(0, brdf[0][0])",
          "    result = (zero, zero, zero)",
          "    n_shadow = 0"]
-        + ["    sets = sampler_sets(lights[%d], lights[%d])" % (len(LIGHTS), len(LIGHTS) + 1)]
+        + ["    sets = sampler_sets(lights[%d], lights[%d], lights[%d])" % (len(LIGHTS), len(LIGHTS) + 1, len(LIGHTS) + 2)]
         + ["    result, n = direct_path_%s(lights[%d], sets, shapes, surface, brdf, stream, shadows, formula, result)\n"
            "    n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS)]
         + ["    return result, n_shadow"]))
@@ -451,7 +451,7 @@ def source() -> str:
 
     # The light loop is written once, for every shader with a BRDF (each supplies its term
     # through ``brdf``); such a shader that continues the path does so after it.
-    light_calls = ["        sets = sampler_sets(lights[%d], lights[%d])" % (len(LIGHTS), len(LIGHTS) + 1)]
+    light_calls = ["        sets = sampler_sets(lights[%d], lights[%d], lights[%d])" % (len(LIGHTS), len(LIGHTS) + 1, len(LIGHTS) + 2)]
     light_calls += ["        result, n = direct_%s(lights[%d], sets, shader, mat, color, surface_point, neg(r_d), shapes, shadows, formula, stream, result)\n"
                     "        n_shadow += n" % (light.name, j) for j, light in enumerate(LIGHTS) if light.ray_cast]
     lit_shaders = [shader for shader in SHADERS if shader.brdf and not shader.emits]

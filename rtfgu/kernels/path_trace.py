@@ -28,6 +28,7 @@ from .shaders import mirror, transparent
 # Where ``lights`` holds the own samplers' sets (rtfgu.kernels.own_sets): after a table per light kind.
 OWN_SAMPLES = len(LIGHTS)
 OWN_SHUFFLED = len(LIGHTS) + 1
+SOBOL = len(LIGHTS) + 2       # and whether the render's 2D draws are Sobol's
 
 
 @njit(cache=True, error_model="numpy")
@@ -134,8 +135,8 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
                 break
             q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
             xi = random_float(pixel, sample, first + LOBE, seed, zero)
-            # the chosen BRDF's own sampler's point, or the stream's (BRDF.sample_point)
-            u, v = sampler_point(sampler_sets(lights[OWN_SAMPLES], lights[OWN_SHUFFLED]), materials, idx,
+            # the chosen BRDF's own sampler's point, or the render's pair (BRDF.sample_point)
+            u, v = sampler_point(sampler_sets(lights[OWN_SAMPLES], lights[OWN_SHUFFLED], lights[SOBOL]), materials, idx,
                                  MAT_DIFFUSE_SAMPLER if xi < q_d else MAT_SPECULAR_SAMPLER, pixel, sample,
                                  first + BOUNCE_U, seed, zero)
             if xi < q_d:

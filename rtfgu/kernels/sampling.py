@@ -3,12 +3,14 @@
 operation as rtfgu/sampling/ (random.py, sampler.py, maps.py).
 
 Unsigned 32-bit arithmetic is done in int64 and masked: numba widens uint32 products, and
-every product here (a 32-bit value times a constant below 2^30) fits in 63 bits.
+every product here (a 32-bit value times a constant below 2^30) fits in 63 bits; Sobol's
+scramble multiplies by larger constants, in two halves (mul32).
 
 A scene's sampler reaches the kernels as ``sampler`` = (samples (num_sets * n, 2) in the
 render's float type, shuffled int32 (num_sets * n), n, num_sets), or None for one sample
 through each pixel's centre; ``pixel_sample`` is typed on that, so the one-sample render
-compiles without any of it.
+compiles without any of it; a Sobol sampler (rtfgu.sampling.sobol) reaches them as
+(num_samples,), and only such a render compiles Sobol's functions.
 """
 from __future__ import annotations
 
@@ -45,6 +47,69 @@ def random_float(pixel, index, dimension, seed, like):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def mul32(a, b):
+    """a * b mod 2^32 for a, b below 2^32, in two halves so that no product passes 2^48."""
+    return (a * (b & 0xFFFF) + (((a * (b >> 16)) & 0xFFFF) << 16)) & MASK
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def reverse_bits(x):
+    """rtfgu.sampling.sobol.reverse_bits."""
+    x = ((x & 0xAAAAAAAA) >> 1) | ((x & 0x55555555) << 1)
+    x = ((x & 0xCCCCCCCC) >> 2) | ((x & 0x33333333) << 2)
+    x = ((x & 0xF0F0F0F0) >> 4) | ((x & 0x0F0F0F0F) << 4)
+    x = ((x & 0xFF00FF00) >> 8) | ((x & 0x00FF00FF) << 8)
+    return ((x >> 16) | (x << 16)) & MASK
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def laine_karras_permutation(x, seed):
+    """rtfgu.sampling.sobol.laine_karras_permutation (Burley 2020, listing 3)."""
+    x = (x + seed) & MASK
+    x ^= mul32(x, 0x6C50B47C)
+    x ^= mul32(x, 0xB82F1E52)
+    x ^= mul32(x, 0xC7AFE638)
+    x ^= mul32(x, 0x8D22F6E6)
+    return x
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def nested_uniform_scramble(x, seed):
+    """rtfgu.sampling.sobol.nested_uniform_scramble (Burley 2020, listing 4)."""
+    return reverse_bits(laine_karras_permutation(reverse_bits(x), seed))
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def sobol_1(index):
+    """rtfgu.sampling.sobol.sobol_1: Sobol's second dimension."""
+    x = 0
+    v = 0x80000000
+    while index:
+        if index & 1:
+            x ^= v
+        index >>= 1
+        v ^= v >> 1
+    return x
+
+
+@njit(cache=True, error_model="numpy")
+def sobol_pair_u32(pixel, index, dimension, seed):
+    """rtfgu.sampling.sobol.sobol_pair_u32: Burley's shuffled, scrambled Sobol pair."""
+    key = pcg((seed + pcg((dimension + pcg(pixel & MASK)) & MASK)) & MASK)
+    shuffled = nested_uniform_scramble(index & MASK, key)
+    return (nested_uniform_scramble(reverse_bits(shuffled), pcg((key + 1) & MASK)),
+            nested_uniform_scramble(sobol_1(shuffled), pcg((key + 2) & MASK)))
+
+
+@njit(cache=True, error_model="numpy")
+def sobol_pair(pixel, index, dimension, seed, like):
+    """rtfgu.sampling.sobol.sobol_pair in the float type of ``like``."""
+    u, v = sobol_pair_u32(pixel, index, dimension, seed)
+    unit = lit(2.0 ** -24, like)
+    return lit(u >> 8, like) * unit, lit(v >> 8, like) * unit
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def sample_unit_square(samples, shuffled, n, num_sets, pixel, index, dimension, seed, first=0):
     """Sampler.sample_unit_square: the sample of the set the stream picks for the pixel, of a
     sampler whose sets start at row ``first`` of ``samples`` and ``shuffled``."""
@@ -59,28 +124,33 @@ def stream_point(pixel, index, dimension, seed, like):
     return random_float(pixel, index, dimension, seed, like), random_float(pixel, index, dimension + 1, seed, like)
 
 
-def sampler_sets(samples, shuffled):
-    """(samples, shuffled), or None where ``samples`` is None: the sets of the samplers lights
-    and BRDFs have of their own, as sampler_point takes them, from the two arrays the
-    kernels receive them as (numba's parallel loop takes no tuple inside a tuple; typed by
-    the overload below)."""
-    return as_python(_typed_sampler_sets, samples, shuffled)
+def sampler_sets(samples, shuffled, sobol):
+    """What sampler_point draws from, out of the three last entries of the kernels' ``lights``
+    (numba's parallel loop takes no tuple inside a tuple): None where nothing has a sampler
+    of its own and the render's sampler is not a Sobol; (samples, shuffled), the sets of the
+    samplers lights and BRDFs have of their own, where ``sobol`` is None; (samples, shuffled,
+    sobol) in a Sobol render, ``samples`` and ``shuffled`` None where nothing has a sampler
+    of its own (typed by the overload below)."""
+    return as_python(_typed_sampler_sets, samples, shuffled, sobol)
 
 
 @overload(sampler_sets, inline="always")
-def _typed_sampler_sets(samples, shuffled):
+def _typed_sampler_sets(samples, shuffled, sobol):
+    if not isinstance(sobol, types.NoneType):
+        return lambda samples, shuffled, sobol: (samples, shuffled, sobol)
     if isinstance(samples, types.NoneType):
-        return lambda samples, shuffled: None
-    return lambda samples, shuffled: (samples, shuffled)
+        return lambda samples, shuffled, sobol: None
+    return lambda samples, shuffled, sobol: (samples, shuffled)
 
 
 def sampler_point(sets, table, j, column, pixel, index, dimension, seed, like):
     """The point (u, v) row ``j`` of ``table`` (a light, or a material's BRDF) draws from
     (Scene.light_sample, BRDF.sample_point): its own sampler's, where the row's field at
-    ``column`` (first sample, num_samples, num_sets) has num_samples > 0, from ``sets`` =
-    (the scene's own samples, their orders); else the random stream's (stream_point).
-    ``sets`` is None in a scene where nothing has a sampler of its own, and that code
-    compiles to nothing (typed by the overload below)."""
+    ``column`` (first sample, num_samples, num_sets) has num_samples > 0, from ``sets``'
+    (the scene's own samples, their orders); else the render's pair (pair_sample): Sobol's in
+    a Sobol render (``sets`` holds three entries), the random stream's otherwise. ``sets`` is
+    None in a scene where nothing has a sampler of its own and the render is not Sobol, and
+    that code compiles to nothing (typed by the overload below)."""
     return as_python(_typed_sampler_point, sets, table, j, column, pixel, index, dimension, seed, like)
 
 
@@ -89,10 +159,16 @@ def _typed_sampler_point(sets, table, j, column, pixel, index, dimension, seed, 
     if isinstance(sets, types.NoneType):
         return lambda sets, table, j, column, pixel, index, dimension, seed, like: stream_point(
             pixel, index, dimension, seed, like)
+    sobol = len(sets) == 3
+    if sobol and isinstance(sets.types[0], types.NoneType):
+        return lambda sets, table, j, column, pixel, index, dimension, seed, like: sobol_pair(
+            pixel, index, dimension, seed, like)
 
     def sampled(sets, table, j, column, pixel, index, dimension, seed, like):
         n = int(table[j, column + 1])
         if n == 0:
+            if sobol:
+                return sobol_pair(pixel, index, dimension, seed, like)
             return stream_point(pixel, index, dimension, seed, like)
         return sample_unit_square(sets[0], sets[1], n, int(table[j, column + 2]), pixel, index, dimension, seed,
                                   int(table[j, column]))
@@ -100,8 +176,9 @@ def _typed_sampler_point(sets, table, j, column, pixel, index, dimension, seed, 
 
 
 def pixel_sample(sampler, pixel, index, dimension, seed, like):
-    """(x, y) in [0, 1)^2 of sample ``index`` of ``pixel``; (0.5, 0.5) without a sampler
-    (typed by the overload below)."""
+    """(x, y) in [0, 1)^2 of sample ``index`` of ``pixel``; (0.5, 0.5) without a sampler;
+    Sobol's pair for a Sobol sampler, which reaches the kernels as (num_samples,) (typed by
+    the overload below)."""
     return as_python(_typed_pixel_sample, sampler, pixel, index, dimension, seed, like)
 
 
@@ -112,6 +189,8 @@ def _typed_pixel_sample(sampler, pixel, index, dimension, seed, like):
             half = lit(0.5, like)
             return half, half
         return centre
+    if len(sampler) == 1:
+        return lambda sampler, pixel, index, dimension, seed, like: sobol_pair(pixel, index, dimension, seed, like)
 
     def sampled(sampler, pixel, index, dimension, seed, like):
         samples, shuffled, n, num_sets = sampler

@@ -8,6 +8,7 @@ from .n_rooks import NRooks
 from .random import random_float, random_u32
 from .regular import Regular
 from .sampler import Sampler
+from .sobol import Sobol
 
-__all__ = ["Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley",
+__all__ = ["Sampler", "Regular", "Jittered", "NRooks", "MultiJittered", "Hammersley", "Sobol",
            "concentric_map", "hemisphere_map", "random_float", "random_u32"]

@@ -85,8 +85,10 @@ def pieces(features, formula: str = "slide") -> list:
         out.append(("hitinfo.wgsl", "hitinfo.wgsl"))
     path = trace and "path_trace" in f
     sampled_lights = path or (trace and "area_lighting" in f)
-    if "sampler" in f or sampled_lights:
+    if "sampler" in f or "sobol" in f or sampled_lights:
         out.append(("random.wgsl", "random.wgsl"))
+    if "sobol" in f:
+        out.append(("sobol.wgsl", "sobol.wgsl"))
     out.append(("pixel_sample.wgsl", "pixel_sample.wgsl"))
     for camera in layout.CAMERA_KINDS.values():
         # The thin lens bends the pinhole's ray (camera_thin_lens.wgsl calls it).
@@ -142,7 +144,7 @@ def pieces(features, formula: str = "slide") -> list:
 
 def piece_names() -> list:
     """Every piece a program may hold, for ``overrides``."""
-    names = ["ray.wgsl", "hitinfo.wgsl", "random.wgsl", "pixel_sample.wgsl"]
+    names = ["ray.wgsl", "hitinfo.wgsl", "random.wgsl", "sobol.wgsl", "pixel_sample.wgsl"]
     names += ["camera_%s.wgsl" % camera for camera in layout.CAMERA_KINDS.values()]
     names += ["concentric_map.wgsl"]
     names += _helpers(SHAPES) + [kind.wgsl_file for kind in SHAPES]
@@ -303,13 +305,14 @@ class Program:
 def scene_features(flat) -> frozenset:
     """FlatScene.features plus what the assembly derives from it: "trace" when the path
     loop runs (not the ray-direction image), "shapes" when there is any shape, "sampler"
-    when the render has a sampler (FlatScene.sampler), "continues" when a shader of the scene
+    when the render has a sampler with sets (FlatScene.sampler), "sobol" when it is a Sobol
+    (sobol.wgsl), "continues" when a shader of the scene
     continues the path (continue_path.wgsl)."""
     f = set(flat.features)
     if any(kind.continues and kind.name in f for kind in SHADERS):
         f.add("continues")
     if flat.sampler is not None:
-        f.add("sampler")
+        f.add("sampler" if flat.sampler.kind == "sets" else flat.sampler.kind)
     if len(flat.shaders):
         f.add("shapes")
     if not flat.show_ray_direction:
@@ -370,7 +373,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
         raise ValueError("scene_buffer must be one of %s, got %r"
                          % (", ".join(SCENE_BUFFER_KINDS), scene_buffer))
     wanted = [("camera", layout.CAMERA_RECORDS[flat.camera_kind], flat.camera, False)]
-    if flat.sampler is not None:
+    if flat.sampler is not None and flat.sampler.kind == "sets":
         wanted.append(("samples", "array<vec2f, %d>" % len(flat.sampler.samples),
                        flat.sampler.samples, False))
         wanted.append(("shuffled", "array<i32, %d>" % len(_packed_index(flat.sampler.shuffled)),

@@ -8,7 +8,8 @@ const LIGHT_U = 8u;
 // The point (u, v) of the unit square from which a light or a BRDF draws (Scene.light_sample,
 // BRDF.sample_point): its own sampler's (set_sampler; `sets` is its row's light_sampler, or
 // the material's diffuse_sampler or specular_sampler: first sample, num_samples, num_sets),
-// else the random stream's `dimension` and the next. Light i of a kind draws in dimensions
+// else the render's pair: Burley's Sobol pair (sobol.wgsl) where the render's sampler is a
+// Sobol, the random stream's `dimension` and the next otherwise. Light i of a kind draws in dimensions
 // LIGHT_U + 2 i and the next of its vertex.
 fn sampler_point(pixel: u32, s: u32, dimension: u32, sets: vec3f) -> vec2f
 {
@@ -19,7 +20,11 @@ fn sampler_point(pixel: u32, s: u32, dimension: u32, sets: vec3f) -> vec2f
         return own_samples[jump + u32(own_shuffled[jump + s % n])];
     }
     // #endif
+    // #if sobol
+    return sobol_pair(pixel, s, dimension, uniforms.seed);
+    // #else
     return vec2f(random_float(pixel, s, dimension, uniforms.seed), random_float(pixel, s, dimension + 1u, uniforms.seed));
+    // #endif
 }
 
 // #if area_lighting
