@@ -21,6 +21,8 @@ from .sampling import Hammersley, Jittered, MultiJittered, NRooks, Regular, Samp
 from .scene import Scene
 from .shapes import Shape
 from .shapes.mesh import Mesh
+from .shapes.instance import Instance
+from .matrix import Matrix
 from .obj import load_obj
 from .ply import load_ply
 from .mesh_files import load_mesh
@@ -35,7 +37,7 @@ globals().update({_kind.cls.__name__: _kind.cls for _kind in _SHAPES})
 __all__ = [
     "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON", "SPAWN_EPSILON", "HitInfo",
     "Camera", "OrthographicCamera", "PinholeCamera", "ThinLens", "FishEye", "Spherical", "StereoCamera",
-    "Shape", "Mesh", "load_obj", "load_ply", "load_mesh", "Scene",
+    "Shape", "Mesh", "Instance", "Matrix", "load_obj", "load_ply", "load_mesh", "Scene",
     "BRDF", "Lambertian", "GlossySpecular", "PerfectSpecular",
     "BTDF", "PerfectTransmitter",
     "Material", "Matte", "Phong", "Reflective", "GlossyReflector", "Transparent", "Emissive",
