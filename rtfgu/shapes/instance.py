@@ -32,17 +32,8 @@ import math
 from ..float3 import Float3, normalize
 from ..matrix import Matrix
 from ..ray import Ray
+from ..validation import finite
 from .shape import Shape
-
-
-def _finite(value, name: str) -> float:
-    try:
-        ok = not isinstance(value, bool) and math.isfinite(value)
-    except TypeError:
-        ok = False
-    if not ok:
-        raise ValueError("%s must be a finite number, got %r" % (name, value))
-    return float(value)
 
 
 def _matrix3(rows) -> Matrix:
@@ -87,7 +78,7 @@ class Instance(Shape):
         return self
 
     def translate(self, dx: float, dy: float, dz: float) -> "Instance":
-        d = [_finite(v, "Instance.translate: " + n) for v, n in ((dx, "dx"), (dy, "dy"), (dz, "dz"))]
+        d = [finite(v, "Instance.translate: " + n) for v, n in ((dx, "dx"), (dy, "dy"), (dz, "dz"))]
         forward, inverse = Matrix(), Matrix()
         for i in range(3):
             forward.m[i][3] = d[i]
@@ -98,7 +89,7 @@ class Instance(Shape):
         """scale(a, b, c) along x, y, z; scale(s) the same in every direction."""
         if b is None and c is None:
             b = c = a
-        s = [_finite(v, "Instance.scale: " + n) for v, n in ((a, "a"), (b, "b"), (c, "c"))]
+        s = [finite(v, "Instance.scale: " + n) for v, n in ((a, "a"), (b, "b"), (c, "c"))]
         for v, n in zip(s, "abc"):
             if v == 0.0:
                 raise ValueError("Instance.scale: %s must be non-zero (a scale by 0 is singular, it has no inverse)" % n)
@@ -111,7 +102,7 @@ class Instance(Shape):
     def _rotate(self, theta: float, name: str, i: int, j: int) -> "Instance":
         """A rotation by ``theta`` degrees in the plane of axes i, j (ch. 20.2's matrices:
         m[i][i] = m[j][j] = cos, m[i][j] = -sin, m[j][i] = sin; the inverse its transpose)."""
-        theta = _finite(theta, "Instance.%s: theta" % name)
+        theta = finite(theta, "Instance.%s: theta" % name)
         sin_theta = math.sin(theta * (math.pi / 180.0))
         cos_theta = math.cos(theta * (math.pi / 180.0))
         forward, inverse = Matrix(), Matrix()
@@ -137,7 +128,7 @@ class Instance(Shape):
         """The shear of ch. 20.3: h_ab is how much coordinate b grows with coordinate a,
 
             x' = x + hyx y + hzx z,   y' = hxy x + y + hzy z,   z' = hxz x + hyz y + z."""
-        h = {n: _finite(v, "Instance.shear: " + n) for v, n in
+        h = {n: finite(v, "Instance.shear: " + n) for v, n in
              ((hxy, "hxy"), (hxz, "hxz"), (hyx, "hyx"), (hyz, "hyz"), (hzx, "hzx"), (hzy, "hzy"))}
         rows = [[1.0, h["hyx"], h["hzx"]], [h["hxy"], 1.0, h["hzy"]], [h["hxz"], h["hyz"], 1.0]]
         return self._compose(_matrix3(rows), _inverse3(rows, "Instance.shear"))

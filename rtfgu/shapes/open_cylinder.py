@@ -24,6 +24,7 @@ import math
 
 from ..float3 import Float3, dot, normalize
 from ..ray import Ray
+from ..validation import finite
 from .shape import Shape, positive
 from .sphere import Sphere
 
@@ -31,8 +32,8 @@ from .sphere import Sphere
 class OpenCylinder(Shape):
     def __init__(self, y0: float, y1: float, radius: float, color, material=None):
         super().__init__(color, material)
-        self.y0 = _height(y0, "OpenCylinder.y0")
-        self.y1 = _height(y1, "OpenCylinder.y1")
+        self.y0 = finite(y0, "OpenCylinder.y0")
+        self.y1 = finite(y1, "OpenCylinder.y1")
         if not self.y0 < self.y1:
             raise ValueError("OpenCylinder.y0 must be below OpenCylinder.y1, got y0 = %r, y1 = %r"
                              % (self.y0, self.y1))
@@ -77,13 +78,3 @@ class OpenCylinder(Shape):
             phi += 2.0 * math.pi
         return phi / (2.0 * math.pi), (position.y - self.y0) / (self.y1 - self.y0)
 
-
-def _height(value, name: str) -> float:
-    """A finite height (of either sign)."""
-    try:
-        ok = not isinstance(value, bool) and math.isfinite(value)
-    except TypeError:
-        ok = False
-    if not ok:
-        raise ValueError("%s must be a finite number, got %r" % (name, value))
-    return float(value)
