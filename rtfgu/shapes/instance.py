@@ -180,6 +180,14 @@ class Instance(Shape):
         box = BBox.of_points(corners)
         return padded(box.centroid(), (box.p1 - box.p0) * 0.5)
 
+    # --- the flat layout's row (rtfgu.registry): the rows of inv_matrix, each with its translation
+    row0 = property(lambda self: Float3(*self.inv_matrix.m[0][:3]))
+    row1 = property(lambda self: Float3(*self.inv_matrix.m[1][:3]))
+    row2 = property(lambda self: Float3(*self.inv_matrix.m[2][:3]))
+    t0 = property(lambda self: self.inv_matrix.m[0][3])
+    t1 = property(lambda self: self.inv_matrix.m[1][3])
+    t2 = property(lambda self: self.inv_matrix.m[2][3])
+
     # --- a Mesh inside ---------------------------------------------------------------------
     def holds_mesh(self) -> bool:
         from .mesh import Mesh
