@@ -82,28 +82,32 @@ def _mesh_parts(k: int, kind, at: int) -> list:
     ]
 
 
-# The instanced tables as parameters of the generated instance functions, in INSTANCED order.
-OBJECTS = ", ".join("objects_" + kind.name for kind in INSTANCED)
-
-
 def _object_switch(name: str, params: str, call: str, default: str, doc: str) -> str:
-    """``name(<OBJECTS>, kind, row, <params>)``: ``call`` (a format of the object kind's name,
-    its table and ``params``) for the object's kind; ``default`` for none."""
+    """``name(objects, kind, row, <params>)``: ``call`` (a format of the object kind's name,
+    its instanced table in the tuple ``objects`` and ``params``) for the object's kind;
+    ``default`` for none."""
     lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-             "def %s(%s, kind, row, %s):" % (name, OBJECTS, params),
+             "def %s(objects, kind, row, %s):" % (name, params),
              '    """%s"""' % doc]
-    for obj in INSTANCED:
+    for m, obj in enumerate(INSTANCED):
         lines.append("    if kind == %d:\n        return %s" % (SHAPE_IDS[obj.name],
-                                                               call.format(kind=obj.name, table="objects_" + obj.name)))
+                                                               call.format(kind=obj.name, table="objects[%d]" % m)))
     lines.append("    return " + default)
     return "\n".join(lines)
+
+
+def _objects(at: int) -> str:
+    """The tuple of an instance kind's instanced tables, whose slots follow its table and
+    index from ``at`` on in ``shapes``."""
+    return "(%s,)" % ", ".join("shapes[%d]" % (at + 2 + m) for m in range(len(INSTANCED)))
 
 
 def _instance_parts(k: int, kind) -> list:
     """An instance kind's scan_, any_hit_, normal_row_ and texcoord_row_ (Suffern ch. 21,
     rtfgu/shapes/instance.py): the ray, the point and the direction through the row's inverse
     matrix (rtfgu.kernels.instance), then the object's kind through a switch over the instanced
-    tables; a table the scene lacks is None and its case compiles to nothing."""
+    tables, ``objects`` (a tuple in INSTANCED order); a table the scene lacks is None and its
+    case compiles to nothing."""
     name = kind.name
     columns = {f: c for f, _, c in layout.RECORDS[kind.record][1]}
     assert [columns[f] for f in ("row0", "t0", "row1", "t1", "row2", "t2")] == [0, 3, 4, 7, 8, 11], \
@@ -130,29 +134,29 @@ def _instance_parts(k: int, kind) -> list:
     keep = _KEEP.format(kind=k)
     scan = ["    tmax, best, kind, row = hit",
             "    for i in range(table.shape[0]):",
-            "        t = instanced_t(%s, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
-            "tmin, tmax, formula)" % (OBJECTS, obj % ("i", "i"))] + [line[4:] for line in keep.split("\n")] + [
+            "        t = instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
+            "tmin, tmax, formula)" % (obj % ("i", "i"))] + [line[4:] for line in keep.split("\n")] + [
             "    return tmax, best, kind, row"]
-    parts.append(_overloaded("scan_" + name, "table, index, %s, origin, direction, tmin, hit, formula" % OBJECTS,
+    parts.append(_overloaded("scan_" + name, "table, index, objects, origin, direction, tmin, hit, formula",
                              "hit", "\n".join(scan), "The nearest hit among the instances, given the nearest so far",
                              absent_on="index"))
     parts.append(_overloaded(
-        "any_hit_" + name, "table, index, %s, origin, direction, tmin, tmax, formula" % OBJECTS, "False",
+        "any_hit_" + name, "table, index, objects, origin, direction, tmin, tmax, formula", "False",
         "\n".join(["    for i in range(table.shape[0]):",
-                   "        if instanced_t(%s, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
-                   "tmin, tmax, formula) < tmax:" % (OBJECTS, obj % ("i", "i")),
+                   "        if instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
+                   "tmin, tmax, formula) < tmax:" % (obj % ("i", "i")),
                    "            return True",
                    "    return False"]),
         "Is any instance hit in [tmin, tmax)?", absent_on="index"))
     parts.append(_overloaded(
-        "normal_row_" + name, "table, %s, row, position, direction" % OBJECTS, "position",
-        "\n".join(["    n = instanced_normal(%s, %s, instance_point(table, row, position), "
-                   "instance_vector(table, row, direction))" % (OBJECTS, obj % ("row", "row")),
+        "normal_row_" + name, "table, objects, row, position, direction", "position",
+        "\n".join(["    n = instanced_normal(objects, %s, instance_point(table, row, position), "
+                   "instance_vector(table, row, direction))" % (obj % ("row", "row")),
                    "    return normalize(instance_normal(table, row, n))"]),
         "The object's normal at the object-space point through the inverse transpose, normalised"))
     parts.append(_overloaded(
-        "texcoord_row_" + name, "table, %s, row, position" % OBJECTS, "(position[0], position[0])",
-        "    return instanced_texcoord(%s, %s, instance_point(table, row, position))" % (OBJECTS, obj % ("row", "row")),
+        "texcoord_row_" + name, "table, objects, row, position", "(position[0], position[0])",
+        "    return instanced_texcoord(objects, %s, instance_point(table, row, position))" % (obj % ("row", "row")),
         "The object's (u, v) at the object-space point"))
     return parts
 
@@ -304,7 +308,7 @@ def _by_kind(name, row_function, what, default, mesh_slots, extra="") -> str:
         arrays = ", ".join("shapes[%d]" % (at[kind.name] + m) for m in mesh_slots) if kind.bvh \
             else "shapes[%d]" % at[kind.name]
         if kind.instance:   # the instance table, then the instanced tables
-            arrays += "".join(", shapes[%d]" % (at[kind.name] + 2 + m) for m in range(len(INSTANCED)))
+            arrays += ", " + _objects(at[kind.name])
         lines.append("    if kind == %d:\n        return %s%s(%s, row, position%s)"
                      % (k, row_function, kind.name, arrays, extra))
     return "\n".join([
@@ -462,7 +466,7 @@ def source() -> str:
             continue
         eye_args = "terms, candidates, n_candidates, " if kind.from_eye else ""
         if kind.instance:
-            eye_args = "".join("shapes[%d], " % (a + 2 + m) for m in range(len(INSTANCED)))
+            eye_args = _objects(a) + ", "
         calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
                      % (kind.name, a, a + 1, eye_args))
         shadow_args = eye_args if kind.instance else ""
