@@ -162,3 +162,25 @@ def test_bounds_hold_the_transformed_object():
     from rtfgu import Plane
     assert Instance(Plane((0.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY)).rotate_x(10.0).bounds() is None
 
+
+
+def test_an_instance_carries_its_objects_texture_on_every_path(path):
+    """A checkered sphere moved and scaled: every path colours the hit with the object's
+    (u, v) at the object-space point, and reports the normal through the inverse transpose."""
+    from rtfgu import Checker
+
+    texture = Checker(Float3(0.9, 0.1, 0.1), Float3(0.1, 0.1, 0.9), size=0.25)
+    ball = Instance(Sphere((0.0, 0.0, 0.0), 1.0, GREY), Matte(cd=texture)).scale(2.0, 1.0, 1.0).translate(1.0, 0.0, 0.0)
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes = [ball]
+    rays = [((x, y, 5.0), (0.0, 0.0, -1.0), 0.0, math.inf) for x, y in ((0.3, 0.2), (1.7, -0.4), (2.5, 0.1))]
+    got = [bounces[0] for bounces in path.trace(scene, rays)]
+    for (origin, direction, _, _), bounce in zip(rays, got):
+        ray = Ray(Float3(*origin), Float3(*direction))
+        hit = HitInfo()
+        assert scene.intersect(ray, hit) and bounce.kind == "instance"
+        want = 0.1 * hit.color   # the Matte's ambient part: no light
+        tolerance = 1e-12 if path.precision == "float64" else 1e-5
+        assert np.allclose(bounce.color, (want.x, want.y, want.z), atol=tolerance), (path.label, bounce, want)
+        assert np.allclose(bounce.normal, (hit.normal.x, hit.normal.y, hit.normal.z), atol=tolerance * 10)
+    assert len({tuple(round(c, 3) for c in b.color) for b in got}) > 1, "the cases should see both colours"
