@@ -72,6 +72,13 @@ fn hardcase_hit(r: Ray, hit: ptr<function, HitInfo>) -> bool
     // #if open_cylinder
     return intersect_open_cylinder(r, hit, arg1(0u), arg1(1u), arg1(2u));
     // #endif
+    // #if instance
+    // An ellipsoid: the unit sphere scaled by arg3(0), moved by arg3(3), through the inverse
+    // matrix Instance composes (1 / s, and (1 / s) (-t)), as intersect_instance.wgsl applies it.
+    let inv = vec3f(1.0) / arg3(0u);
+    let moved = inv * -arg3(3u);
+    return intersect_sphere(Ray(inv * r.origin + moved, inv * r.direction, r.tmin, r.tmax), hit, vec3f(0.0), 1.0);
+    // #endif
 }
 
 // #if spawn
