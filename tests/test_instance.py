@@ -184,3 +184,21 @@ def test_an_instance_carries_its_objects_texture_on_every_path(path):
         assert np.allclose(bounce.color, (want.x, want.y, want.z), atol=tolerance), (path.label, bounce, want)
         assert np.allclose(bounce.normal, (hit.normal.x, hit.normal.y, hit.normal.z), atol=tolerance * 10)
     assert len({tuple(round(c, 3) for c in b.color) for b in got}) > 1, "the cases should see both colours"
+
+
+def test_the_flat_layout_shares_an_objects_row_and_names_what_it_refuses():
+    """Instances of one sphere share its row in the instanced sphere table; an instance of a
+    Mesh or of an Instance is refused by the numba and WGSL layout, naming the shape."""
+    from rtfgu.layout import compile_scene
+
+    sphere = Sphere((0.0, 0.0, 0.0), 1.0, GREY)
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes = [Instance(sphere).translate(1.0, 0.0, 0.0), Instance(sphere).scale(2.0)]
+    flat = compile_scene(scene)
+    assert len(flat.instanced["sphere"]) == 1 and flat.count("instance") == 2
+    assert "instanced_sphere" in flat.features and "sphere" not in flat.features
+    mesh = Mesh(np.array([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]), np.array([(0, 1, 2)]), GREY)
+    for refused, name in ((Instance(mesh), "Mesh"), (Instance(Instance(sphere)), "Instance")):
+        scene.shapes = [sphere, refused]
+        with pytest.raises(ValueError, match=r"Scene.shapes\[1\].*an Instance of a %s" % name):
+            compile_scene(scene)
