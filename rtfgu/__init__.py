@@ -25,6 +25,8 @@ from .shapes.compound import Compound
 from .shapes.flat_rimmed_bowl import FlatRimmedBowl
 from .shapes.solid_cylinder import SolidCylinder
 from .shapes.thick_ring import ThickRing
+from .shapes.instance import Instance
+from .matrix import Matrix
 from .obj import load_obj
 from .ply import load_ply
 from .mesh_files import load_mesh
@@ -39,7 +41,8 @@ globals().update({_kind.cls.__name__: _kind.cls for _kind in _SHAPES})
 __all__ = [
     "Float3", "normalize", "dot", "cross", "Ray", "RAY_EPSILON", "SPAWN_EPSILON", "HitInfo",
     "Camera", "OrthographicCamera", "PinholeCamera", "ThinLens", "FishEye", "Spherical", "StereoCamera",
-    "Shape", "Mesh", "Compound", "SolidCylinder", "FlatRimmedBowl", "ThickRing", "load_obj", "load_ply", "load_mesh", "Scene",
+    "Shape", "Mesh", "Compound", "SolidCylinder", "FlatRimmedBowl", "ThickRing", "Instance", "Matrix", "load_obj",
+    "load_ply", "load_mesh", "Scene",
     "BRDF", "Lambertian", "GlossySpecular", "PerfectSpecular",
     "BTDF", "PerfectTransmitter",
     "Material", "Matte", "Phong", "Reflective", "GlossyReflector", "Transparent", "Emissive",

@@ -52,7 +52,7 @@ import numpy as np
 from .cameras import FishEye, OrthographicCamera, PinholeCamera, Spherical, StereoCamera, ThinLens
 from .float3 import Float3
 from .ray import RAY_EPSILON
-from .registry import (LIGHTS, MAPPING_IDS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
+from .registry import (INSTANCED, LIGHTS, MAPPING_IDS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
                        shape_kind_of, texture_kind_of)
 from .shapes.mesh import Mesh
 
@@ -250,6 +250,9 @@ class FlatScene:
     sampler: object = None
     # The mesh triangles (FlatMesh), None in a scene without any.
     mesh: object = None
+    # The objects of the instances (rtfgu.registry.INSTANCED): a table per kind, a row per
+    # distinct object (instances of one object share its row), empty for a kind none holds.
+    instanced: dict = field(default_factory=dict)
     # PathTrace's or GlobalTrace's max_depth (rtfgu/tracers), 0 for the ray-cast loop.
     max_depth: int = 0
     # Whether a path samples the lights at every vertex (PathTrace) or at the first only
@@ -467,6 +470,25 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             features.add("two_rays")   # the ray-cast loops keep a stack of rays
         return material_rows[key]
 
+    instanced = {kind.name: [] for kind in INSTANCED}
+    instanced_rows = {}   # id(object) -> its row in its kind's instanced table
+
+    def instance_row(p: int, kind, shape) -> list:
+        """The row of an Instance: its inverse matrix and its object's kind and instanced row."""
+        obj = shape.object
+        k, obj_kind = shape_kind_of(obj)
+        if obj_kind not in INSTANCED:
+            raise ValueError("Scene.shapes[%d]: the numba and WGSL paths take an Instance of a %s, got an Instance "
+                             "of a %s (the reference path renders it)"
+                             % (p, ", ".join(o.record for o in INSTANCED), type(obj).__name__))
+        if id(obj) not in instanced_rows:
+            instanced_rows[id(obj)] = len(instanced[obj_kind.name])
+            instanced[obj_kind.name].append(pack_row(obj_kind.record, obj))
+            features.add("instanced_" + obj_kind.name)
+        return pack_row(kind.record, SimpleNamespace(
+            **{name: getattr(shape, name) for name, _ in kind.fields if not name.startswith("object_")},
+            object_kind=k, object_row=instanced_rows[id(obj)]))
+
     i = 0   # the shape's index: its place in Scene.shapes, a Mesh counted as its faces
     for where, shape in _leaves(scene.shapes):
         if isinstance(shape, Mesh):
@@ -485,6 +507,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                              % (where, ", ".join(k.record for k in SHAPES), type(shape).__name__))
         if kind.bvh:
             mesh_faces.append((i, shape))
+        elif kind.instance:
+            rows[kind.name][0].append(instance_row(p, kind, shape))
         else:
             rows[kind.name][0].append(pack_row(kind.record, shape))
         rows[kind.name][1].append(i)
@@ -569,6 +593,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         textures={kind.name: table(texture_rows[kind.name], kind.record) for kind in TEXTURES},
         texels=np.array(texels or [0.0, 0.0, 0.0], dtype=dtype),
         mesh=mesh,
+        instanced={kind.name: table(instanced[kind.name], kind.record) for kind in INSTANCED},
         max_depth=max_depth if "path_trace" in features else 0,
         lights_at_every_vertex=bool(getattr(scene.tracer, "samples_lights_at", lambda depth: True)(1)),
         area_lighting=tracer_feature == "area_lighting",
@@ -578,6 +603,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     arrays = [("camera", flat.camera), ("materials", unique_table),
               ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]
+    arrays += [("instanced " + kind.table, flat.instanced[kind.name]) for kind in INSTANCED]
     if mesh is not None:
         arrays.append(("mesh vertices", mesh.vertices))
     arrays += [(kind.table, flat.lights[kind.name]) for kind in LIGHTS]

@@ -37,6 +37,7 @@ from .shapes.box import Box
 from .shapes.concave_part_sphere import ConcavePartSphere
 from .shapes.convex_part_sphere import ConvexPartSphere
 from .shapes.disk import Disk
+from .shapes.instance import Instance
 from .shapes.mesh import MeshTriangle
 from .shapes.open_cylinder import OpenCylinder
 from .shapes.open_part_cylinder import OpenPartCylinder
@@ -77,6 +78,11 @@ class ShapeKind(_Rows):
     # may hold the spheres too, rtfgu.layout.FlatMesh) and not by a loop over rows (numba ``mesh_closest``/``mesh_any``/``normal_mesh``/``texcoord_mesh`` in
     # ``numba_module``, WGSL ``mesh.wgsl``); its arrays are rtfgu.layout.FlatMesh's.
     bvh: bool = False
+    # An instance kind (Suffern ch. 21): its row is an inverse transformation and the kind
+    # and row of the object it holds, which lies in a table of that kind's own, one per
+    # INSTANCED kind (numba: generated in rtfgu.kernels.dispatch; WGSL: intersect_<name>.wgsl
+    # calls the object's intersection through a generated switch).
+    instance: bool = False
 
     @property
     def wgsl_file(self) -> str:
@@ -165,8 +171,15 @@ SHAPES = (
     # Suffern's torus: a quartic, solved by Schwarze's closed form (its WGSL piece with it).
     ShapeKind("torus", Torus, (("a", 1), ("b", 1)), numba_module="rtfgu.kernels.torus",
               uses=("solve_quartic",)),
+    # Suffern's Instance (rtfgu.shapes.instance): the rows of the inverse matrix (the
+    # translation after each) and the kind and row of its object in that kind's instanced table.
+    ShapeKind("instance", Instance, (("row0", 3), ("t0", 1), ("row1", 3), ("t1", 1), ("row2", 3), ("t2", 1),
+                                     ("object_kind", 1), ("object_row", 1)),
+              numba_module="rtfgu.kernels.instance", instance=True),
 )
 ROW_SHAPES = tuple(kind for kind in SHAPES if not kind.bvh)   # the kinds laid out a row per shape
+# The kinds an instance may hold on the numba and WGSL paths: each has an instanced table.
+INSTANCED = tuple(kind for kind in ROW_SHAPES if not kind.instance)
 
 SHADERS = (
     ShaderKind(BASE_COLOR, "base_color", "Material"),

@@ -37,17 +37,24 @@ class Scene:
     def with_faces(self) -> "Scene":
         """The scene as the lecture layer traces it: ``shapes`` with each ``Mesh`` replaced by
         its faces, ``mesh.triangles()`` (made on the first call, then kept by the mesh), in
-        place. A shallow copy that shares everything else; the scene itself when it holds no
+        place, and each Instance of a Mesh by an Instance of each face (``Instance.faces()``).
+        A shallow copy that shares everything else; the scene itself when it holds no
         Mesh. The numba and WGSL paths read a Mesh's arrays instead (rtfgu.layout)."""
+        from .shapes.instance import Instance
         from .shapes.mesh import Mesh
 
-        if not any(isinstance(shape, Mesh) for shape in self.shapes):
+        def has_faces(shape) -> bool:
+            return isinstance(shape, Mesh) or (isinstance(shape, Instance) and shape.holds_mesh())
+
+        if not any(has_faces(shape) for shape in self.shapes):
             return self
         view = copy.copy(self)
         view.shapes = []
         for shape in self.shapes:
             if isinstance(shape, Mesh):
                 view.shapes += shape.triangles()
+            elif has_faces(shape):
+                view.shapes += shape.faces()
             else:
                 view.shapes.append(shape)
         return view

@@ -21,6 +21,18 @@ def number(value, name: str, positive: bool = False) -> float:
     return float(value)
 
 
+def finite(value, name: str) -> float:
+    """``value`` as a float if it is a finite number of either sign (a height, a translation,
+    an angle)."""
+    try:
+        ok = not isinstance(value, bool) and math.isfinite(value)
+    except TypeError:
+        ok = False
+    if not ok:
+        raise ValueError("%s must be a finite number, got %r" % (name, value))
+    return float(value)
+
+
 def positive(value, name: str) -> float:
     """``value`` as a float if it is finite and > 0."""
     return number(value, name, positive=True)

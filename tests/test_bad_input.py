@@ -230,6 +230,32 @@ def test_compound_objects(make, names):
         make()
 
 
+@pytest.mark.parametrize("call,names", [
+    (lambda i: i.scale(0.0, 1.0, 1.0), ("Instance.scale", "a", "singular")),
+    (lambda i: i.scale(1.0, 1.0, 0.0), ("Instance.scale", "c", "singular")),
+    (lambda i: i.scale(0.0), ("Instance.scale", "a", "singular")),
+    (lambda i: i.scale(1.0, NAN, 1.0), ("Instance.scale", "b")),
+    (lambda i: i.translate(0.0, 0.0, NAN), ("Instance.translate", "dz")),
+    (lambda i: i.translate(INF, 0.0, 0.0), ("Instance.translate", "dx")),
+    (lambda i: i.rotate_x(NAN), ("Instance.rotate_x", "theta")),
+    (lambda i: i.rotate_z("90"), ("Instance.rotate_z", "theta")),
+    (lambda i: i.shear(hxy=1.0, hyx=1.0), ("Instance.shear", "singular")),
+    (lambda i: i.shear(hzy=NAN), ("Instance.shear", "hzy")),
+], ids=["scale_a_zero", "scale_c_zero", "uniform_scale_zero", "scale_nan", "translate_nan", "translate_inf",
+        "rotate_nan", "rotate_string", "shear_singular", "shear_nan"])
+def test_instance_transformations(call, names):
+    instance = rtfgu.Instance(Sphere(Float3(0, 0, 0), 1.0, RED))
+    before = (instance.inv_matrix, instance.forward_matrix)
+    with raises_naming(*names):
+        call(instance)
+    assert (instance.inv_matrix, instance.forward_matrix) == before, "a refused transformation changed the instance"
+
+
+def test_instance_object_must_be_a_shape():
+    with raises_naming("Instance.object"):
+        rtfgu.Instance(Float3(0, 0, 0))
+
+
 def test_area_light_names_the_shapes_it_takes():
     with raises_naming("AreaLight.shape", "Rectangle"):
         AreaLight(Plane(Float3(0, 0, 0), Float3(0, 1, 0), RED))

@@ -20,7 +20,7 @@ import pytest
 
 import mpmath
 
-from rtfgu import (Box, Dielectric, Disk, Emissive, Float3, GlossyReflector, Material, Matte, OpenCylinder,
+from rtfgu import (Box, Dielectric, Disk, Emissive, Float3, GlossyReflector, Instance, Material, Matte, OpenCylinder,
                    OrthographicCamera, Phong, Plane, Ray, Rectangle, Reflective, Scene, Sphere, Torus, Transparent,
                    Triangle, trace)
 from rtfgu.hardcases.exact import box_t, least_root, torus_quartic
@@ -248,6 +248,23 @@ def exact_mesh(shape, case):
     return exact_triangle(shape._triangle, case)
 
 
+def exact_instance(shape, case):
+    """Suffern's Instance::hit in fractions: the object's oracle on the ray through the
+    inverse matrix (its float entries, exactly), then the object's normal through the inverse
+    transpose, normalised (in floats: the length need not be rational)."""
+    m = [[Fraction(c) for c in row] for row in shape.inv_matrix.m]
+    o, d = F(case.origin), F(case.direction)
+    inner = Case(case.name, tuple(m[r][0] * o[0] + m[r][1] * o[1] + m[r][2] * o[2] + m[r][3] for r in range(3)),
+                 tuple(m[r][0] * d[0] + m[r][1] * d[1] + m[r][2] * d[2] for r in range(3)), case.tmin, case.tmax)
+    hit = SHAPE_CASES[shape_kind_of(shape.object)[1].name].exact(shape.object, inner)
+    if hit is None:
+        return None
+    t, n = hit
+    world = tuple(m[0][c] * n[0] + m[1][c] * n[1] + m[2][c] * n[2] for c in range(3))
+    length = math.sqrt(dot(world, world))
+    return t, tuple(float(c) / length for c in world)
+
+
 def mesh_face(v0, v1, v2, material):
     """Face 0 of a one-face mesh (the registry's "mesh" kind)."""
     return Mesh(np.array([v0, v1, v2], dtype=float), np.array([(0, 1, 2)]), GREY, material=material).triangles()[0]
@@ -432,6 +449,37 @@ SHAPE_CASES = {
          Case("hit at tmax", (0.5, 0.25, 2.0), (0.0, 0.0, -1.0), tmax=2.0, hits=False)),
         exact_mesh,
         lambda m: mesh_face((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), m)),
+    # The unit sphere scaled by (2, 1, 1) and moved by (1, 0, 0): the ellipsoid
+    # (x - 1)^2 / 4 + y^2 + z^2 = 1 (Suffern ch. 21).
+    "instance": KindCases(
+        lambda m: Instance(Sphere((0.0, 0.0, 0.0), 1.0, GREY, m)).scale(2.0, 1.0, 1.0).translate(1.0, 0.0, 0.0),
+        (Case("hit", (-5.0, 0.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("oblique hit (the normal through the inverse transpose)", (-3.0, 0.0, 3.0), (2.0, -0.5, -2.0)),
+         Case("hit from inside (the far root)", (1.0, 0.0, 0.0), (1.0, 0.0, 0.0)),
+         Case("tangent ray at the end of the long axis", (3.0, 0.0, 5.0), (0.0, 0.0, -1.0)),
+         Case("miss beside the ellipsoid", (3.25, 0.0, 5.0), (0.0, 0.0, -1.0), hits=False),
+         Case("miss behind the ray", (-5.0, 0.0, 0.0), (-1.0, 0.0, 0.0), hits=False),
+         Case("hit at tmax (the far root beyond it)", (-5.0, 0.0, 0.0), (1.0, 0.0, 0.0), tmax=4.0, hits=False)),
+        exact_instance,
+        # The box [-1, 1]^3 flattened to z in [-1, 0]: its top at z = 0.
+        lambda m: Instance(Box((-1.0, -1.0, -1.0), (1.0, 1.0, 1.0), GREY, m)).scale(1.0, 1.0, 0.5).translate(0.0, 0.0, -0.5)),
+}
+
+# More instances on every path (test_instance_contract): a rotated box, a sheared rectangle.
+INSTANCE_CASES = {
+    "rotated box": KindCases(   # the box [0, 2] x [0, 1] x [0, 1] turned to x in [-1, 0], y in [0, 2]
+        lambda m: Instance(Box((0.0, 0.0, 0.0), (2.0, 1.0, 1.0), GREY, m)).rotate_z(90.0),
+        (Case("hit on the face turned to +y", (-0.5, 5.0, 0.5), (0.0, -1.0, 0.0)),
+         Case("oblique hit on the face turned to -x", (-3.0, 1.0, 0.5), (1.0, 0.25, 0.0)),
+         Case("miss where the box was before the turn", (1.5, 0.5, 5.0), (0.0, 0.0, -1.0), hits=False)),
+        exact_instance, None),
+    "sheared rectangle": KindCases(   # the unit square in z = 0 sheared by hxz = 1: z = x
+        lambda m: Instance(Rectangle((0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY, m)).shear(hxz=1.0),
+        (Case("hit", (0.5, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("oblique hit", (0.0, 0.25, 2.0), (0.5, 0.0, -1.0)),
+         Case("hit on the edge x = 1", (1.0, 0.5, 3.0), (0.0, 0.0, -1.0)),
+         Case("miss beyond the sheared edge", (1.25, 0.5, 3.0), (0.0, 0.0, -1.0), hits=False)),
+        exact_instance, None),
 }
 
 SHAPE_NAMES = [kind.name for kind in SHAPES]
@@ -505,6 +553,31 @@ def test_shape_contract(path, kind, formula, case):
     assert _close(first.t, t, path.precision), "%s: t = %r, exactly %s" % (where, first.t, t)
     assert _close(first.normal, normal, path.precision), (
         "%s: normal %r, exactly %s" % (where, first.normal, tuple(map(str, normal))))
+
+
+INSTANCE_CASE_IDS = [(name, case.name) for name, entry in INSTANCE_CASES.items() for case in entry.cases]
+
+
+@pytest.mark.parametrize("name,case", INSTANCE_CASE_IDS, ids=["%s: %s" % k for k in INSTANCE_CASE_IDS])
+def test_instance_contract(path, name, case):
+    entry = INSTANCE_CASES[name]
+    c = next(c for c in entry.cases if c.name == case)
+    key = (path.label, "instance " + name, "slide")
+    if key not in _RUNS:   # every case of the shape in one call of the path
+        scene = _scene([entry.shape(Matte())])
+        _RUNS[key] = (scene.shapes[0], dict(zip((e.name for e in entry.cases),
+                                                path.trace(scene, [e.ray for e in entry.cases], "slide"))))
+    shape, runs = _RUNS[key]
+    exact = entry.exact(shape, c)
+    assert (exact is not None) == c.hits, "the oracle disagrees with the case's name"
+    first = runs[case][0]
+    where = "%s instance (%s): %s" % (path.label, name, case)
+    if exact is None:
+        assert first.shape is None, "%s: expected a miss, got shape %s at t = %r" % (where, first.shape, first.t)
+        return
+    assert first.shape == 0 and first.kind == "instance", "%s: expected a hit, got %r" % (where, first)
+    assert _close(first.t, exact[0], path.precision), "%s: t = %r, exactly %s" % (where, first.t, exact[0])
+    assert _close(first.normal, exact[1], path.precision), "%s: normal %r, exactly %r" % (where, first.normal, exact[1])
 
 
 # Shaders: one hit on the plane z = 0 at the origin by a ray at 3-4-5 angles, one point light

@@ -96,6 +96,15 @@ def test_exact_truth_by_hand():
     assert hi == 2 - math.sqrt(0.75) and abs(lo) < 1e-16
 
 
+def test_exact_instance_is_the_transformed_sphere():
+    """The ellipsoid of the unit sphere scaled by (2, 1, 1) and moved by (1, 0, 0): hit at
+    x = -1 from x = -5, touched at x = 3, missed just beyond."""
+    assert exact.instance((-5, 0, 0), (1, 0, 0), 0.0, math.inf, (2, 1, 1), (1, 0, 0)) == (4.0, 0.0)
+    assert exact.instance((3, 0, 5), (0, 0, -1), 0.0, math.inf, (2, 1, 1), (1, 0, 0)) == (5.0, 0.0)
+    assert exact.instance((3 + 2 ** -40, 0, 5), (0, 0, -1), 0.0, math.inf, (2, 1, 1), (1, 0, 0)) == exact.MISS
+    assert exact.instance((1, 0, 0), (1, 0, 0), 0.0, math.inf, (2, 1, 1), (1, 0, 0)) == (2.0, 0.0)
+
+
 def test_families_are_seeded_and_precision_specific():
     a = build("sphere_far_small", "float32")
     b = build("sphere_far_small", "float32", seed=2024)

@@ -40,7 +40,7 @@ def test_no_kernel_function_takes_more_than_twelve_parameters():
     assert not too_many, "kernel functions with more than %d parameters: %s" % (MAX_PARAMETERS, too_many)
 
 
-@pytest.mark.parametrize("kind", registry.ROW_SHAPES, ids=lambda k: k.name)
+@pytest.mark.parametrize("kind", [k for k in registry.ROW_SHAPES if not k.instance], ids=lambda k: k.name)
 def test_a_shape_kind_brings_its_numba_functions_and_wgsl_piece(kind):
     module = importlib.import_module(kind.numba_module)
     fields = [name for name, _ in kind.fields]
@@ -60,6 +60,21 @@ def test_a_shape_kind_brings_its_numba_functions_and_wgsl_piece(kind):
     assert getattr(rtfgu, kind.record) is kind.cls
     init = inspect.signature(kind.cls.__init__).parameters
     assert "color" in init and "material" in init
+
+
+@pytest.mark.parametrize("kind", [k for k in registry.SHAPES if k.instance], ids=lambda k: k.name)
+def test_an_instance_kind_brings_its_matrix_functions_and_wgsl_piece(kind):
+    """An instance's numba functions transform a point, a vector and a normal by its row (the
+    loops that call its object are generated); its WGSL intersection takes the ray, the hit
+    and its fields, and every kind an instance may hold has a row of its own."""
+    module = importlib.import_module(kind.numba_module)
+    for name in ("instance_point", "instance_vector", "instance_normal"):
+        assert list(inspect.signature(getattr(module, name).py_func).parameters)[:2] == ["table", "i"], name
+    m = re.search(r"fn intersect_%s\(([^)]*)\)" % kind.name, read_piece(kind.wgsl_file))
+    assert m and len(re.findall(r"(\w+)\s*:", m.group(1))) == 2 + len(kind.fields)
+    assert kind.record in layout.RECORDS and getattr(rtfgu, kind.record) is kind.cls
+    assert all(not k.bvh and not k.instance for k in registry.INSTANCED)
+    assert set(registry.INSTANCED) | {kind} == set(registry.ROW_SHAPES)
 
 
 @pytest.mark.parametrize("kind", [k for k in registry.SHAPES if k.bvh], ids=lambda k: k.name)

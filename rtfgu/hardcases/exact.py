@@ -103,15 +103,41 @@ def sphere(o, d, tmin, tmax, center, radius):
     roots = sphere_roots(o, d, center, radius)
     if roots is None:
         return MISS
+    return _least_root(roots, tmin, tmax)
+
+
+def _least_root(roots, tmin, tmax):
+    """Of the roots (t1, t2, (a, b, disc)) of a quadratic, t = (-b -+ sqrt(disc)) / a with
+    a > 0, the least in [tmin, tmax) as (hi, lo), or MISS."""
     t1, t2, (a, b, disc) = roots
     for sign, t in ((-1, t1), (1, t2)):
-        # t = (-b + sign sqrt(disc)) / a with a > 0
         if not _sqrt_ge(sign, disc, a * Q(float(tmin)) + b):
             continue
         if not math.isinf(tmax) and not _sqrt_lt(sign, disc, a * Q(float(tmax)) + b):
             continue
         return dd_from_mpf(t)
     return MISS
+
+
+def instance(o, d, tmin, tmax, scale, translate):
+    """The hard cases' instance, the ellipsoid ((p - translate) / scale)^2 = 1
+    (rtfgu.hardcases.kinds.ellipsoid): the unit sphere on the object-space ray
+    (o - translate) / scale, d / scale, exactly (the paths use the rounded inverse matrix)."""
+    if not (finite(*o, *d, *scale, *translate, tmin) and not math.isnan(tmax)):
+        return MISS
+    if 0.0 in (float(scale[0]), float(scale[1]), float(scale[2])) or (d[0] == 0 and d[1] == 0 and d[2] == 0):
+        return MISS
+    s, t = q3(scale), q3(translate)
+    f = tuple((a - b) / c for a, b, c in zip(q3(o), t, s))
+    dq = tuple(a / c for a, c in zip(q3(d), s))
+    a, b = dot(dq, dq), dot(f, dq)
+    disc = b * b - a * (dot(f, f) - 1)
+    if disc < 0:
+        return MISS
+    with mpmath.workdps(DIGITS):
+        root = mpmath.sqrt(_mpf(disc))
+        A, B = _mpf(a), _mpf(b)
+        return _least_root(((-B - root) / A, (-B + root) / A, (a, b, disc)), tmin, tmax)
 
 
 # --- plane ----------------------------------------------------------------------------

@@ -174,6 +174,37 @@ def _sphere_direction_scale_extreme(rng, n):
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
 
 
+# --- instances (Suffern ch. 21): ellipsoids, the unit sphere scaled and moved ------------
+
+def _ellipsoids(rng, n):
+    """(scale, translate) of n ellipsoids: axes 0.25..4, within 2 of the origin."""
+    return _log_uniform(rng, -0.6, 0.6, 3 * n).reshape(n, 3), rng.uniform(-2, 2, (n, 3))
+
+
+def _to_world(scale, translate, o, d):
+    """Object-space rays of the unit sphere as the world's rays of the ellipsoid."""
+    return o * scale + translate, d * scale
+
+
+@family("instance_tangent", "instance", "instance",
+        "rays grazing an ellipsoid: through the unit sphere at impact 1 +- 2e-4 in object space, "
+        "20-100 radii away")
+def _instance_tangent(rng, n):
+    scale, translate = _ellipsoids(rng, n)
+    o, d = _aim_at_sphere(rng, np.zeros((n, 3)), np.ones(n), rng.uniform(20, 100, n),
+                          1.0 + rng.uniform(-2e-4, 2e-4, n))
+    o, d = _to_world(scale, translate, o, d)
+    return dict(origins=o, directions=d, shapes=[np.column_stack([scale, translate])])
+
+
+@family("instance_inside", "instance", "instance", "rays that start inside an ellipsoid")
+def _instance_inside(rng, n):
+    scale, translate = _ellipsoids(rng, n)
+    o = _random_unit(rng, n) * rng.uniform(0, 0.999, n)[:, None]
+    o, d = _to_world(scale, translate, o, _random_unit(rng, n))
+    return dict(origins=o, directions=d, shapes=[np.column_stack([scale, translate])])
+
+
 # --- planes ---------------------------------------------------------------------------
 
 _INTEGER_NORMALS = np.array([(0, 0, 1), (1, 2, 2), (3, 4, 0), (1, 1, 1), (2, -1, 2), (0, 3, 4),

@@ -13,7 +13,8 @@ flattened: a sphere (center, radius) is 4 floats, a triangle (v0, v1, v2) 9. Fro
   reads the row with ``arg3``/``arg1`` and calls the kind's WGSL function.
 
 A kind without a robust formula (the disk, the rectangle, the box, the open cylinder, the torus,
-the part sphere, the annulus) runs the slide formula only.
+the part sphere, the annulus, the instance) runs the slide formula only. The instance's row is
+(scale, translate) of an ellipsoid made from the unit sphere (``ellipsoid``).
 """
 from __future__ import annotations
 
@@ -30,6 +31,8 @@ class HardCaseKind:
     args: tuple                  # components of each constructor argument: (3, 1) for a sphere
     robust: object = None        # rtfgu.robust's test (ray, *args) -> bool, or None
     point_error: object = None   # rtfgu.robust's error bound of a hit point (p, *args) -> Float3
+    make: object = None          # (*args, color) -> the lecture shape, where it is not cls(*args, color)
+    pieces: tuple = ()           # the kinds whose WGSL pieces the WGSL path needs, where not its own
 
     @property
     def cls(self) -> type:
@@ -51,9 +54,24 @@ class HardCaseKind:
             k += components
         return out
 
+    def build(self, row, color):
+        """The lecture shape of ``row``."""
+        args = self.lecture_args(row)
+        return self.make(*args, color) if self.make is not None else self.cls(*args, color)
+
     def lecture_args(self, row) -> list:
         return [Float3(float(a[0]), float(a[1]), float(a[2])) if hasattr(a, "__len__") else float(a)
                 for a in self.split(row)]
+
+
+def ellipsoid(scale, translate, color):
+    """The hard cases' instance (Suffern ch. 21): the unit sphere at the origin scaled by
+    ``scale``, then moved by ``translate``."""
+    from ..shapes.instance import Instance
+    from ..shapes.sphere import Sphere
+
+    return Instance(Sphere(Float3(0.0), 1.0, color)).scale(scale.x, scale.y, scale.z).translate(
+        translate.x, translate.y, translate.z)
 
 
 KINDS = {kind.name: kind for kind in (
@@ -71,5 +89,6 @@ KINDS = {kind.name: kind for kind in (
     # The angles in degrees, as the lecture constructor takes them.
     HardCaseKind("convex_part_sphere", (3, 1, 1, 1, 1, 1)),
     HardCaseKind("annulus", (3, 3, 1, 1)),
+    HardCaseKind("instance", (3, 3), make=ellipsoid, pieces=("sphere",)),
 )}
 assert set(KINDS) <= set(SHAPE_BY_NAME), "every hard-case kind is a kind of rtfgu.registry"

@@ -54,9 +54,8 @@ class ReferencePath(Path):
         out = np.full(origins.shape[0], np.inf)
         for i in range(origins.shape[0]):
             ray = Ray(_f3(origins[i]), _f3(directions[i]), float(tmin[i]), float(tmax[i]))
-            args = k.lecture_args(shapes[i])
-            hit = (k.cls(*args, WHITE).intersect_p(ray) if self.formula == "slide"
-                   else k.robust(ray, *args))
+            hit = (k.build(shapes[i], WHITE).intersect_p(ray) if self.formula == "slide"
+                   else k.robust(ray, *k.lecture_args(shapes[i])))
             if hit:
                 out[i] = ray.tmax
         return out

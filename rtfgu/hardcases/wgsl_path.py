@@ -28,8 +28,7 @@ def program(kind: str, formula: str, spawn: bool = False):
     from ..wgsl.harness import batch_program
 
     pieces = ["ray.wgsl", "hitinfo.wgsl"]
-    for used in SHAPE_BY_NAME[kind].uses + (kind,):
-        pieces.append(_piece(used, formula))
+    pieces += [_piece(used, formula) for used in KINDS[kind].pieces or SHAPE_BY_NAME[kind].uses + (kind,)]
     if spawn:
         pieces.append("robust_spawn.wgsl")
     pieces.append("hardcase_main.wgsl")

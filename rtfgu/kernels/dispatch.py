@@ -33,7 +33,7 @@ import warnings
 from pathlib import Path
 
 from .. import layout
-from ..registry import LIGHTS, SHADERS, SHAPES, TEXTURES
+from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_IDS, SHAPES, TEXTURES
 
 # The texels' place in the kernels' ``scene`` tuple; a table per texture kind follows.
 TEXELS = 3
@@ -47,7 +47,11 @@ MESH_SLOTS = ("vertices", "faces", "normals", "nodes", "links", "uvs")
 
 
 def slots(kind) -> int:
-    return len(MESH_SLOTS) if kind.bvh else 2
+    """A mesh kind's MESH_SLOTS; an instance kind's table and index, then the instanced table
+    of each kind an instance may hold (rtfgu.registry.INSTANCED); a row kind's table and index."""
+    if kind.bvh:
+        return len(MESH_SLOTS)
+    return 2 + len(INSTANCED) if kind.instance else 2
 
 
 def slot_offsets() -> dict:
@@ -79,6 +83,85 @@ def _mesh_parts(k: int, kind, at: int) -> list:
                     "    return texcoord_mesh(vertices, faces, uvs, row, position)",
                     "The (u, v) of face ``row`` at ``position``"),
     ]
+
+
+def _object_switch(name: str, params: str, call: str, default: str, doc: str) -> str:
+    """``name(objects, kind, row, <params>)``: ``call`` (a format of the object kind's name,
+    its instanced table in the tuple ``objects`` and ``params``) for the object's kind;
+    ``default`` for none."""
+    lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+             "def %s(objects, kind, row, %s):" % (name, params),
+             '    """%s"""' % doc]
+    for m, obj in enumerate(INSTANCED):
+        lines.append("    if kind == %d:\n        return %s" % (SHAPE_IDS[obj.name],
+                                                               call.format(kind=obj.name, table="objects[%d]" % m)))
+    lines.append("    return " + default)
+    return "\n".join(lines)
+
+
+def _objects(at: int) -> str:
+    """The tuple of an instance kind's instanced tables, whose slots follow its table and
+    index from ``at`` on in ``shapes``."""
+    return "(%s,)" % ", ".join("shapes[%d]" % (at + 2 + m) for m in range(len(INSTANCED)))
+
+
+def _instance_parts(k: int, kind) -> list:
+    """An instance kind's scan_, any_hit_, normal_row_ and texcoord_row_ (Suffern ch. 21,
+    rtfgu/shapes/instance.py): the ray, the point and the direction through the row's inverse
+    matrix (rtfgu.kernels.instance), then the object's kind through a switch over the instanced
+    tables, ``objects`` (a tuple in INSTANCED order); a table the scene lacks is None and its
+    case compiles to nothing."""
+    name = kind.name
+    columns = {f: c for f, _, c in layout.RECORDS[kind.record][1]}
+    assert [columns[f] for f in ("row0", "t0", "row1", "t1", "row2", "t2")] == [0, 3, 4, 7, 8, 11], \
+        "rtfgu.kernels.instance reads the inverse matrix at columns 0-11"
+    obj = "int(table[%%s, %d]), int(table[%%s, %d])" % (columns["object_kind"], columns["object_row"])
+    parts = []
+    for o in INSTANCED:
+        body = []
+        for formula in o.formulas[::-1]:
+            call = "%s(origin, direction, tmin, tmax, %s)" % (o.formula_function(formula), _row_args(o, "table", "row"))
+            body.append("    if formula == %d:\n        return %s" % (FORMULAS.index(formula), call)
+                        if formula != "slide" else "    return " + call)
+        parts.append(_overloaded("instanced_t_" + o.name, "table, row, origin, direction, tmin, tmax, formula",
+                                 "lit(math.inf, tmin)", "\n".join(body),
+                                 "t of row ``row`` of the instanced %ss, or inf" % o.name))
+    parts.append(_object_switch("instanced_t", "origin, direction, tmin, tmax, formula",
+                                "instanced_t_{kind}({table}, row, origin, direction, tmin, tmax, formula)",
+                                "lit(math.inf, tmin)", "The object's t in [tmin, tmax] along the object-space ray, or inf."))
+    parts.append(_object_switch("instanced_normal", "position, direction",
+                                "normal_row_{kind}({table}, row, position, direction)", "position",
+                                "The object's hit normal at an object-space point."))
+    parts.append(_object_switch("instanced_texcoord", "position", "texcoord_row_{kind}({table}, row, position)",
+                                "(position[0], position[0])", "The object's (u, v) at an object-space point."))
+    keep = _KEEP.format(kind=k)
+    scan = ["    tmax, best, kind, row = hit",
+            "    for i in range(table.shape[0]):",
+            "        t = instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
+            "tmin, tmax, formula)" % (obj % ("i", "i"))] + [line[4:] for line in keep.split("\n")] + [
+            "    return tmax, best, kind, row"]
+    parts.append(_overloaded("scan_" + name, "table, index, objects, origin, direction, tmin, hit, formula",
+                             "hit", "\n".join(scan), "The nearest hit among the instances, given the nearest so far",
+                             absent_on="index"))
+    parts.append(_overloaded(
+        "any_hit_" + name, "table, index, objects, origin, direction, tmin, tmax, formula", "False",
+        "\n".join(["    for i in range(table.shape[0]):",
+                   "        if instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
+                   "tmin, tmax, formula) < tmax:" % (obj % ("i", "i")),
+                   "            return True",
+                   "    return False"]),
+        "Is any instance hit in [tmin, tmax)?", absent_on="index"))
+    parts.append(_overloaded(
+        "normal_row_" + name, "table, objects, row, position, direction", "position",
+        "\n".join(["    n = instanced_normal(objects, %s, instance_point(table, row, position), "
+                   "instance_vector(table, row, direction))" % (obj % ("row", "row")),
+                   "    return normalize(instance_normal(table, row, n))"]),
+        "The object's normal at the object-space point through the inverse transpose, normalised"))
+    parts.append(_overloaded(
+        "texcoord_row_" + name, "table, objects, row, position", "(position[0], position[0])",
+        "    return instanced_texcoord(objects, %s, instance_point(table, row, position))" % (obj % ("row", "row")),
+        "The object's (u, v) at the object-space point"))
+    return parts
 
 
 def _row_args(kind, table: str, row: str) -> str:
@@ -232,6 +315,8 @@ def _by_kind(name, row_function, what, default, mesh_slots, extra="") -> str:
     for k, kind in enumerate(SHAPES):
         arrays = ", ".join("shapes[%d]" % (at[kind.name] + m) for m in mesh_slots) if kind.bvh \
             else "shapes[%d]" % at[kind.name]
+        if kind.instance:   # the instance table, then the instanced tables
+            arrays += ", " + _objects(at[kind.name])
         lines.append("    if kind == %d:\n        return %s%s(%s, row, position%s)"
                      % (k, row_function, kind.name, arrays, extra))
     return "\n".join([
@@ -330,6 +415,9 @@ def source() -> str:
         if kind.bvh:
             names.update(("mesh_closest", "mesh_any", "normal_mesh", "texcoord_mesh"))
             continue
+        if kind.instance:
+            names.update(("instance_point", "instance_vector", "instance_normal"))
+            continue
         names.update(kind.formula_function(f) for f in kind.formulas)
         names.add("normal_" + kind.name)
         if kind.from_eye:
@@ -346,7 +434,7 @@ def source() -> str:
              "from rtfgu.kernels.dispatch_support import as_python",
              "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
              "import math",
-             "from rtfgu.kernels.float3 import div",
+             "from rtfgu.kernels.float3 import div, normalize",
              "from rtfgu.kernels.lights import %s" % ", ".join(
                  ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
              "from rtfgu.kernels.sampling import sampler_point, sampler_sets",
@@ -355,15 +443,21 @@ def source() -> str:
              "from rtfgu.kernels.shaders import ends, surface, %s" % ", ".join(sorted(shader_names)),
              "from rtfgu.layout import MAT_COLOR, MAT_EMISSION, MAT_TEXTURE, MAT_TEXTURE_ROW",
              "from rtfgu.kernels.textures import %s" % ", ".join(
-                 ["texcoord_" + k.name for k in SHAPES if not k.bvh] + ["texture_" + t.name for t in TEXTURES]),
+                 ["texcoord_" + k.name for k in SHAPES if not (k.bvh or k.instance)]
+                 + ["texture_" + t.name for t in TEXTURES]),
              "from rtfgu.ray import SPAWN_EPSILON"]
     for module, names in sorted(imports.items()):
         header.append("from %s import %s" % (module, ", ".join(sorted(names))))
     parts = [header[0] + "\n" + "\n".join(header[1:])]
     at = slot_offsets()
     for k, kind in enumerate(SHAPES):
-        parts += _mesh_parts(k, kind, at[kind.name]) if kind.bvh else \
-            [_scan(k, kind), _any_hit(kind), _normal(kind), _texcoord(kind)]
+        if kind.bvh:
+            parts += _mesh_parts(k, kind, at[kind.name])
+        elif not kind.instance:
+            parts += [_scan(k, kind), _any_hit(kind), _normal(kind), _texcoord(kind)]
+    for k, kind in enumerate(SHAPES):   # after the kinds an instance holds, whose functions they call
+        if kind.instance:
+            parts += _instance_parts(k, kind)
     for texture in TEXTURES:
         parts.append(_texture_lookup(texture))
 
@@ -379,10 +473,13 @@ def source() -> str:
                                 % (kind.name, mesh))
             continue
         eye_args = "terms, candidates, n_candidates, " if kind.from_eye else ""
+        if kind.instance:
+            eye_args = _objects(a) + ", "
         calls.append("    hit = scan_%s(shapes[%d], shapes[%d], %sorigin, direction, tmin, hit, formula)"
                      % (kind.name, a, a + 1, eye_args))
-        shadow_calls.append("    if any_hit_%s(shapes[%d], shapes[%d], position, w_i, tmin, tmax, formula):\n        return True"
-                            % (kind.name, a, a + 1))
+        shadow_args = eye_args if kind.instance else ""
+        shadow_calls.append("    if any_hit_%s(shapes[%d], shapes[%d], %sposition, w_i, tmin, tmax, formula):\n        return True"
+                            % (kind.name, a, a + 1, shadow_args))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula):",

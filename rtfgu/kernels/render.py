@@ -39,12 +39,12 @@ from numba.extending import overload
 
 from ..layout import THIN_LENS
 from ..materials.material import BASE_COLOR
-from ..registry import SHAPES, TEXTURES
+from ..registry import INSTANCED, SHAPES, TEXTURES
 from ..sampling.random import LENS_SET, PIXEL_SET, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
-from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, surface_color
+from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, slots, surface_color
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, mul, scale
 from .environment import ENVIRONMENT, background_radiance
@@ -75,8 +75,14 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
             mesh = flat.mesh
             shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links, mesh.uvs)
                        if mesh is not None else (None,) * len(MESH_SLOTS))
+        elif kind.instance and (flat.count(kind.name) or empty):
+            # The instance table and index, then the instanced table of each kind an instance
+            # may hold (None for a kind none holds).
+            shapes += (flat.table(kind.name), flat.index(kind.name)) + tuple(
+                flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED)
         elif flat.count(kind.name) == 0:
-            shapes += (flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)
+            shapes += ((flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)) \
+                + (None,) * (slots(kind) - 2)
         elif kind.name == "sphere" and flat.mesh is not None and flat.mesh.spheres:
             # The BVH holds the spheres: no loop of their own (scan and any_hit are absent
             # without an index), their table kept for the BVH, their normals and (u, v).

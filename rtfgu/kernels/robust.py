@@ -363,6 +363,20 @@ def annulus_slide(o, d, tmin, tmax, shapes, i):
 
 
 @njit(cache=True, error_model="numpy")
+def instance_slide(o, d, tmin, tmax, shapes, i):
+    """The hard cases' instance (rtfgu.hardcases.kinds.ellipsoid): the unit sphere on the ray
+    through the inverse matrix that Instance.scale then translate compose, 1 / s and
+    (1 / s) (-t) per axis, in the rows' precision."""
+    one = lit(1.0, tmin)
+    inv = (one / shapes[i, 0], one / shapes[i, 1], one / shapes[i, 2])
+    moved = (inv[0] * -shapes[i, 3], inv[1] * -shapes[i, 4], inv[2] * -shapes[i, 5])
+    origin = (inv[0] * o[0] + moved[0], inv[1] * o[1] + moved[1], inv[2] * o[2] + moved[2])
+    zero = lit(0.0, tmin)
+    return intersect_sphere(origin, (inv[0] * d[0], inv[1] * d[1], inv[2] * d[2]), tmin, tmax,
+                            (zero, zero, zero), one)
+
+
+@njit(cache=True, error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
     where ``finite`` says the input is not finite."""
@@ -416,5 +430,6 @@ ADAPTERS = {("sphere", "slide"): (sphere_slide, _any), ("sphere", "robust"): (sp
             ("disk", "slide"): (disk_slide, _any), ("rectangle", "slide"): (rectangle_slide, _any),
             ("box", "slide"): (box_slide, _any), ("open_cylinder", "slide"): (open_cylinder_slide, _any),
             ("torus", "slide"): (torus_slide, _any),
-            ("convex_part_sphere", "slide"): (convex_part_sphere_slide, _any), ("annulus", "slide"): (annulus_slide, _any)}
+            ("convex_part_sphere", "slide"): (convex_part_sphere_slide, _any), ("annulus", "slide"): (annulus_slide, _any),
+            ("instance", "slide"): (instance_slide, _any)}
 POINT_ERRORS = {"sphere": sphere_error, "plane": plane_error, "triangle": triangle_error}

@@ -24,6 +24,11 @@ one picked per pixel, leave noise instead.
 Suffern ch. 11 and 12 (a fish-eye and a spherical panoramic camera, a stereo pair) looking
 at a ring of spheres on the checkered floor.
 
+``suffern_21_instances``: Suffern ch. 21's instancing: one unit sphere, one box and one open
+cylinder, each placed several times by an Instance (scaled, rotated, sheared, moved) with a
+material of its own: three ellipsoids, two turned boxes and a leaning cylinder on the
+checkered floor.
+
 ``suffern_24_reflective`` and ``suffern_27_transparent``: the book's Reflective (a Phong
 surface that also mirrors, ch. 24) and Transparent (a Phong highlight, a reflected and a
 refracted ray, ch. 27) traced by Whitted, with the coefficients of the book's listings.
@@ -51,6 +56,7 @@ from ..shapes.concave_part_sphere import ConcavePartSphere
 from ..shapes.convex_part_sphere import ConvexPartSphere
 from ..shapes.disk import Disk
 from ..shapes.flat_rimmed_bowl import FlatRimmedBowl
+from ..shapes.instance import Instance
 from ..shapes.open_cylinder import OpenCylinder
 from ..shapes.rectangle import Rectangle
 from ..shapes.sphere import Sphere
@@ -177,6 +183,31 @@ def suffern_27_transparent() -> Scene:
     scene.shapes.append(Sphere(Float3(0.0, 1.0, 1.5), 1.0, Float3(1.0), glass))
     for x, color in ((-1.6, Float3(0.8, 0.15, 0.1)), (0.0, Float3(0.1, 0.6, 0.15)), (1.6, Float3(0.1, 0.3, 0.8))):
         scene.shapes.append(Sphere(Float3(x, 0.7, -1.5), 0.7, color, Matte()))
+    return scene
+
+
+@homework(512, 512)
+def suffern_21_instances() -> Scene:
+    """Suffern ch. 21: instances of one unit sphere (ellipsoids: scaled, turned, moved), of one
+    unit box (turned about y, then about x) and of one open cylinder (sheared so that it leans,
+    its inside lit through its top), each instance with its own material, on the checkered
+    floor; the transformations compose in the order they are called (ch. 21.2)."""
+    scene = _book_stage(Float3(0.0, 4.2, 8.0), Float3(0.0, 0.6, 0.0))
+    sphere = Sphere(Float3(0.0, 0.0, 0.0), 1.0, Float3(1.0))
+    box = Box(Float3(-0.5, -0.5, -0.5), Float3(0.5, 0.5, 0.5), Float3(1.0))
+    cylinder = OpenCylinder(0.0, 1.0, 0.5, Float3(1.0))
+    shiny = Phong(cs=Float3(0.3, 0.3, 0.3), exp=30.0)
+    scene.shapes += [
+        Instance(sphere, Phong(cd=Float3(0.8, 0.15, 0.1), cs=Float3(0.3, 0.3, 0.3), exp=40.0))
+        .scale(1.2, 0.45, 0.6).rotate_z(25.0).translate(-2.2, 1.0, 0.4),
+        Instance(sphere, Matte(cd=Float3(0.9, 0.75, 0.1))).scale(0.35, 1.1, 0.35).translate(-0.9, 1.1, -2.0),
+        Instance(sphere, Matte(cd=Float3(0.1, 0.6, 0.2))).scale(0.8, 0.25, 0.8).rotate_x(-20.0)
+        .translate(2.1, 0.5, 1.3),
+        Instance(box, Matte(cd=Float3(0.1, 0.3, 0.8))).scale(1.0, 0.6, 1.0).rotate_y(35.0).translate(1.6, 0.3, -1.0),
+        Instance(box, shiny).scale(0.6).rotate_y(-30.0).rotate_x(20.0).translate(-0.9, 0.45, 1.6),
+        Instance(cylinder, Matte(cd=Float3(0.9, 0.5, 0.1))).shear(hyx=0.5).scale(1.1, 1.2, 1.1)
+        .translate(0.1, 0.0, -0.3),
+    ]
     return scene
 
 

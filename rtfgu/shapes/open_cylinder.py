@@ -24,6 +24,7 @@ import math
 
 from ..float3 import Float3, dot, normalize
 from ..ray import Ray
+from ..validation import finite
 from .shape import Shape, positive
 from .sphere import Sphere
 
@@ -32,8 +33,8 @@ class OpenCylinder(Shape):
     def __init__(self, y0: float, y1: float, radius: float, color, material=None):
         super().__init__(color, material)
         name = type(self).__name__
-        self.y0 = _height(y0, name + ".y0")
-        self.y1 = _height(y1, name + ".y1")
+        self.y0 = finite(y0, name + ".y0")
+        self.y1 = finite(y1, name + ".y1")
         if not self.y0 < self.y1:
             raise ValueError("%s.y0 must be below %s.y1, got y0 = %r, y1 = %r" % (name, name, self.y0, self.y1))
         self.radius = positive(radius, name + ".radius")
@@ -77,13 +78,3 @@ class OpenCylinder(Shape):
             phi += 2.0 * math.pi
         return phi / (2.0 * math.pi), (position.y - self.y0) / (self.y1 - self.y0)
 
-
-def _height(value, name: str) -> float:
-    """A finite height (of either sign)."""
-    try:
-        ok = not isinstance(value, bool) and math.isfinite(value)
-    except TypeError:
-        ok = False
-    if not ok:
-        raise ValueError("%s must be a finite number, got %r" % (name, value))
-    return float(value)

@@ -32,7 +32,7 @@ from importlib import resources
 import numpy as np
 
 from .. import layout
-from ..registry import LIGHTS, SHADERS, SHAPE_BY_NAME, SHAPES, TEXTURES
+from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_BY_NAME, SHAPES, TEXTURES
 from ..options import DEFAULT_FORMULAS
 from . import structs
 
@@ -62,8 +62,9 @@ def _lit(features) -> bool:
 
 
 def _shape_kinds(features):
-    """The shape kinds the program needs: the scene's, and the kinds they call."""
-    names = {k.name for k in SHAPES if k.name in features}
+    """The shape kinds the program needs: the scene's, those its instances hold, and the
+    kinds they call."""
+    names = {k.name for k in SHAPES if k.name in features or "instanced_" + k.name in features}
     for kind in SHAPES:
         if kind.name in names:
             names.update(kind.uses)
@@ -185,7 +186,11 @@ def each_kinds(flat, features, formula):
             brdfs.append({"$ID": kind.name.upper(), "$of": kind.brdf_of or kind.name})
     textures = [{"$kind": kind.name, "$ID": str(k)} for k, kind in enumerate(TEXTURES)
                 if kind.name in features]
-    return {"shape": shapes, "row": rows, "light": lights, "shader": shaders, "brdf": brdfs, "texture": textures}
+    # The kinds the scene's instances hold, in their instanced tables (intersect_instance.wgsl).
+    instanced = [{"$kind": kind.name, "$table": "instanced_" + kind.table, "$KIND": kind.name.upper(),
+                  "$args": ", ".join("rec." + name for name, _ in kind.fields)}
+                 for kind in INSTANCED if "instanced_" + kind.name in features]
+    return {"shape": shapes, "row": rows, "light": lights, "instanced": instanced, "shader": shaders, "brdf": brdfs, "texture": textures}
 
 
 # The arrays bound as storage buffers whatever their size.
@@ -233,6 +238,9 @@ def binding_data(flat, name: str) -> np.ndarray:
             return flat.textures[kind.name]
     if name in MESH_BINDINGS:
         return MESH_BINDINGS[name](flat)
+    for kind in INSTANCED:
+        if name == "instanced_" + kind.table:
+            return flat.instanced[kind.name]
     for kind in SHAPES:
         if name == kind.table:
             return flat.table(kind.name)
@@ -398,6 +406,10 @@ def _bindings(flat, features, scene_buffer: str) -> list:
             index = flat.index(kind.name)
             wanted.append((kind.name + "_index", "array<vec4i, %d>" % (len(_packed_index(index)) // 4),
                            index, True))
+        for kind in INSTANCED:   # the objects of the instances (intersect_instance.wgsl)
+            table = flat.instanced[kind.name]
+            if len(table):
+                wanted.append(("instanced_" + kind.table, "array<%s, %d>" % (kind.record, len(table)), table, False))
         if len(flat.shaders):
             wanted.append(("materials", "array<Material, NUM_SHAPES>", flat.materials, False))
             wanted.append(("shaders", "array<vec4i, %d>" % (len(_packed_index(flat.shaders)) // 4),

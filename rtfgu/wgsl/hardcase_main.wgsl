@@ -83,6 +83,13 @@ fn hardcase_hit(r: Ray, hit: ptr<function, HitInfo>) -> bool
     // #if annulus
     return intersect_annulus(r, hit, arg3(0u), arg3(3u), arg1(6u), arg1(7u));
     // #endif
+    // #if instance
+    // An ellipsoid: the unit sphere scaled by arg3(0), moved by arg3(3), through the inverse
+    // matrix Instance composes (1 / s, and (1 / s) (-t)), as intersect_instance.wgsl applies it.
+    let inv = vec3f(1.0) / arg3(0u);
+    let moved = inv * -arg3(3u);
+    return intersect_sphere(Ray(inv * r.origin + moved, inv * r.direction, r.tmin, r.tmax), hit, vec3f(0.0), 1.0);
+    // #endif
 }
 
 // #if spawn
