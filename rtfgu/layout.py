@@ -473,14 +473,14 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     instanced = {kind.name: [] for kind in INSTANCED}
     instanced_rows = {}   # id(object) -> its row in its kind's instanced table
 
-    def instance_row(p: int, kind, shape) -> list:
+    def instance_row(where: str, kind, shape) -> list:
         """The row of an Instance: its inverse matrix and its object's kind and instanced row."""
         obj = shape.object
         k, obj_kind = shape_kind_of(obj)
         if obj_kind not in INSTANCED:
-            raise ValueError("Scene.shapes[%d]: the numba and WGSL paths take an Instance of a %s, got an Instance "
+            raise ValueError("%s: the numba and WGSL paths take an Instance of a %s, got an Instance "
                              "of a %s (the reference path renders it)"
-                             % (p, ", ".join(o.record for o in INSTANCED), type(obj).__name__))
+                             % (where, ", ".join(o.record for o in INSTANCED), type(obj).__name__))
         if id(obj) not in instanced_rows:
             instanced_rows[id(obj)] = len(instanced[obj_kind.name])
             instanced[obj_kind.name].append(pack_row(obj_kind.record, obj))
@@ -508,7 +508,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         if kind.bvh:
             mesh_faces.append((i, shape))
         elif kind.instance:
-            rows[kind.name][0].append(instance_row(p, kind, shape))
+            rows[kind.name][0].append(instance_row(where, kind, shape))
         else:
             rows[kind.name][0].append(pack_row(kind.record, shape))
         rows[kind.name][1].append(i)
