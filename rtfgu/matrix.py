@@ -71,21 +71,28 @@ class Matrix:
         return "Matrix(%r)" % (self.m,)
 
     def transform_point(self, p: Float3) -> Float3:
+        """The point p (w = 1) through this matrix: the book's Matrix * Point3D."""
+        ### BEGIN SOLUTION
         m = self.m
         return Float3(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
                       m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
                       m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3])
+        ### END SOLUTION
 
     def transform_vector(self, v: Float3) -> Float3:
+        ### BEGIN SOLUTION
         m = self.m
         return Float3(m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
                       m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
                       m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z)
+        ### END SOLUTION
 
     def transform_normal(self, n: Float3) -> Float3:
         """The transpose of this matrix times ``n``: with this matrix the inverse of a
         transformation, the normal of the transformed surface (not normalised)."""
+        ### BEGIN SOLUTION
         m = self.m
         return Float3(m[0][0] * n.x + m[1][0] * n.y + m[2][0] * n.z,
                       m[0][1] * n.x + m[1][1] * n.y + m[2][1] * n.z,
                       m[0][2] * n.x + m[1][2] * n.y + m[2][2] * n.z)
+        ### END SOLUTION

@@ -578,8 +578,58 @@ A12 = Assignment(
            "assignments 1-4 (your own or the revealed solutions). There is no image to hand in."),
 )
 
-PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10, A11, A12)
-ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10, A11, A12)}
+A13 = Assignment(
+    id="a13_instancing",
+    title="Instancing: affine transformations and the inverse-transformed ray",
+    blocks=(
+        Block("matrix.py", "Matrix.transform_point",
+              "The point p (w = 1) through the matrix (Suffern ch. 20, Matrix * Point3D): row i of the result is\n"
+              "m[i][0] p.x + m[i][1] p.y + m[i][2] p.z + m[i][3], each sum taken left to right. Return a Float3."),
+        Block("matrix.py", "Matrix.transform_vector",
+              "The vector v (w = 0) through the matrix (Matrix * Vector3D): as transform_point without the\n"
+              "translation m[i][3]: a direction does not move."),
+        Block("matrix.py", "Matrix.transform_normal",
+              "The normal n through this matrix's transpose (ch. 20.5, Matrix * Normal; the matrix is an\n"
+              "inverse): row i of the result is m[0][i] n.x + m[1][i] n.y + m[2][i] n.z. Not normalised."),
+        Block("shapes/instance.py", "Instance._compose",
+              "Compose one more transformation after those before (ch. 21): the forward matrix becomes\n"
+              "forward * self.forward_matrix, the inverse self.inv_matrix * inverse (the inverse of a product\n"
+              "is the product of the inverses in the other order). Return self, so that calls chain."),
+        Block("shapes/instance.py", "Instance.object_ray",
+              "The ray in the object's space (ch. 21.1): the origin through self.inv_matrix as a point, the\n"
+              "direction as a vector, NOT normalised (so the object's t is the world ray's t), the same tmin and\n"
+              "tmax. Return a new Ray."),
+        Block("shapes/instance.py", "Instance.normal_at",
+              "The object's normal_at at the object-space point (position through self.inv_matrix), through\n"
+              "self.inv_matrix.transform_normal, normalised."),
+        Block("shapes/instance.py", "Instance.hit_normal",
+              "As normal_at, with the object's hit_normal at the object-space point and the object-space\n"
+              "direction (the direction through self.inv_matrix as a vector), so that a normal that turns\n"
+              "toward the ray turns toward it here too."),
+    ),
+    task=("Place shapes with affine transformations (Suffern ch. 20, \"Affine Transformations\"; ch. 21,\n"
+          "\"Instancing\"). A `Matrix` transforms points, vectors and normals, each its own way; an `Instance`\n"
+          "keeps the inverse of its transformation, composed call after call, and intersects its object with\n"
+          "the ray brought into the object's space: an ellipsoid is a unit sphere seen through a scale, a\n"
+          "turned box a box seen through a rotation. The tests check the three products on chosen matrices,\n"
+          "the composed matrices of chains of calls (the order matters), the object-space ray, the hits and\n"
+          "normals of transformed shapes against their exact values, and Suffern's figure 21 scene rendered\n"
+          "by the lecture layer."),
+    formulas=("- A point (w = 1), a vector (w = 0): M p and M v; a normal: (M^-1)^T n (Suffern ch. 20.5)\n"
+              "- Composition (ch. 21): M = T_k ... T_1, M^-1 = T_1^-1 ... T_k^-1\n"
+              "- The inverse-transformed ray (ch. 21.1): o' = M^-1 o, d' = M^-1 d, not normalised: o + t d hits\n"
+              "  the instance where o' + t d' hits the object, for the same t"),
+    slides=("Suffern ch. 20: Affine Transformations (Matrix, transforming points, vectors and normals)",
+            "Suffern ch. 21: Instancing (Instance, the inverse-transformed ray, the transformed normal)"),
+    time_limit=20.0,
+    extra=("The tests need assignments 1-3 (your own or the revealed solutions): the instances hold\n"
+           "lecture 01's and Suffern's shapes. The numba and WGSL paths transform the ray their own way\n"
+           "(rtfgu/kernels/instance.py, intersect_instance.wgsl), which a release ships once a13 is revealed.\n"
+           "There is no image to hand in."),
+)
+
+PYTHON_ASSIGNMENTS = (A01, A02, A03, A04, A05, A07, A08, A09, A10, A11, A12, A13)
+ASSIGNMENTS = {a.id: a for a in (A01, A02, A03, A04, A05, A06, A07, A08, A09, A10, A11, A12, A13)}
 
 
 def register(assignment: Assignment) -> None:

@@ -1,4 +1,4 @@
-# release: solves a01 a02 a03 a04 a05 a07 a08 a09 a10 a11 a12
+# release: solves a01 a02 a03 a04 a05 a07 a08 a09 a10 a11 a12 a13
 """The numba path: the lecture layer's renderer as jitted kernels over the flat layout.
 
 ``render_numba(scene, width, height, precision)`` compiles the scene (rtfgu.layout, which

@@ -1,3 +1,4 @@
+# release: solves a13
 """Instances on the numba path (Suffern ch. 21, rtfgu/shapes/instance.py): the inverse matrix
 of an instance's row applied to a point, a vector and a normal, operation for operation as
 rtfgu.matrix.Matrix (each sum left to right), so that float64 renders equal the lecture

@@ -73,9 +73,13 @@ class Instance(Shape):
         self.forward_matrix = Matrix()
 
     def _compose(self, forward: Matrix, inverse: Matrix) -> "Instance":
+        """One more transformation after those before: ``forward`` its matrix, ``inverse`` the
+        inverse of it (Suffern ch. 21, the order of the products)."""
+        ### BEGIN SOLUTION
         self.inv_matrix = self.inv_matrix * inverse
         self.forward_matrix = forward * self.forward_matrix
         return self
+        ### END SOLUTION
 
     def translate(self, dx: float, dy: float, dz: float) -> "Instance":
         d = [finite(v, "Instance.translate: " + n) for v, n in ((dx, "dx"), (dy, "dy"), (dz, "dz"))]
@@ -137,8 +141,10 @@ class Instance(Shape):
     def object_ray(self, ray: Ray) -> Ray:
         """The ray in the object's space: origin and direction through ``inv_matrix``, the
         direction not normalised, the same [tmin, tmax)."""
+        ### BEGIN SOLUTION
         return Ray(self.inv_matrix * ray.origin, self.inv_matrix.transform_vector(ray.direction),
                    ray.tmin, ray.tmax)
+        ### END SOLUTION
 
     def intersect_p(self, ray: Ray) -> bool:
         inv_ray = self.object_ray(ray)
@@ -148,14 +154,20 @@ class Instance(Shape):
         return False
 
     def normal_at(self, position: Float3) -> Float3:
+        """The object's normal at the object-space point, through the transpose of the
+        inverse, normalised (Suffern ch. 20.5, 21.1)."""
+        ### BEGIN SOLUTION
         n = self.object.normal_at(self.inv_matrix * position)
         return normalize(self.inv_matrix.transform_normal(n))
+        ### END SOLUTION
 
     def hit_normal(self, position: Float3, direction: Float3) -> Float3:
         """The object's hit normal at the object-space point for the object-space direction,
         through the transpose of the inverse, normalised."""
+        ### BEGIN SOLUTION
         n = self.object.hit_normal(self.inv_matrix * position, self.inv_matrix.transform_vector(direction))
         return normalize(self.inv_matrix.transform_normal(n))
+        ### END SOLUTION
 
     def texcoord(self, position: Float3) -> tuple:
         return self.object.texcoord(self.inv_matrix * position)

@@ -1,3 +1,4 @@
+// release: solves a13
 // An instance (Suffern ch. 21, "Instancing"; rtfgu.shapes.instance): its object hit by the
 // ray through the inverse matrix (rows row0, row1, row2, the translation t0, t1, t2 after
 // each), the direction not normalised so that t is the same in both spaces; the object's

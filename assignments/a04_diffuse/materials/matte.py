@@ -16,7 +16,7 @@ from __future__ import annotations
 from ..brdfs.lambertian import Lambertian
 from ..float3 import Float3, dot
 from ..ray import SPAWN_EPSILON, Ray
-from ..sampling.random import BOUNCE_U, ROULETTE, path_dimension, random_float
+from ..sampling.random import BOUNCE_U
 from ..validation import number
 from .material import LAMBERTIAN, Material, PathVertex, read_from, set_on
 
@@ -80,9 +80,9 @@ class Matte(Material):
         raise NotImplementedError('a04: Matte.direct_light')
 
     def path_shade(self, sr) -> PathVertex:
-        """Next-event estimation (the light of every light, sampled) and, by Russian
-        roulette with survival q = mean(kd cd), a diffuse bounce drawn by
-        ``diffuse_brdf.sample_f``: the throughput is multiplied by f (n . w_i) / (pdf q)."""
+        """Next-event estimation (the light of every light, sampled) and a diffuse bounce
+        drawn by ``diffuse_brdf.sample_f``: the throughput is multiplied by f (n . w_i) / pdf.
+        A surface of albedo 0 ends the path; Russian roulette is the tracer's (PathTrace)."""
         self.face_ray(sr)
         wo = -sr.ray.direction
         tracer = sr.scene.tracer
@@ -90,16 +90,14 @@ class Matte(Material):
         if sr.depth + 1 == tracer.max_depth:
             return PathVertex(L)
         rho = self.diffuse_brdf.rho(sr, wo)
-        q = (rho.x + rho.y + rho.z) / 3.0
-        xi = random_float(sr.pixel, sr.sample, path_dimension(sr.depth, ROULETTE), sr.seed)
-        if not xi < q:
+        if not (rho.x + rho.y + rho.z) > 0.0:
             return PathVertex(L)
         u, v = self.diffuse_brdf.sample_point(sr, BOUNCE_U)
         f, wi, pdf = self.diffuse_brdf.sample_f(sr, wo, u, v)
         n_dot_wi = dot(sr.normal, wi)
         if not (pdf > 0.0 and n_dot_wi > 0.0):
             return PathVertex(L)
-        return PathVertex(L, f, n_dot_wi / (pdf * q), Ray(sr.position, wi, SPAWN_EPSILON))
+        return PathVertex(L, f, n_dot_wi / pdf, Ray(sr.position, wi, SPAWN_EPSILON))
 
     def check_path_trace(self, where: str, color) -> None:
         rho = self.diffuse_brdf.rho(_Colour(color))

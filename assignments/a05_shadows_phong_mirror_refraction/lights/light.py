@@ -56,11 +56,9 @@ class Light:
         """The book's ``set_sampler``, for a light that draws points or directions (an
         AreaLight, an AmbientOccluder): they come from this sampler's sets instead of the
         random stream."""
-        from ..sampling.sampler import Sampler
+        from ..sampling.sobol import check_own_sampler
 
-        if sampler is not None and not isinstance(sampler, Sampler):
-            raise ValueError("%s.sampler must be a Sampler or None, got %r" % (type(self).__name__, sampler))
-        self.sampler = sampler
+        self.sampler = check_own_sampler(type(self).__name__, sampler)
 
     def set_shadows(self, shadows: bool) -> None:
         self.shadows = bool(shadows)

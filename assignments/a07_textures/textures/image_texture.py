@@ -56,9 +56,17 @@ def read_texture(path) -> np.ndarray:
 
 class ImageTexture(Texture):
     def __init__(self, path=None, filter: str = "bilinear", address: str = "repeat",
-                 scale: float = 1.0, texels=None):
-        """From the image file ``path``, or from ``texels`` (height, width, 3), linear."""
+                 scale: float = 1.0, texels=None, mapping=None):
+        """From the image file ``path``, or from ``texels`` (height, width, 3), linear.
+        ``mapping``: a Mapping (Suffern ch. 29, the book's set_mapping) that gives (u, v)
+        from the hit point; None: the shape's own (u, v)."""
+        from ..mappings.mapping import Mapping
+
         super().__init__(scale)
+        if mapping is not None and not isinstance(mapping, Mapping):
+            raise ValueError("ImageTexture.mapping must be a Mapping (SphericalMap, CylindricalMap, "
+                             "RectangularMap, LightProbe) or None, got %r" % (mapping,))
+        self.mapping = mapping
         if filter not in FILTERS:
             raise ValueError("ImageTexture.filter must be one of %s, got %r" % (", ".join(FILTERS), filter))
         if address not in ADDRESSES:
@@ -78,6 +86,16 @@ class ImageTexture(Texture):
         self.address = address
         self.texels = texels
         self.height, self.width = texels.shape[:2]
+
+    @property
+    def uses_texcoord(self) -> bool:
+        return self.mapping is None
+
+    def texture_coordinates(self, shape, position: Float3) -> tuple:
+        """The mapping's (u, v) of the hit point, or the shape's own without a mapping."""
+        if self.mapping is None:
+            return shape.texcoord(position)
+        return self.mapping.get_texel_coordinates(position)
 
     def texel(self, i: int, j: int) -> Float3:
         """Texel column i, row j (from the top), addressed: wrapped or clamped."""

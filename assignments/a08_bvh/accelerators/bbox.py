@@ -18,6 +18,8 @@ from ..ray import Ray
 
 _U = 2.0 ** -53                     # the unit roundoff of float64
 WIDEN = 1.0 + 2.0 * (3 * _U) / (1 - 3 * _U)
+_U32 = 2.0 ** -24                   # float32's, for the kernels' twins of hit
+WIDEN32 = 1.0 + 2.0 * (3 * _U32) / (1 - 3 * _U32)
 
 
 class BBox:

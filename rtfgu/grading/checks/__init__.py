@@ -102,7 +102,7 @@ def checks_for(assignment_id: str):
 
 
 def _load():
-    from . import a01, a02, a03, a04, a05, a07, a08, a09, a10, a11, a12  # noqa: F401  (each registers its checks)
+    from . import a01, a02, a03, a04, a05, a07, a08, a09, a10, a11, a12, a13  # noqa: F401  (each registers its checks)
     try:
         from . import a06  # noqa: F401
     except ImportError:
