@@ -154,24 +154,25 @@ def _sphere_inside(rng, n):
     return dict(origins=o, directions=_random_unit(rng, n), shapes=[np.column_stack([c, r])])
 
 
-@family("sphere_direction_scale", "sphere", "sphere",
-        "unnormalised directions of length 1e-12..1e12")
-def _sphere_direction_scale(rng, n):
+def _sphere_scaled_directions(rng, n, exponent: int):
+    """Rays aimed at spheres, their directions scaled by 10^-exponent..10^exponent."""
     c = rng.uniform(-2, 2, (n, 3))
     r = rng.uniform(0.5, 2.0, n)
     o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(2, 10, n), r * rng.uniform(0, 1.3, n))
-    d = d * _log_uniform(rng, -12, 12, n)[:, None]
+    d = d * _log_uniform(rng, -exponent, exponent, n)[:, None]
     return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+
+
+@family("sphere_direction_scale", "sphere", "sphere",
+        "unnormalised directions of length 1e-12..1e12")
+def _sphere_direction_scale(rng, n):
+    return _sphere_scaled_directions(rng, n, 12)
 
 
 @family("sphere_direction_scale_extreme", "sphere", "sphere",
         "unnormalised directions of length 1e-150..1e150 (d . d under- or overflows)")
 def _sphere_direction_scale_extreme(rng, n):
-    c = rng.uniform(-2, 2, (n, 3))
-    r = rng.uniform(0.5, 2.0, n)
-    o, d = _aim_at_sphere(rng, c, r, r * rng.uniform(2, 10, n), r * rng.uniform(0, 1.3, n))
-    d = d * _log_uniform(rng, -150, 150, n)[:, None]
-    return dict(origins=o, directions=d, shapes=[np.column_stack([c, r])])
+    return _sphere_scaled_directions(rng, n, 150)
 
 
 # --- instances (Suffern ch. 21): ellipsoids, the unit sphere scaled and moved ------------
@@ -581,14 +582,20 @@ def _torus_radii(rng, n):
     return a, a * rng.uniform(0.1, 0.6, n)
 
 
+def _torus_meridians(rng, n):
+    """(a, b, radial): n tori's radii and a unit direction from the axis in the xz plane each
+    (the meridian's angle phi about y, uniform)."""
+    a, b = _torus_radii(rng, n)
+    phi = rng.uniform(0, 2 * np.pi, n)
+    return a, b, np.column_stack([np.sin(phi), np.zeros(n), np.cos(phi)])
+
+
 @family("torus_tangent_tube", "torus", "torus",
         "rays nearly tangent to the tube: b 1e-8..1e-4 off a tangent line at a random point of the "
         "surface (either side), origin 2..10 (a + b) back")
 def _torus_tangent_tube(rng, n):
-    a, b = _torus_radii(rng, n)
-    phi = rng.uniform(0, 2 * np.pi, n)
+    a, b, radial = _torus_meridians(rng, n)
     theta = rng.uniform(0, 2 * np.pi, n)
-    radial = np.column_stack([np.sin(phi), np.zeros(n), np.cos(phi)])
     normal = radial * np.cos(theta)[:, None] + np.array([0.0, 1.0, 0.0]) * np.sin(theta)[:, None]
     point = radial * (a + b * np.cos(theta))[:, None] + np.array([0.0, 1.0, 0.0]) * (b * np.sin(theta))[:, None]
     off = rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -4, n) * b
@@ -601,9 +608,7 @@ def _torus_tangent_tube(rng, n):
         "rays nearly along the axis (tilt up to 1e-3) through the hole at (a - b)(1 +- 1e-8..1e-3) from "
         "the axis at y = 0: grazing the inner equator, inside or outside it")
 def _torus_hole_rim(rng, n):
-    a, b = _torus_radii(rng, n)
-    phi = rng.uniform(0, 2 * np.pi, n)
-    radial = np.column_stack([np.sin(phi), np.zeros(n), np.cos(phi)])
+    a, b, radial = _torus_meridians(rng, n)
     rho = (a - b) * (1.0 + rng.choice([-1.0, 1.0], n) * _log_uniform(rng, -8, -3, n))
     target = radial * rho[:, None]
     d = np.column_stack([np.zeros(n), -np.ones(n), np.zeros(n)]) + _random_unit(rng, n) * _log_uniform(rng, -9, -3, n)[:, None]

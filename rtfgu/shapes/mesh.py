@@ -257,10 +257,7 @@ def _rows_of_three(value, name: str, dtype) -> np.ndarray:
         raise ValueError("%s must have shape (n, 3), got %s" % (name, array.shape))
     if len(array) == 0:
         raise ValueError("%s is empty" % name)
-    bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
-    if len(bad):
-        raise ValueError("%s[%d] must be finite, got %s" % (name, bad[0], tuple(array[bad[0]])))
-    return array
+    return _finite_rows(array, name)
 
 
 def _face_indices(faces, num_vertices: int) -> np.ndarray:
@@ -298,9 +295,14 @@ def _vertex_uvs(uvs, num_vertices: int) -> np.ndarray:
     if array.shape != (num_vertices, 2):
         raise ValueError("Mesh.uvs must have one (u, v) row per vertex (%d, 2), got shape %s"
                          % (num_vertices, array.shape))
+    return _finite_rows(array, "Mesh.uvs")
+
+
+def _finite_rows(array: np.ndarray, name: str) -> np.ndarray:
+    """``array``, refused with a ValueError naming its first row that is not finite."""
     bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
     if len(bad):
-        raise ValueError("Mesh.uvs[%d] must be finite, got %s" % (bad[0], tuple(array[bad[0]])))
+        raise ValueError("%s[%d] must be finite, got %s" % (name, bad[0], tuple(array[bad[0]])))
     return array
 
 
@@ -312,10 +314,7 @@ def _per_face_colors(color, m: int) -> np.ndarray:
     elif array.shape != (m, 3):
         raise ValueError("Mesh.color must be one colour or one per face (%d, 3), got shape %s"
                          % (m, array.shape))
-    bad = np.flatnonzero(~np.isfinite(array).all(axis=1))
-    if len(bad):
-        raise ValueError("Mesh.color[%d] must be finite, got %s" % (bad[0], tuple(array[bad[0]])))
-    return array
+    return _finite_rows(array, "Mesh.color")
 
 
 def _per_face_materials(material, m: int) -> tuple:
