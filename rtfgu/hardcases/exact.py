@@ -98,23 +98,37 @@ def sphere(o, d, tmin, tmax, center, radius):
     """The least root in [tmin, tmax) as (hi, lo), or MISS; decided in rationals."""
     if not (finite(*o, *d, *center, radius, tmin) and not math.isnan(tmax)):
         return MISS
+    for t in _sphere_roots_in_range(o, d, tmin, tmax, center, radius):
+        return dd_from_mpf(t)
+    return MISS
+
+
+def _sphere_roots_in_range(o, d, tmin, tmax, center, radius):
+    """The sphere's roots (``sphere_roots``) in [tmin, tmax), the near one first; none for a
+    radius <= 0 or a zero direction."""
     if float(radius) <= 0 or (d[0] == 0 and d[1] == 0 and d[2] == 0):
-        return MISS
+        return
     roots = sphere_roots(o, d, center, radius)
-    if roots is None:
-        return MISS
-    return _least_root(roots, tmin, tmax)
+    if roots is not None:
+        yield from _roots_in_range(roots, tmin, tmax)
 
 
-def _least_root(roots, tmin, tmax):
+def _roots_in_range(roots, tmin, tmax):
     """Of the roots (t1, t2, (a, b, disc)) of a quadratic, t = (-b -+ sqrt(disc)) / a with
-    a > 0, the least in [tmin, tmax) as (hi, lo), or MISS."""
+    a > 0, those in [tmin, tmax), the least first, decided exactly."""
     t1, t2, (a, b, disc) = roots
     for sign, t in ((-1, t1), (1, t2)):
         if not _sqrt_ge(sign, disc, a * Q(float(tmin)) + b):
             continue
         if not math.isinf(tmax) and not _sqrt_lt(sign, disc, a * Q(float(tmax)) + b):
             continue
+        yield t
+
+
+def _least_root(roots, tmin, tmax):
+    """Of the roots (t1, t2, (a, b, disc)) of a quadratic, t = (-b -+ sqrt(disc)) / a with
+    a > 0, the least in [tmin, tmax) as (hi, lo), or MISS."""
+    for t in _roots_in_range(roots, tmin, tmax):
         return dd_from_mpf(t)
     return MISS
 
@@ -451,17 +465,7 @@ def convex_part_sphere(o, d, tmin, tmax, center, radius, phi_min, phi_max, theta
     first, each kept when its point is within the part's angles (``_in_part``)."""
     if not (finite(*o, *d, *center, radius, phi_min, phi_max, theta_min, theta_max, tmin) and not math.isnan(tmax)):
         return MISS
-    if float(radius) <= 0 or (d[0] == 0 and d[1] == 0 and d[2] == 0):
-        return MISS
-    roots = sphere_roots(o, d, center, radius)
-    if roots is None:
-        return MISS
-    t1, t2, (a, b, disc) = roots
-    for sign, t in ((-1, t1), (1, t2)):
-        if not _sqrt_ge(sign, disc, a * Q(float(tmin)) + b):
-            continue
-        if not math.isinf(tmax) and not _sqrt_lt(sign, disc, a * Q(float(tmax)) + b):
-            continue
+    for t in _sphere_roots_in_range(o, d, tmin, tmax, center, radius):
         if _in_part(o, d, center, radius, t, phi_min, phi_max, theta_min, theta_max):
             return dd_from_mpf(t)
     return MISS

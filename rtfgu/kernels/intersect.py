@@ -156,13 +156,22 @@ def sphere_eye_terms(eye, spheres, out):
 
 
 @njit(cache=True, error_model="numpy")
-def intersect_disk(origin, direction, tmin, tmax, center, normal, radius):
-    # The plane of the disk (intersect_plane), then (p - c) . (p - c) <= r^2 at p = o + d t.
+def plane_hit_offset(origin, direction, tmin, tmax, center, normal):
+    """The first step of Disk.intersect_p and Annulus.intersect_p: (t, (p - c) . (p - c)) for
+    the ray's hit p = o + d t of the plane through ``center`` (intersect_plane), (inf, inf)
+    for a miss. The caller keeps t where the squared distance from the center is in range."""
     t = intersect_plane(origin, direction, tmin, tmax, center, normal)
     if t == lit(math.inf, t):
-        return t
+        return t, t
     to_hit = sub(add(origin, scale(direction, t)), center)
-    if dot(to_hit, to_hit) <= radius * radius:
+    return t, dot(to_hit, to_hit)
+
+
+@njit(cache=True, error_model="numpy")
+def intersect_disk(origin, direction, tmin, tmax, center, normal, radius):
+    # The plane of the disk, then (p - c) . (p - c) <= r^2 at p = o + d t (plane_hit_offset).
+    t, d2 = plane_hit_offset(origin, direction, tmin, tmax, center, normal)
+    if d2 <= radius * radius:
         return t
     return lit(math.inf, t)
 

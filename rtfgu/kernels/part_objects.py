@@ -13,8 +13,8 @@ import math
 import numpy as np
 from numba import njit
 
-from .float3 import add, dot, lit, neg, normalize, scale, sub
-from .intersect import intersect_open_cylinder, intersect_plane, intersect_sphere, normal_open_cylinder
+from .float3 import add, lit, neg, normalize, scale, sub
+from .intersect import intersect_open_cylinder, intersect_sphere, normal_open_cylinder, plane_hit_offset
 
 
 @njit(cache=True, error_model="numpy")
@@ -71,12 +71,8 @@ def intersect_open_part_cylinder(origin, direction, tmin, tmax, y0, y1, radius, 
 
 @njit(cache=True, error_model="numpy")
 def intersect_annulus(origin, direction, tmin, tmax, center, normal, inner_radius, outer_radius):
-    # Annulus.intersect_p: the plane (intersect_plane), then r_i^2 <= (p - c) . (p - c) <= r_o^2.
-    t = intersect_plane(origin, direction, tmin, tmax, center, normal)
-    if t == lit(math.inf, t):
-        return t
-    to_hit = sub(add(origin, scale(direction, t)), center)
-    d2 = dot(to_hit, to_hit)
+    # Annulus.intersect_p: the plane, then r_i^2 <= (p - c) . (p - c) <= r_o^2 (plane_hit_offset).
+    t, d2 = plane_hit_offset(origin, direction, tmin, tmax, center, normal)
     if inner_radius * inner_radius <= d2 and d2 <= outer_radius * outer_radius:
         return t
     return lit(math.inf, t)

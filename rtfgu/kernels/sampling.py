@@ -19,6 +19,7 @@ import math
 from numba import njit, types
 from numba.extending import overload
 
+from ..sampling import sobol as lecture_sobol
 from .dispatch_support import as_python
 from .float3 import lit
 
@@ -79,17 +80,9 @@ def nested_uniform_scramble(x, seed):
     return reverse_bits(laine_karras_permutation(reverse_bits(x), seed))
 
 
-@njit(cache=True, error_model="numpy", inline="always")
-def sobol_1(index):
-    """rtfgu.sampling.sobol.sobol_1: Sobol's second dimension."""
-    x = 0
-    v = 0x80000000
-    while index:
-        if index & 1:
-            x ^= v
-        index >>= 1
-        v ^= v >> 1
-    return x
+# Sobol's second dimension: rtfgu.sampling.sobol.sobol_1 itself, compiled (integers only,
+# every value below 2^32, so int64 gives the lecture layer's bits).
+sobol_1 = njit(cache=True, error_model="numpy", inline="always")(lecture_sobol.sobol_1)
 
 
 @njit(cache=True, error_model="numpy")
