@@ -115,9 +115,16 @@ class LatticeNoise(ABC):
     def value_noise(self, p: Float3) -> float:
         """The noise at p, in [-1, 1]: the lattice values interpolated."""
 
+    @staticmethod
     @abstractmethod
+    def interpolate(p: Float3, table) -> float:
+        """The lattice values of ``table`` (VALUE_TABLE or one of VECTOR_TABLES) around p,
+        interpolated: the scheme that names the subclass."""
+
     def vector_noise(self, p: Float3) -> Float3:
-        """The lattice's unit vectors interpolated at p (the book's vector_noise)."""
+        """The lattice's unit vectors interpolated at p (the book's vector_noise): one
+        interpolation per component table, not clamped."""
+        return Float3(*(self.interpolate(p, table) for table in VECTOR_TABLES))
 
     def vector_fbm(self, p: Float3) -> Float3:
         """The sum of gain^j vector_noise(lacunarity^j p), not mapped (the book's vector_fbm)."""
