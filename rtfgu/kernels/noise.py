@@ -105,41 +105,37 @@ def value_noise(noise, p):
 
 
 @njit(cache=True, error_model="numpy")
+def octave_sum(noise, num_octaves, lacunarity, gain, absolute, p):
+    """LatticeNoise.octave_sum: sum of gain^j value_noise(lacunarity^j p) (of its absolute
+    value when ``absolute``), not mapped, in the precision of ``gain``."""
+    amplitude = lit(1.0, gain)
+    frequency = lit(1.0, gain)
+    total = lit(0.0, gain)
+    for _ in range(num_octaves):
+        noise_value = value_noise(noise, scale(p, frequency))
+        total += amplitude * (abs(noise_value) if absolute else noise_value)
+        amplitude *= gain
+        frequency *= lacunarity
+    return total
+
+
+@njit(cache=True, error_model="numpy")
 def value_fractal_sum(noise, num_octaves, fbm_max, p):
     """LatticeNoise.value_fractal_sum."""
-    amplitude = lit(1.0, fbm_max)
-    frequency = lit(1.0, fbm_max)
-    fractal_sum = lit(0.0, fbm_max)
-    for _ in range(num_octaves):
-        fractal_sum += amplitude * value_noise(noise, scale(p, frequency))
-        amplitude *= lit(0.5, fbm_max)
-        frequency *= lit(2.0, fbm_max)
+    fractal_sum = octave_sum(noise, num_octaves, lit(2.0, fbm_max), lit(0.5, fbm_max), False, p)
     return (fractal_sum + fbm_max) / (fbm_max + fbm_max)
 
 
 @njit(cache=True, error_model="numpy")
 def value_turbulence(noise, num_octaves, fbm_max, p):
     """LatticeNoise.value_turbulence."""
-    amplitude = lit(1.0, fbm_max)
-    frequency = lit(1.0, fbm_max)
-    turbulence = lit(0.0, fbm_max)
-    for _ in range(num_octaves):
-        turbulence += amplitude * abs(value_noise(noise, scale(p, frequency)))
-        amplitude *= lit(0.5, fbm_max)
-        frequency *= lit(2.0, fbm_max)
-    return turbulence / fbm_max
+    return octave_sum(noise, num_octaves, lit(2.0, fbm_max), lit(0.5, fbm_max), True, p) / fbm_max
 
 
 @njit(cache=True, error_model="numpy")
 def value_fbm(noise, num_octaves, lacunarity, gain, fbm_max, p):
     """LatticeNoise.value_fbm."""
-    amplitude = lit(1.0, fbm_max)
-    frequency = lit(1.0, fbm_max)
-    fbm = lit(0.0, fbm_max)
-    for _ in range(num_octaves):
-        fbm += amplitude * value_noise(noise, scale(p, frequency))
-        amplitude *= gain
-        frequency *= lacunarity
+    fbm = octave_sum(noise, num_octaves, lacunarity, gain, False, p)
     return (fbm + fbm_max) / (fbm_max + fbm_max)
 
 

@@ -4,7 +4,7 @@ then z, clamped to [-1, 1] (CubicNoise.cpp, after Peachey 2003)."""
 from __future__ import annotations
 
 from ..float3 import Float3
-from .lattice_noise import VALUE_TABLE, VECTOR_TABLES, LatticeNoise, lattice_cell, lattice_value
+from .lattice_noise import VALUE_TABLE, LatticeNoise, lattice_cell, lattice_value
 
 
 def four_knot_spline(x: float, knots) -> float:
@@ -20,9 +20,6 @@ class CubicNoise(LatticeNoise):
     def value_noise(self, p: Float3) -> float:
         # Clamped: the spline may overshoot the knots.
         return min(max(self.interpolate(p, VALUE_TABLE), -1.0), 1.0)
-
-    def vector_noise(self, p: Float3) -> Float3:
-        return Float3(*(self.interpolate(p, table) for table in VECTOR_TABLES))
 
     @staticmethod
     def interpolate(p: Float3, table) -> float:

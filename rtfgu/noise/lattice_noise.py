@@ -115,9 +115,16 @@ class LatticeNoise(ABC):
     def value_noise(self, p: Float3) -> float:
         """The noise at p, in [-1, 1]: the lattice values interpolated."""
 
+    @staticmethod
     @abstractmethod
+    def interpolate(p: Float3, table) -> float:
+        """The lattice values of ``table`` (VALUE_TABLE or one of VECTOR_TABLES) around p,
+        interpolated: the scheme that names the subclass."""
+
     def vector_noise(self, p: Float3) -> Float3:
-        """The lattice's unit vectors interpolated at p (the book's vector_noise)."""
+        """The lattice's unit vectors interpolated at p (the book's vector_noise): one
+        interpolation per component table, not clamped."""
+        return Float3(*(self.interpolate(p, table) for table in VECTOR_TABLES))
 
     def vector_fbm(self, p: Float3) -> Float3:
         """The sum of gain^j vector_noise(lacunarity^j p), not mapped (the book's vector_fbm)."""
@@ -130,34 +137,31 @@ class LatticeNoise(ABC):
             frequency *= self.lacunarity
         return total
 
-    def value_fractal_sum(self, p: Float3) -> float:
+    def octave_sum(self, p: Float3, lacunarity: float, gain: float, absolute: bool = False) -> float:
+        """The sum over j < num_octaves of gain^j value_noise(lacunarity^j p) (of its
+        absolute value when ``absolute``), not mapped: the loop the book's three sums share."""
         amplitude = 1.0
         frequency = 1.0
-        fractal_sum = 0.0
+        total = 0.0
         for _ in range(self.num_octaves):
-            fractal_sum += amplitude * self.value_noise(p * frequency)
-            amplitude *= 0.5
-            frequency *= 2.0
+            noise = self.value_noise(p * frequency)
+            total += amplitude * (abs(noise) if absolute else noise)
+            amplitude *= gain
+            frequency *= lacunarity
+        return total
+
+    def value_fractal_sum(self, p: Float3) -> float:
+        """Gain 0.5 and lacunarity 2 whatever the noise's own, mapped into [0, 1]."""
+        fractal_sum = self.octave_sum(p, 2.0, 0.5)
         return (fractal_sum + self.fbm_max) / (self.fbm_max + self.fbm_max)
 
     def value_turbulence(self, p: Float3) -> float:
-        amplitude = 1.0
-        frequency = 1.0
-        turbulence = 0.0
-        for _ in range(self.num_octaves):
-            turbulence += amplitude * abs(self.value_noise(p * frequency))
-            amplitude *= 0.5
-            frequency *= 2.0
-        return turbulence / self.fbm_max
+        """Gain 0.5 and lacunarity 2 over |value_noise|, divided by fbm_max."""
+        return self.octave_sum(p, 2.0, 0.5, absolute=True) / self.fbm_max
 
     def value_fbm(self, p: Float3) -> float:
-        amplitude = 1.0
-        frequency = 1.0
-        fbm = 0.0
-        for _ in range(self.num_octaves):
-            fbm += amplitude * self.value_noise(p * frequency)
-            amplitude *= self.gain
-            frequency *= self.lacunarity
+        """The noise's gain and lacunarity, mapped into [0, 1]."""
+        fbm = self.octave_sum(p, self.lacunarity, self.gain)
         return (fbm + self.fbm_max) / (self.fbm_max + self.fbm_max)
 
 

@@ -3,7 +3,7 @@ lattice values around the point (LinearNoise.cpp, after Hill and Kelley 2006).""
 from __future__ import annotations
 
 from ..float3 import Float3
-from .lattice_noise import VALUE_TABLE, VECTOR_TABLES, LatticeNoise, lattice_cell, lattice_value
+from .lattice_noise import VALUE_TABLE, LatticeNoise, lattice_cell, lattice_value
 
 
 def lerp(f: float, a: float, b: float) -> float:
@@ -13,9 +13,6 @@ def lerp(f: float, a: float, b: float) -> float:
 class LinearNoise(LatticeNoise):
     def value_noise(self, p: Float3) -> float:
         return self.interpolate(p, VALUE_TABLE)
-
-    def vector_noise(self, p: Float3) -> Float3:
-        return Float3(*(self.interpolate(p, table) for table in VECTOR_TABLES))
 
     @staticmethod
     def interpolate(p: Float3, table) -> float:
