@@ -660,17 +660,36 @@ def test_every_isolation_grades_the_solution_and_says_which_ran(forced, name, tm
         pytest.skip("the unprivileged-user fallback needs the grader to run as root")
     monkeypatch.setenv("RTFGU_ISOLATION", forced)
     write_files(solution_files("a04"), tmp_path / "sub")
-    checkout_mode = os.stat(ROOT).st_mode
+    checkout_mode = _checkout_mode_as_found()[0]
     result = grade("a04", tmp_path / "sub", tmp_path / "out", time_limit=LIMIT)
     assert result.score == result.max_score
     assert json.loads((tmp_path / "out" / "results.json").read_text())["extra_data"]["isolation"] == name
     assert "student code ran isolated by: %s" % name in (tmp_path / "out" / "summary.txt").read_text()
-    # The fallback hides the checkout only while it grades: restored, unless a grading of
-    # another test worker still holds it hidden (the shared state keeps the mode it had).
-    if os.stat(ROOT).st_mode != checkout_mode:
-        from rtfgu.grading.sandbox import staff_folder, state_folder
-        entry = json.loads((state_folder() / "hidden.json").read_text() or "{}").get(str(staff_folder()))
-        assert entry and entry["pids"] and entry["mode"] == stat.S_IMODE(checkout_mode), entry
+    # The fallback hides the checkout only while it grades: afterwards it has the mode it had,
+    # or a grading of another test worker still holds it hidden and the state keeps that mode.
+    mode, entry = _checkout_mode_as_found()
+    assert mode == checkout_mode, entry
+    assert entry is None or (entry["pids"] and os.getpid() not in entry["pids"]), entry
+
+
+def _checkout_mode_as_found():
+    """The checkout's own mode (the one recorded in the fallback's shared state while some
+    grading holds it hidden), read under the state's lock so that no grading is between
+    hiding and recording; with the state's entry, or None."""
+    import fcntl
+    from rtfgu.grading.sandbox import staff_folder, state_folder
+
+    path = state_folder() / "hidden.json"
+    if not path.parent.is_dir():
+        return stat.S_IMODE(os.stat(ROOT).st_mode), None
+    with os.fdopen(os.open(path, os.O_RDWR | os.O_CREAT | os.O_NOFOLLOW, 0o600), "r+") as f:
+        fcntl.flock(f, fcntl.LOCK_EX)
+        f.seek(0)
+        text = f.read()
+        entry = json.loads(text or "{}").get(str(staff_folder()))
+        if entry and entry["pids"]:
+            return entry["mode"], entry
+        return stat.S_IMODE(os.stat(ROOT).st_mode), None
 
 
 def test_graders_that_run_at_once_under_the_user_fallback_do_not_kill_each_others_tests(tmp_path, monkeypatch):
