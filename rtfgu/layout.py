@@ -207,7 +207,9 @@ class FlatMesh:
     without uvs (whose faces' (u, v) are then their barycentrics), or None when no mesh has
     uvs; ``bvh`` the FlatBVH over the rows (its build_seconds: 0 when it came
     from the scene's cache); ``spheres``: whether it holds the spheres (the sphere table then
-    has no loop of its own)."""
+    has no loop of its own). ``scene_tree``: whether the scene's own tree is there, from node
+    0 (False where every mesh is an instance's); ``roots``: the first node of the tree of each
+    mesh instances hold, whose rows end in the face's place in its mesh (compile_mesh)."""
 
     vertices: np.ndarray
     faces: np.ndarray
@@ -216,6 +218,8 @@ class FlatMesh:
     build_seconds: float = 0.0
     spheres: bool = False
     uvs: np.ndarray = None
+    roots: tuple = ()
+    scene_tree: bool = True
 
     @property
     def nbytes(self) -> int:
@@ -473,9 +477,20 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     instanced = {kind.name: [] for kind in INSTANCED}
     instanced_rows = {}   # id(object) -> its row in its kind's instanced table
 
+    instanced_meshes = []   # the Meshes instances hold, each laid out once (compile_mesh)
+
     def instance_row(where: str, kind, shape) -> list:
-        """The row of an Instance: its inverse matrix and its object's kind and instanced row."""
+        """The row of an Instance: its inverse matrix and its object's kind and instanced row
+        (for a Mesh, its place in instanced_meshes until compile_mesh gives its tree's root)."""
         obj = shape.object
+        if isinstance(obj, Mesh):
+            if id(obj) not in instanced_rows:
+                instanced_rows[id(obj)] = len(instanced_meshes)
+                instanced_meshes.append(obj)
+            features.add("instanced_mesh")
+            return pack_row(kind.record, SimpleNamespace(
+                **{name: getattr(shape, name) for name, _ in kind.fields if not name.startswith("object_")},
+                object_kind=SHAPE_IDS[MESH_KIND.name], object_row=instanced_rows[id(obj)]))
         k, obj_kind = shape_kind_of(obj)
         if obj_kind not in INSTANCED:
             raise ValueError("%s: the numba and WGSL paths take an Instance of a %s, got an Instance "
@@ -509,6 +524,24 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             mesh_faces.append((i, shape))
         elif kind.instance:
             rows[kind.name][0].append(instance_row(where, kind, shape))
+            if isinstance(shape.object, Mesh):
+                # As the lecture layer traces it (Instance.faces): an instance of each face,
+                # in the mesh's order, each with the instance's material or the face's own.
+                mesh = shape.object
+                places = np.empty(mesh.num_triangles, dtype=np.int64)
+                its = shape._own_material
+                for face, m, faces in mesh.surfaces():
+                    if its is None or isinstance(its.cd, Float3):
+                        places[faces] = material_row("%s.faces[%d]" % (where, face), m if its is None else its,
+                                                     mesh.color(face))
+                    else:   # the instance's material, coloured by each face's colour
+                        for f in faces.tolist():
+                            places[f] = material_row("%s.faces[%d]" % (where, f), its, mesh.color(f))
+                rows[kind.name][1].append(i)
+                features.add(kind.name)
+                material_of_shape.append(places)
+                i += mesh.num_triangles
+                continue
         else:
             rows[kind.name][0].append(pack_row(kind.record, shape))
         rows[kind.name][1].append(i)
@@ -561,10 +594,21 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         and not any(SHADER_BY_ID[s].continues for s in unique_shaders.tolist())
     bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
                                                                 and not eye_rays_only))
-    mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype) \
-        if mesh_faces or bvh_spheres else None
+    mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype, instanced_meshes) \
+        if mesh_faces or bvh_spheres or instanced_meshes else None
+    if instanced_meshes:
+        # An instance of a Mesh names the root of its mesh's tree (compile_mesh).
+        instances = shapes["instance"][0]
+        kind_column, row_column = offset("Instance", "object_kind"), offset("Instance", "object_row")
+        of_mesh = instances[:, kind_column] == SHAPE_IDS[MESH_KIND.name]
+        places = instances[of_mesh, row_column].astype(np.int64)
+        instances[of_mesh, row_column] = np.asarray(mesh.roots, dtype=np.int64)[places]
+        if mesh.bvh.num_nodes >= 2 ** 24:
+            raise ValueError("Scene: the instanced meshes' trees have %d nodes, more than a float32 row "
+                             "names exactly (2^24)" % mesh.bvh.num_nodes)
     if mesh is not None:
-        features.add("mesh")
+        if mesh.scene_tree:
+            features.add("mesh")
         if mesh.normals is not None:
             features.add("smooth_mesh")
         if mesh.uvs is not None:
@@ -646,10 +690,15 @@ def _cached(scene, name, inputs: tuple, make):
     return value, False
 
 
-def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
+def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=()) -> FlatMesh:
     """The FlatMesh of the mesh triangles ``mesh_faces`` ((index, MeshTriangle) or (index of
     its first face, Mesh), ...) and, unless ``spheres`` is None, of the sphere table and index
     ``spheres``, with the scene's BVH over them (built, or taken from the scene's cache).
+
+    Each Mesh of ``instanced`` (the meshes instances hold: Suffern ch. 21, one mesh, many
+    instances) follows with its faces and a tree of its own, over its own coordinates: its
+    rows' last entry is the face's place in the mesh (an instance adds its first index), its
+    tree's nodes come after the scene's, and ``roots`` names each tree's first node.
 
     A Mesh is packed from its arrays (its faces' rows are its ``faces`` plus the place of its
     first vertex); a MeshTriangle gives its row itself. Either way the rows, and so the BVH,
@@ -687,6 +736,12 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
     if loose:
         face_parts.append(np.array(loose, dtype=np.int64).reshape(-1, 4))
     faces = np.concatenate(face_parts) if face_parts else np.zeros((0, 4), dtype=np.int64)
+    object_faces = []
+    for mesh in instanced:
+        part = np.empty((mesh.num_triangles, 4), dtype=np.int64)
+        part[:, :3] = mesh.faces + first_vertex(mesh, mesh.normals is not None)
+        part[:, 3] = np.arange(mesh.num_triangles)
+        object_faces.append(part)
     vertices = np.concatenate(vertex_parts) if vertex_parts else np.zeros((0, 3))
     smooth_any = any(n is not None for n in normal_parts)
     normals = np.concatenate([np.zeros_like(v) if n is None else n for v, n in zip(vertex_parts, normal_parts)]) \
@@ -713,15 +768,27 @@ def compile_mesh(scene, mesh_faces, spheres, dtype) -> FlatMesh:
     # the normals and uvs (_cached compares them with those of the last compile).
 
     def make():
-        lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
-        bvh = flat_bvh.build(np.concatenate([lo, sphere_lo]), np.concatenate([hi, sphere_hi]))
-        return FlatMesh(vertices=vertices.astype(dtype), faces=faces[bvh.order].astype(np.int32),
+        trees, rows, roots = [], [], []
+        if len(faces):
+            lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
+            bvh = flat_bvh.build(np.concatenate([lo, sphere_lo]), np.concatenate([hi, sphere_hi]))
+            trees.append(bvh)
+            rows.append(faces[bvh.order])
+        for part in object_faces:
+            bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, part))
+            roots.append(sum(t.num_nodes for t in trees))
+            trees.append(flat_bvh.offset(bvh, roots[-1], sum(len(r) for r in rows)))
+            rows.append(part[bvh.order])
+        bvh = flat_bvh.FlatBVH(np.concatenate([t.nodes for t in trees]),
+                               np.concatenate([t.order for t in trees]), sum(t.build_seconds for t in trees))
+        return FlatMesh(vertices=vertices.astype(dtype), faces=np.concatenate(rows).astype(np.int32),
                         normals=None if normals is None else normals.astype(dtype),
                         uvs=None if uvs is None else uvs.astype(dtype),
-                        bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None)
+                        bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None,
+                        roots=tuple(roots), scene_tree=len(faces) > 0)
 
     inputs = (vertices, faces, sphere_lo, sphere_hi, np.zeros(0) if normals is None else normals,
-              np.zeros(0) if uvs is None else uvs)
+              np.zeros(0) if uvs is None else uvs, *object_faces)
     mesh, reused = _cached(scene, ("mesh", np.dtype(dtype).name), inputs, make)
     return dataclasses.replace(mesh, build_seconds=0.0) if reused else mesh
 

@@ -260,6 +260,16 @@ def build(lo, hi) -> FlatBVH:
     return FlatBVH(nodes, order, time.perf_counter() - start)
 
 
+def offset(bvh: FlatBVH, first_node: int, first_primitive: int) -> FlatBVH:
+    """``bvh`` as it reads placed after ``first_node`` nodes and ``first_primitive``
+    primitives of other trees in one table (the trees of instanced meshes, rtfgu.layout)."""
+    nodes = bvh.nodes.copy()
+    links = nodes.view(np.int32)
+    leaf = links[:, 7] > 0
+    links[:, 3] += np.where(leaf, first_primitive, first_node).astype(np.int32)
+    return FlatBVH(nodes, bvh.order + np.int32(first_primitive), bvh.build_seconds)
+
+
 def triangle_bounds(vertices: np.ndarray, faces: np.ndarray):
     """lo, hi (F, 3) of the triangles faces (F, >=3) of vertices (V, 3)."""
     v = vertices[faces[:, :3]]

@@ -48,10 +48,11 @@ MESH_SLOTS = ("vertices", "faces", "normals", "nodes", "links", "uvs")
 
 def slots(kind) -> int:
     """A mesh kind's MESH_SLOTS; an instance kind's table and index, then the instanced table
-    of each kind an instance may hold (rtfgu.registry.INSTANCED); a row kind's table and index."""
+    of each kind an instance may hold (rtfgu.registry.INSTANCED), then MESH_SLOTS for the
+    meshes instances hold; a row kind's table and index."""
     if kind.bvh:
         return len(MESH_SLOTS)
-    return 2 + len(INSTANCED) if kind.instance else 2
+    return 2 + len(INSTANCED) + len(MESH_SLOTS) if kind.instance else 2
 
 
 def slot_offsets() -> dict:
@@ -85,9 +86,10 @@ def _mesh_parts(k: int, kind, at: int) -> list:
     ]
 
 
-def _object_switch(name: str, params: str, call: str, default: str, doc: str) -> str:
+def _object_switch(name: str, params: str, call: str, mesh_call: str, default: str, doc: str) -> str:
     """``name(objects, kind, row, <params>)``: ``call`` (a format of the object kind's name,
-    its instanced table in the tuple ``objects`` and ``params``) for the object's kind;
+    its instanced table in the tuple ``objects`` and ``params``) for the object's kind,
+    ``mesh_call`` (a format of the places of MESH_SLOTS in ``objects``) for a mesh;
     ``default`` for none."""
     lines = ["@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
              "def %s(objects, kind, row, %s):" % (name, params),
@@ -95,14 +97,16 @@ def _object_switch(name: str, params: str, call: str, default: str, doc: str) ->
     for m, obj in enumerate(INSTANCED):
         lines.append("    if kind == %d:\n        return %s" % (SHAPE_IDS[obj.name],
                                                                call.format(kind=obj.name, table="objects[%d]" % m)))
+    mesh = {slot: "objects[%d]" % (len(INSTANCED) + m) for m, slot in enumerate(MESH_SLOTS)}
+    lines.append("    if kind == %d:\n        return %s" % (SHAPE_IDS[layout.MESH_KIND.name], mesh_call.format(**mesh)))
     lines.append("    return " + default)
     return "\n".join(lines)
 
 
 def _objects(at: int) -> str:
-    """The tuple of an instance kind's instanced tables, whose slots follow its table and
-    index from ``at`` on in ``shapes``."""
-    return "(%s,)" % ", ".join("shapes[%d]" % (at + 2 + m) for m in range(len(INSTANCED)))
+    """The tuple of an instance kind's instanced tables and the MESH_SLOTS of the meshes
+    instances hold, whose slots follow its table and index from ``at`` on in ``shapes``."""
+    return "(%s,)" % ", ".join("shapes[%d]" % (at + 2 + m) for m in range(len(INSTANCED) + len(MESH_SLOTS)))
 
 
 def _instance_parts(k: int, kind) -> list:
@@ -126,19 +130,28 @@ def _instance_parts(k: int, kind) -> list:
         parts.append(_overloaded("instanced_t_" + o.name, "table, row, origin, direction, tmin, tmax, formula",
                                  "lit(math.inf, tmin)", "\n".join(body),
                                  "t of row ``row`` of the instanced %ss, or inf" % o.name))
-    parts.append(_object_switch("instanced_t", "origin, direction, tmin, tmax, formula",
-                                "instanced_t_{kind}({table}, row, origin, direction, tmin, tmax, formula)",
-                                "lit(math.inf, tmin)", "The object's t in [tmin, tmax] along the object-space ray, or inf."))
-    parts.append(_object_switch("instanced_normal", "position, direction",
-                                "normal_row_{kind}({table}, row, position, direction)", "position",
-                                "The object's hit normal at an object-space point."))
-    parts.append(_object_switch("instanced_texcoord", "position", "texcoord_row_{kind}({table}, row, position)",
+    parts.append(_object_switch(
+        "instanced_t", "origin, direction, tmin, tmax, formula, best",
+        "(instanced_t_{kind}({table}, row, origin, direction, tmin, tmax, formula), 0, -1)",
+        "instanced_mesh_t({vertices}, {faces}, {nodes}, {links}, row, origin, direction, tmin, tmax, best)",
+        "(lit(math.inf, tmin), 0, -1)",
+        "(t, place, face) of the object along the object-space ray: t in [tmin, tmax] or inf; a "
+        "mesh's face hit, its place in the mesh and its row in faces (instanced_mesh_t), else 0 and -1."))
+    parts.append(_object_switch("instanced_normal", "face, position, direction",
+                                "normal_row_{kind}({table}, row, position, direction)",
+                                "normal_row_mesh({vertices}, {faces}, {normals}, face, position, direction)",
+                                "position", "The object's hit normal at an object-space point."))
+    parts.append(_object_switch("instanced_texcoord", "face, position", "texcoord_row_{kind}({table}, row, position)",
+                                "texcoord_row_mesh({vertices}, {faces}, {uvs}, face, position)",
                                 "(position[0], position[0])", "The object's (u, v) at an object-space point."))
-    keep = _KEEP.format(kind=k)
+    # A hit's row is the instance's row, with a mesh's face row above bit 32 (FACE_SHIFT).
+    keep = _KEEP.format(kind=k).replace("idx = index[i]", "idx = index[i] + place").replace(
+        "row = i", "row = i + (face << FACE_SHIFT) if face >= 0 else i")
     scan = ["    tmax, best, kind, row = hit",
             "    for i in range(table.shape[0]):",
-            "        t = instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
-            "tmin, tmax, formula)" % (obj % ("i", "i"))] + [line[4:] for line in keep.split("\n")] + [
+            "        t, place, face = instanced_t(objects, %s, instance_point(table, i, origin), "
+            "instance_vector(table, i, direction), tmin, tmax, formula, best - index[i])"
+            % (obj % ("i", "i"))] + [line[4:] for line in keep.split("\n")] + [
             "    return tmax, best, kind, row"]
     parts.append(_overloaded("scan_" + name, "table, index, objects, origin, direction, tmin, hit, formula",
                              "hit", "\n".join(scan), "The nearest hit among the instances, given the nearest so far",
@@ -147,19 +160,22 @@ def _instance_parts(k: int, kind) -> list:
         "any_hit_" + name, "table, index, objects, origin, direction, tmin, tmax, formula", "False",
         "\n".join(["    for i in range(table.shape[0]):",
                    "        if instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
-                   "tmin, tmax, formula) < tmax:" % (obj % ("i", "i")),
+                   "tmin, tmax, formula, -1)[0] < tmax:" % (obj % ("i", "i")),
                    "            return True",
                    "    return False"]),
         "Is any instance hit in [tmin, tmax)?", absent_on="index"))
     parts.append(_overloaded(
         "normal_row_" + name, "table, objects, row, position, direction", "position",
-        "\n".join(["    n = instanced_normal(objects, %s, instance_point(table, row, position), "
-                   "instance_vector(table, row, direction))" % (obj % ("row", "row")),
-                   "    return normalize(instance_normal(table, row, n))"]),
+        "\n".join(["    i = row & FACE_MASK",
+                   "    n = instanced_normal(objects, %s, row >> FACE_SHIFT, instance_point(table, i, position), "
+                   "instance_vector(table, i, direction))" % (obj % ("i", "i")),
+                   "    return normalize(instance_normal(table, i, n))"]),
         "The object's normal at the object-space point through the inverse transpose, normalised"))
     parts.append(_overloaded(
         "texcoord_row_" + name, "table, objects, row, position", "(position[0], position[0])",
-        "    return instanced_texcoord(objects, %s, instance_point(table, row, position))" % (obj % ("row", "row")),
+        "\n".join(["    i = row & FACE_MASK",
+                   "    return instanced_texcoord(objects, %s, row >> FACE_SHIFT, instance_point(table, i, position))"
+                   % (obj % ("i", "i"))]),
         "The object's (u, v) at the object-space point"))
     return parts
 
@@ -413,10 +429,10 @@ def source() -> str:
     for kind in SHAPES:
         names = imports.setdefault(kind.numba_module, set())
         if kind.bvh:
-            names.update(("mesh_closest", "mesh_any", "normal_mesh", "texcoord_mesh"))
+            names.update(("mesh_closest", "mesh_any", "normal_mesh", "texcoord_mesh", "instanced_mesh_t"))
             continue
         if kind.instance:
-            names.update(("instance_point", "instance_vector", "instance_normal"))
+            names.update(("instance_point", "instance_vector", "instance_normal", "FACE_SHIFT", "FACE_MASK"))
             continue
         names.update(kind.formula_function(f) for f in kind.formulas)
         names.add("normal_" + kind.name)

@@ -7,12 +7,18 @@ layer's bit for bit.
 A row of the instance table (rtfgu.layout.RECORDS["Instance"]) is [row0, t0], [row1, t1],
 [row2, t2], [object_kind, object_row, 0, 0]: the 3 x 4 inverse matrix a row at a time, then
 the kind (its id in rtfgu.registry.SHAPES) and the row of the object in that kind's
-instanced table. The loops over instances, which call the object's kind through a switch,
+instanced table; for a Mesh, the first node of its tree (rtfgu.layout.compile_mesh), whose
+faces the instance's loop tests through rtfgu.kernels.mesh.instanced_mesh_t. The loops over instances, which call the object's kind through a switch,
 are generated from the registry (rtfgu.kernels.dispatch).
 """
 from __future__ import annotations
 
 from numba import njit
+
+# A hit on an instance of a Mesh carries the face's row in rtfgu.layout.FlatMesh.faces above
+# this bit of its row, the instance's row below (rtfgu.kernels.dispatch's scan_instance).
+FACE_SHIFT = 32
+FACE_MASK = (1 << FACE_SHIFT) - 1
 
 
 @njit(cache=True, error_model="numpy")

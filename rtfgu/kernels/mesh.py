@@ -163,11 +163,12 @@ def _inverse(direction):
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
 # they are shared by every render kernel (each scene's kinds compile a kernel of their own).
 @njit(cache=True, error_model="numpy")
-def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction, tmin, hit, formula):
+def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction, tmin, hit, formula, root=0):
     """The nearest face or sphere hit, given the nearest hit so far ``hit`` = (t, scene
     index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier one is
     tested up to the next float above the best t). A face is (kind, its row in faces), a
-    sphere (SPHERE, its row in the sphere table)."""
+    sphere (SPHERE, its row in the sphere table). ``root``: the tree's first node (the
+    scene's, 0; an instanced mesh's, whose rows' indices are places in the mesh)."""
     tmax, best, best_kind, best_row = hit
     inf = lit(math.inf, tmin)
     frame = ray_frame(origin, direction)
@@ -175,8 +176,8 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
     node_stack = _stack_pointer(np.int32)
     entry_stack = _stack_pointer(tmin)
     sp = 0
-    node = 0
-    if box_entry(nodes, 0, origin, inv, tmin, tmax) == inf:
+    node = root
+    if box_entry(nodes, root, origin, inv, tmin, tmax) == inf:
         return hit
     while True:
         count = links[node, 7]
@@ -224,14 +225,14 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
 
 
 @njit(cache=True, error_model="numpy")
-def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula):
-    """A shadow ray: is any face or sphere hit in [tmin, tmax)?"""
+def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0):
+    """A shadow ray: is any face or sphere hit in [tmin, tmax)? ``root`` as in mesh_closest."""
     inf = lit(math.inf, tmin)
     frame = ray_frame(origin, direction)
     inv = _inverse(direction)
     node_stack = _stack_pointer(np.int32)
     sp = 0
-    node = 0 if box_entry(nodes, 0, origin, inv, tmin, tmax) != inf else -1
+    node = root if box_entry(nodes, root, origin, inv, tmin, tmax) != inf else -1
     while node >= 0:
         count = links[node, 7]
         if count > 0:
@@ -261,6 +262,31 @@ def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tm
             sp -= 1
             node = node_stack[sp]
     return False
+
+
+def instanced_mesh_t(vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best):
+    """An instanced mesh (Suffern ch. 21, one mesh, many instances) along the object-space
+    ray: (t, place, face) of its nearest face in [tmin, tmax), ``place`` the face's place in
+    the mesh and ``face`` its row in ``faces``; of equal ts the face of the lower place wins,
+    and a face whose place is below ``best`` (the scene's best index less the instance's
+    first) wins at t = tmax too, as mesh_closest does with scene indices. (inf, 0, -1) for
+    none, and where the scene holds no instanced mesh (``vertices`` None)."""
+    return as_python(_typed_instanced_mesh_t, vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best)
+
+
+@overload(instanced_mesh_t, inline="always")
+def _typed_instanced_mesh_t(vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best):
+    if isinstance(vertices, types.NoneType):
+        return lambda vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best: \
+            (lit(math.inf, tmin), 0, -1)
+
+    def present(vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best):
+        t, place, _, face = mesh_closest(vertices, faces, nodes, links, None, 0, origin, direction, tmin,
+                                         (tmax, best, 0, -1), 0, root)
+        if face < 0:
+            return lit(math.inf, tmin), 0, -1
+        return t, place, face
+    return present
 
 
 @njit(cache=True, error_model="numpy", inline="always")

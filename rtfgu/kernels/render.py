@@ -71,15 +71,16 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
     kind stays None: a BVH has at least one node)."""
     shapes = ()
     for kind in SHAPES:
-        if kind.bvh:
-            mesh = flat.mesh
-            shapes += ((mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links, mesh.uvs)
-                       if mesh is not None else (None,) * len(MESH_SLOTS))
+        if kind.bvh:   # the scene's own tree; None where its meshes are all instances'
+            shapes += mesh_arrays(flat) if flat.mesh is not None and flat.mesh.scene_tree \
+                else (None,) * len(MESH_SLOTS)
         elif kind.instance and (flat.count(kind.name) or empty):
             # The instance table and index, then the instanced table of each kind an instance
-            # may hold (None for a kind none holds).
+            # may hold (None for a kind none holds), then the mesh arrays with the trees of
+            # the meshes instances hold (None where none holds one).
             shapes += (flat.table(kind.name), flat.index(kind.name)) + tuple(
-                flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED)
+                flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
+                + (mesh_arrays(flat) if "instanced_mesh" in flat.features else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
             shapes += ((flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)) \
                 + (None,) * (slots(kind) - 2)
@@ -90,6 +91,12 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
         else:
             shapes += (flat.table(kind.name), flat.index(kind.name))
     return shapes
+
+
+def mesh_arrays(flat) -> tuple:
+    """The FlatMesh's arrays in MESH_SLOTS order."""
+    mesh = flat.mesh
+    return mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links, mesh.uvs
 
 
 def scene_tuple(flat) -> tuple:

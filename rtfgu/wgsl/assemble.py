@@ -164,8 +164,13 @@ def each_kinds(flat, features, formula):
         if kind.name not in features or kind.bvh:   # a mesh kind has no rows to loop over
             continue
         args = ", ".join("rec." + name for name, _ in kind.fields)
+        # An instance of a Mesh hits at its first index plus the face's place, and keeps the
+        # face (intersect_instance.wgsl).
+        of_mesh = kind.instance and "instanced_mesh" in features
         shapes.append({"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper(),
-                       "$index": kind.name + "_index", "$args": args, "$KIND": kind.name.upper()})
+                       "$index": kind.name + "_index", "$args": args, "$KIND": kind.name.upper(),
+                       "$place": " + instanced_place" if of_mesh else "",
+                       "$keep": "instanced_face = candidate_face;" if of_mesh else ""})
     # The kinds intersect_scene and in_shadow loop over: the BVH holds the others.
     rows = [entry for entry in shapes
             if not (entry["$kind"] == "sphere" and "bvh_spheres" in features)]
@@ -388,7 +393,9 @@ def _bindings(flat, features, scene_buffer: str) -> list:
                        flat.sampler.shuffled, True))
     if "trace" in features:
         for kind in SHAPES:
-            if kind.name not in features:
+            if kind.bvh and "instanced_mesh" in features and kind.name not in features:
+                pass     # the meshes instances hold have their trees in the FlatMesh
+            elif kind.name not in features:
                 continue
             if kind.bvh:
                 mesh = flat.mesh

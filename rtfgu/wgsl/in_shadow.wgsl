@@ -14,7 +14,7 @@ fn in_shadow(position: vec3f, w_i: vec3f, dist: f32) -> bool
     }
     // #end
     // #if mesh
-    if (mesh_any(shadow_ray)) {
+    if (mesh_any(shadow_ray, 0u)) {
         return true;
     }
     // #endif

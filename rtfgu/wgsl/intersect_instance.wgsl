@@ -5,8 +5,36 @@
 // normal through the transpose of the inverse, normalised. The object is row object_row of
 // the instanced table of its kind object_kind, reached through the switch below, which names
 // only the kinds the scene's instances hold.
+//
+// An instanced mesh (one mesh, many instances: rtfgu.layout.compile_mesh) is the tree whose
+// first node is object_row, its faces' w their place in the mesh. As the lecture layer traces
+// an Instance of a Mesh (an Instance of each face, Instance.faces), the instance's hit is its
+// first index plus the face's place (instanced_place, which intersect_scene adds), and the
+// face it hit (candidate_face) is kept as instanced_face where intersect_scene keeps the hit,
+// for the face's (u, v) (texcoord.wgsl).
+// #if instanced_mesh
+var<private> instanced_place: i32;
+var<private> candidate_face: u32;
+var<private> instanced_face: u32;
+// #endif
+
 fn intersect_instanced(r: Ray, hit: ptr<function, HitInfo>, kind: i32, row: u32) -> bool
 {
+    // #if instanced_mesh
+    instanced_place = 0;
+    if (kind == MESH) {
+        var q = r;
+        var place = -1;      // no face earlier in Scene.shapes than the first one hit
+        var mesh_kind = -1;
+        var face = 0u;
+        if (mesh_closest(&q, hit, &place, &mesh_kind, &face, row)) {
+            instanced_place = place;
+            candidate_face = face;
+            return true;
+        }
+        return false;
+    }
+    // #endif
     // #each instanced
     if (kind == $KIND) {
         let rec = $table[row];

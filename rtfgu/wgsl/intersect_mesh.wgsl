@@ -199,8 +199,10 @@ fn mesh_uv(i: u32) -> vec2f
 
 // The nearest face hit before (*r).tmax, nearer child first; of equal ts the face earlier in
 // Scene.shapes wins, as in intersect_scene. Updates *r, *hit, *shape and *row on a hit.
+// root: the tree's first node (the scene's, 0; an instanced mesh's, whose faces' w is their
+// place in the mesh: intersect_instance.wgsl).
 fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<function, i32>,
-                kind: ptr<function, i32>, row: ptr<function, u32>) -> bool
+                kind: ptr<function, i32>, row: ptr<function, u32>, root: u32) -> bool
 {
     var sphere_hit = *hit;
     var face_hit = false;
@@ -212,8 +214,8 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
     var entry_stack: array<f32, BVH_STACK>;
     var sp = 0u;
     var found = false;
-    var node = 0u;
-    var live = box_entry(0u, o, d, inv, (*r).tmin, (*r).tmax) >= 0.0;
+    var node = root;
+    var live = box_entry(root, o, d, inv, (*r).tmin, (*r).tmax) >= 0.0;
     while (live) {
         let links = bvh_nodes[node];
         if (links.b > 0) {
@@ -296,15 +298,15 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
 }
 
 // A shadow ray: is any face hit in [tmin, tmax)?
-fn mesh_any(r: Ray) -> bool
+fn mesh_any(r: Ray, root: u32) -> bool
 {
     let d = r.direction;
     let inv = safe_inverse(d);
     let sh = ray_shear(r.direction);
     var node_stack: array<u32, BVH_STACK>;
     var sp = 0u;
-    var node = 0u;
-    var live = box_entry(0u, r.origin, d, inv, r.tmin, r.tmax) >= 0.0;
+    var node = root;
+    var live = box_entry(root, r.origin, d, inv, r.tmin, r.tmax) >= 0.0;
     while (live) {
         let links = bvh_nodes[node];
         if (links.b > 0) {

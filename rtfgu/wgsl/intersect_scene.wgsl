@@ -66,7 +66,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     for (var i = 0u; i < NUM_$TABLE; i++) {
         let rec = $table[i];
         if (intersect_$kind(q, &candidate, $args)) {
-            let index = $index[i / 4u][i % 4u];
+            let index = $index[i / 4u][i % 4u]$place;
             if (candidate.dist < (*r).tmax || index < shape) {
                 *hit = candidate;
                 (*r).tmax = candidate.dist;
@@ -74,6 +74,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
                 shape = index;
                 kind = $KIND;
                 row = i;
+                $keep
             }
         }
     }
@@ -81,7 +82,7 @@ fn intersect_scene(r: ptr<function, Ray>, hit: ptr<function, HitInfo>) -> bool
     // #if mesh
     // The mesh triangles (and the spheres, with bvh_spheres): through the BVH
     // (intersect_mesh.wgsl), with the same tie rule.
-    mesh_closest(r, hit, &shape, &kind, &row);
+    mesh_closest(r, hit, &shape, &kind, &row, 0u);
     // #endif
     // #if debug|dielectric|own_sampler
     hit_shape = shape;

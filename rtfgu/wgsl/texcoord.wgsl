@@ -115,6 +115,11 @@ fn texcoord_triangle(p: vec3f, v0: vec3f, e0: vec3f, e1: vec3f, n: vec3f) -> vec
 // (Instance.texcoord), the object found as intersect_instanced finds it.
 fn instanced_texcoord(kind: i32, row: u32, p: vec3f) -> vec2f
 {
+    // #if instanced_mesh
+    if (kind == MESH) {
+        return texcoord_mesh(p, instanced_face);
+    }
+    // #endif
     // #each instanced
     if (kind == $KIND) {
         let rec = $table[row];
