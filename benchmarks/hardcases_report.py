@@ -5,7 +5,8 @@ every family of rtfgu.hardcases, per path and precision, and what the robust one
     text = hardcases_markdown()          # markdown, to paste into docs/bench.md
     points = speed_error_points()        # one dict per path x precision x formula, for the plot
 
-Run as a script it prints the section.
+Run as a script it prints the section; ``--families NAME ...`` prints only the table rows and
+the descriptions of those families (no timing), for a family measured on its own.
 """
 from __future__ import annotations
 
@@ -31,11 +32,12 @@ def _paths():
 
 
 @lru_cache(maxsize=None)
-def hardcase_results() -> tuple:
-    """Every (family, path) Result; a lecture-layer rejection is recorded as its message.
-    A path without a formula for the family's kind (the disk's robust one) is left out."""
+def hardcase_results(families: tuple | None = None) -> tuple:
+    """Every (family, path) Result of ``families`` (None: every family); a lecture-layer
+    rejection is recorded as its message. A path without a formula for the family's kind
+    (the disk's robust one) is left out."""
     rows = []
-    for name in FAMILIES:
+    for name in families or FAMILIES:
         for path in _paths():
             if not runs(build(name, path.precision), path):
                 continue
@@ -110,6 +112,27 @@ def speed_error_points(rays: int = 200_000) -> list:
     return points
 
 
+def table_rows(results) -> list:
+    """The rows of the hard-case table for ``results`` (hardcase_results)."""
+    out = []
+    for r in results:
+        if isinstance(r, tuple):
+            name, path, formula, precision, message = r
+            out.append("| %s | %s | %s | %s | ValueError: %s | | | | |"
+                       % (name, path, precision, formula, message.split(",")[0]))
+            continue
+        spawn = "%d/%d" % (r.self_hits, r.skips) if FAMILIES[r.family][0] == "secondary" else "-"
+        out.append("| %s | %s | %s | %s | %d | %d | %s | %s | %s |"
+                   % (r.family, r.path, r.precision, r.formula, r.wrong, r.leaks, spawn,
+                      _fmt(r.rel_err_median), _fmt(r.rel_err_max)))
+    return out
+
+
+def family_lines(names) -> list:
+    """The list entries of the families ``names`` under "### Families"."""
+    return ["- `%s` (%s): %s" % (name, FAMILIES[name][0], FAMILIES[name][3]) for name in names]
+
+
 def hardcases_markdown(rays: int = 200_000) -> str:
     """The hard-case section of docs/bench.md, measured now."""
     out = ["## Hard cases", "",
@@ -126,18 +149,9 @@ def hardcases_markdown(rays: int = 200_000) -> str:
         out += ["WGSL float32 path not measured: %s" % missing, ""]
     out += ["| family | path | precision | formula | wrong | leaks | self/skip | rel. err. median | rel. err. max |",
             "|---|---|---|---|---:|---:|---:|---:|---:|"]
-    for r in hardcase_results():
-        if isinstance(r, tuple):
-            name, path, formula, precision, message = r
-            out.append("| %s | %s | %s | %s | ValueError: %s | | | | |"
-                       % (name, path, precision, formula, message.split(",")[0]))
-            continue
-        spawn = "%d/%d" % (r.self_hits, r.skips) if FAMILIES[r.family][0] == "secondary" else "-"
-        out.append("| %s | %s | %s | %s | %d | %d | %s | %s | %s |"
-                   % (r.family, r.path, r.precision, r.formula, r.wrong, r.leaks, spawn,
-                      _fmt(r.rel_err_median), _fmt(r.rel_err_max)))
+    out += table_rows(hardcase_results())
     out += ["", "### Families", ""]
-    out += ["- `%s` (%s): %s" % (name, group, desc) for name, (group, _, _, desc) in FAMILIES.items()]
+    out += family_lines(FAMILIES)
     out += ["", "### Speed cost of the robust formulas", "",
             "Rays per second of the batch evaluators (one shape per ray, %d rays, best of 3; "
             "WGSL includes upload and read-back)." % rays, "",
@@ -157,5 +171,26 @@ def hardcases_markdown(rays: int = 200_000) -> str:
     return "\n".join(out) + "\n"
 
 
+def main(argv=None) -> None:
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--families", nargs="+", metavar="NAME",
+                        help="print only these families' table rows and descriptions, untimed")
+    args = parser.parse_args(argv)
+    if not args.families:
+        print(hardcases_markdown())
+        return
+    unknown = [name for name in args.families if name not in FAMILIES]
+    if unknown:
+        parser.error("no hard-case family %s (rtfgu.hardcases.FAMILIES)" % ", ".join(unknown))
+    missing = wgsl_unavailable_reason()
+    if missing is not None:
+        print("WGSL float32 path not measured: %s" % missing)
+    print("\n".join(table_rows(hardcase_results(tuple(args.families)))))
+    print()
+    print("\n".join(family_lines(args.families)))
+
+
 if __name__ == "__main__":
-    print(hardcases_markdown())
+    main()

@@ -150,7 +150,7 @@ SHAPES = (
               from_eye=True),
     ShapeKind("disk", Disk, (("center", 3), ("normal", 3), ("radius", 1)), uses=("plane",)),
     ShapeKind("rectangle", Rectangle, (("p0", 3), ("a", 3), ("b", 3), ("normal", 3)), uses=("plane",)),
-    ShapeKind("box", Box, (("p0", 3), ("p1", 3))),
+    ShapeKind("box", Box, (("p0", 3), ("p1", 3)), uses=("record_hit",)),
     # Both sides of the open cylinder are seen: its normal turns toward the ray.
     ShapeKind("open_cylinder", OpenCylinder, (("y0", 1), ("y1", 1), ("radius", 1)), uses=("sphere", "next_after"),
               faces_ray=True),
@@ -170,7 +170,7 @@ SHAPES = (
     ShapeKind("mesh", MeshTriangle, (), numba_module="rtfgu.kernels.mesh", bvh=True),
     # Suffern's torus: a quartic, solved by Schwarze's closed form (its WGSL piece with it).
     ShapeKind("torus", Torus, (("a", 1), ("b", 1)), numba_module="rtfgu.kernels.torus",
-              uses=("solve_quartic",)),
+              uses=("record_hit", "solve_quartic")),
     # Suffern's Instance (rtfgu.shapes.instance): the rows of the inverse matrix (the
     # translation after each) and the kind and row of its object in that kind's instanced table.
     ShapeKind("instance", Instance, (("row0", 3), ("t0", 1), ("row1", 3), ("t1", 1), ("row2", 3), ("t2", 1),

@@ -6,6 +6,7 @@ axis."""
 from __future__ import annotations
 
 import math
+import struct
 
 import mpmath
 import numpy as np
@@ -407,6 +408,9 @@ def test_numba_float32_torus_kernels_stay_float32():
     q.solve_quartic(f(0), f(-6), f(11), f(-6), f(1))    # r = 0 after the shift: the cubic branch
     # each function once on its own (a cached caller compiles no callee's specialisation)
     k.bbox_hit((f(0), f(0), f(5)), (f(0), f(0), f(-1)), f(0), f(np.inf), (f(-3), f(-1), f(-3)), (f(3), f(1), f(3)))
+    lecture_hit = k.LECTURE_HIT[32]   # BBox.hit itself, compiled with float32's WIDEN
+    assert lecture_hit(k._Box((f(-3), f(-1), f(-3)), (f(3), f(1), f(3))),
+                       k._Ray((f(0), f(0), f(5)), (f(0), f(0), f(-1)), f(0), f(np.inf))) == f(2)
     k.torus_box(f(2), f(1))
     q.solve_cubic(f(-6), f(11), f(-6), f(1))
     q.solve_quadric(f(2), f(-3), f(1))
@@ -417,9 +421,56 @@ def test_numba_float32_torus_kernels_stay_float32():
     q.is_zero(f(0))
     q._keep(f(24), f(-50), f(35), f(-10), f(1), f(1.1), (0, f(0), f(0), f(0), f(0)))
     checked = _check_float32_specialisations(
-        (k.intersect_torus, k.bbox_hit, k.torus_box, k.normal_torus, tx.texcoord_torus, q.solve_quartic,
-         q.solve_cubic, q.solve_quadric, q.polish_root, q.is_root, q.quartic_value, q.cbrt, q.is_zero, q._keep))
-    assert checked >= 14
+        (k.intersect_torus, k.bbox_hit, lecture_hit, k.torus_box, k.normal_torus, tx.texcoord_torus,
+         q.solve_quartic, q.solve_cubic, q.solve_quadric, q.polish_root, q.is_root, q.quartic_value, q.cbrt,
+         q.is_zero, q._keep))
+    assert checked >= 15
+
+
+
+def _edge_ray(rng, p0, p1):
+    """(origin, direction) of a ray that touches the box p0..p1 along an edge only: it enters
+    axis j's slab at the t where it leaves axis k's, so rounding decides a hit that the
+    widened far end (BBox.hit's WIDEN) keeps."""
+    j, k, m = (int(x) for x in rng.permutation(3))
+    at_p0 = rng.integers(0, 2, 2)
+    edge = [0.0, 0.0, 0.0]
+    edge[j] = p0[j] if at_p0[0] else p1[j]
+    edge[k] = p0[k] if at_p0[1] else p1[k]
+    edge[m] = float(rng.uniform(p0[m], p1[m]))
+    d = [0.0, 0.0, 0.0]
+    d[j] = float(rng.uniform(0.2, 1.0)) * (1.0 if at_p0[0] else -1.0)    # into j's slab
+    d[k] = float(rng.uniform(0.2, 1.0)) * (-1.0 if at_p0[1] else 1.0)    # out of k's slab
+    d[m] = float(rng.normal(0.0, 0.1))
+    t = float(rng.uniform(1.0, 5.0))
+    return tuple(edge[n] - t * d[n] for n in range(3)), tuple(d)
+
+
+def test_numba_torus_box_is_the_lecture_bbox_hit_bit_for_bit():
+    """The float64 kernel's box test (BBox.hit compiled) gives the lecture layer's t, bit
+    for bit, on rays from inside and outside, along axes (a zero direction component), with
+    tmin and tmax cutting the slab interval, and touching an edge of the box."""
+    from rtfgu.accelerators.bbox import BBox
+    from rtfgu.kernels import torus as k
+
+    rng = np.random.default_rng(3)
+    p0, p1 = k.torus_box(2.0, 0.5)
+    box = BBox(Float3(*p0), Float3(*p1))
+    hits = 0
+    for i in range(300):
+        tmin = 0.0 if i % 3 else float(rng.uniform(0.0, 2.0))
+        tmax = math.inf if i % 5 else float(rng.uniform(1.0, 6.0))
+        if i % 2:
+            o, d = _edge_ray(rng, p0, p1)
+            tmin, tmax = 0.0, math.inf
+        else:   # toward a point near the box, so that about half hit
+            o = tuple(float(x) for x in rng.normal(0.0, 3.0, 3))
+            d = tuple(0.0 if i % 4 == j else float(x - o[j]) for j, x in enumerate(rng.normal(0.0, 2.0, 3)))
+        expected = box.hit(Ray(Float3(*o), Float3(*d), tmin, tmax))
+        got = k.bbox_hit(o, d, tmin, tmax, p0, p1)
+        assert struct.pack("<d", got) == struct.pack("<d", expected), (o, d, tmin, tmax, got, expected)
+        hits += expected != math.inf
+    assert 180 < hits < 270, hits   # every edge ray hits, some of the others miss
 
 
 # --- part spheres and annuli (Suffern ch. 19) -------------------------------------------

@@ -4,6 +4,8 @@ from __future__ import annotations
 import importlib.util
 from pathlib import Path
 
+import pytest
+
 from rtfgu.hardcases import NumbaPath, build, evaluate
 
 REPORT = Path(__file__).resolve().parent.parent / "benchmarks" / "hardcases_report.py"
@@ -29,3 +31,23 @@ def test_report_lists_slide_failures():
     points = report.speed_error_points(rays=2000)
     assert {(p["path"], p["precision"], p["formula"]) for p in points} >= {
         ("numba", "float32", "slide"), ("numba", "float32", "robust")}
+
+
+def test_families_option_prints_only_those_rows_and_descriptions(capsys):
+    report = _load()
+    report.main(["--families", "instance_inside"])
+    out = capsys.readouterr().out
+    rows = [line for line in out.split("\n") if line.startswith("| ")]
+    assert rows and all(line.startswith("| instance_inside | ") for line in rows), out
+    wrong = evaluate(build("instance_inside", "float32"), NumbaPath("slide", "float32")).wrong
+    assert "| instance_inside | numba | float32 | slide | %d |" % wrong in out
+    assert "- `instance_inside` (instance): rays that start inside an ellipsoid" in out
+    assert "Speed cost" not in out and "sphere_tangent" not in out
+
+
+def test_families_option_names_an_unknown_family(capsys):
+    report = _load()
+    with pytest.raises(SystemExit) as stop:
+        report.main(["--families", "instance_inside", "no_such_family"])
+    assert stop.value.code == 2
+    assert "no hard-case family no_such_family" in capsys.readouterr().err

@@ -11,10 +11,14 @@ rtfgu.kernels.quartic (Schwarze's SolveQuartic and Newton steps).
 from __future__ import annotations
 
 import math
+from collections import namedtuple
+from types import FunctionType
 
+import numpy as np
 from numba import njit
+from numba.extending import overload
 
-from ..accelerators.bbox import PAD, WIDEN, WIDEN32
+from ..accelerators.bbox import PAD, WIDEN32, BBox
 from .float3 import add, div, length, lit, lit_per_precision, normalize, scale
 from .quartic import solve_quartic
 
@@ -23,29 +27,37 @@ from .quartic import solve_quartic
 PAD32 = 2.0 ** -20
 
 
+# BBox.hit (rtfgu/accelerators/bbox.py) itself, compiled: its ``self`` is a _Box and its
+# ``ray`` a _Ray of tuples, which index and read as Float3 and Ray do, so a float64 kernel
+# rounds as the lecture layer. A float32 kernel compiles it with WIDEN read as float32's
+# 1 + 2 gamma_3 (WIDEN32), so that it computes in float32 throughout.
+_Box = namedtuple("_Box", ("p0", "p1"))
+_Ray = namedtuple("_Ray", ("origin", "direction", "tmin", "tmax"))
+LECTURE_HIT = {64: njit(error_model="numpy")(BBox.hit),
+               32: njit(error_model="numpy")(FunctionType(BBox.hit.__code__,
+                                                          dict(BBox.hit.__globals__, WIDEN=np.float32(WIDEN32)),
+                                                          BBox.hit.__name__))}
+
+
+def box_hit_in_precision(box, ray):
+    """LECTURE_HIT for the float type of ray.tmin (plain Python: the kernels also run with
+    the JIT disabled, where this is called directly)."""
+    return LECTURE_HIT[np.dtype(type(ray.tmin)).itemsize * 8](box, ray)
+
+
+@overload(box_hit_in_precision)
+def _box_hit_in_precision_overload(box, ray):
+    hit = LECTURE_HIT[ray.types[2].bitwidth]
+
+    def impl(box, ray):
+        return hit(box, ray)
+    return impl
+
+
 @njit(cache=True, error_model="numpy")
 def bbox_hit(origin, direction, tmin, tmax, p0, p1):
     """BBox.hit: the t at which the ray enters the box p0..p1 within [tmin, tmax], or inf."""
-    widen = lit_per_precision(WIDEN32, WIDEN, tmin)
-    t0 = tmin
-    t1 = tmax
-    for k in range(3):
-        o = origin[k]
-        w = direction[k]
-        if w == lit(0.0, w):
-            if o < p0[k] or o > p1[k]:
-                return lit(math.inf, tmin)
-            continue
-        t_near = (p0[k] - o) / w
-        t_far = (p1[k] - o) / w
-        if t_near > t_far:
-            t_near, t_far = t_far, t_near
-        t_far *= widen
-        t0 = max(t0, t_near)
-        t1 = min(t1, t_far)
-        if t0 > t1:
-            return lit(math.inf, tmin)
-    return t0
+    return lit(box_hit_in_precision(_Box(p0, p1), _Ray(origin, direction, tmin, tmax)), tmin)
 
 
 @njit(cache=True, error_model="numpy")

@@ -38,11 +38,8 @@ fn intersect_box(r: Ray, hit: ptr<function, HitInfo>, p0: vec3f, p1: vec3f) -> b
     if (!(t >= r.tmin && t < r.tmax)) {
         return false;
     }
-    (*hit).has_hit = true;
-    (*hit).dist = t;
-    (*hit).position = r.origin + r.direction * t;
-    (*hit).normal = normal_box((*hit).position, p0, p1);
-    return true;
+    let position = r.origin + r.direction * t;
+    return record_hit(hit, t, position, normal_box(position, p0, p1));
 }
 
 // The face (0-5: -x, -y, -z, +x, +y, +z) nearest to the point, the first at equal distances.

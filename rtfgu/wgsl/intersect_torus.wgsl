@@ -36,11 +36,8 @@ fn intersect_torus(r: Ray, hit: ptr<function, HitInfo>, a: f32, b: f32) -> bool
     if (!found) {
         return false;
     }
-    (*hit).has_hit = true;
-    (*hit).dist = t;
-    (*hit).position = r.origin + r.direction * t;
-    (*hit).normal = normal_torus((*hit).position, a, b);
-    return true;
+    let position = r.origin + r.direction * t;
+    return record_hit(hit, t, position, normal_torus(position, a, b));
 }
 
 // BBox.hit for the book's box (-a - b, -b, -a - b)..(a + b, b, a + b), grown by 2^-20 of
