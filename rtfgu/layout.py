@@ -207,7 +207,8 @@ class FlatMesh:
     without uvs (whose faces' (u, v) are then their barycentrics), or None when no mesh has
     uvs; ``bvh`` the FlatBVH over the rows (its build_seconds: 0 when it came
     from the scene's cache); ``spheres``: whether it holds the spheres (the sphere table then
-    has no loop of its own). ``scene_tree``: whether the scene's own tree is there, from node
+    has no loop of its own); ``instances``: whether it holds the instances, rows
+    [INSTANCE_ROW, instance row, 0, scene index] (their loop then has none either). ``scene_tree``: whether the scene's own tree is there, from node
     0 (False where every mesh is an instance's); ``roots``: the first node of the tree of each
     mesh instances hold, whose rows end in the face's place in its mesh (compile_mesh)."""
 
@@ -220,6 +221,7 @@ class FlatMesh:
     uvs: np.ndarray = None
     roots: tuple = ()
     scene_tree: bool = True
+    instances: bool = False
 
     @property
     def nbytes(self) -> int:
@@ -478,6 +480,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     instanced_rows = {}   # id(object) -> its row in its kind's instanced table
 
     instanced_meshes = []   # the Meshes instances hold, each laid out once (compile_mesh)
+    instance_shapes = []    # the Instances, in the order of their rows
 
     def instance_row(where: str, kind, shape) -> list:
         """The row of an Instance: its inverse matrix and its object's kind and instanced row
@@ -524,6 +527,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             mesh_faces.append((i, shape))
         elif kind.instance:
             rows[kind.name][0].append(instance_row(where, kind, shape))
+            instance_shapes.append(shape)
             if isinstance(shape.object, Mesh):
                 # As the lecture layer traces it (Instance.faces): an instance of each face,
                 # in the mesh's order, each with the instance's material or the face's own.
@@ -594,8 +598,15 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         and not any(SHADER_BY_ID[s].continues for s in unique_shaders.tolist())
     bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
                                                                 and not eye_rays_only))
-    mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype, instanced_meshes) \
-        if mesh_faces or bvh_spheres or instanced_meshes else None
+    # The instances go into the scene's tree as the spheres do, with their boxes
+    # (Instance.bounds), where each has one and none holds a Mesh (whose tree the instance's
+    # test would enter from inside the scene's: intersect_mesh.wgsl).
+    boxes = [shape.bounds() for shape in instance_shapes] if not instanced_meshes else [None]
+    bvh_instances = len(instance_shapes) > 0 and all(box is not None for box in boxes) and (
+        bool(mesh_faces) or bvh_spheres or len(instance_shapes) >= BVH_MIN_SPHERES)
+    mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype, instanced_meshes,
+                        (shapes["instance"][1], boxes) if bvh_instances else None) \
+        if mesh_faces or bvh_spheres or instanced_meshes or bvh_instances else None
     if instanced_meshes:
         # An instance of a Mesh names the root of its mesh's tree (compile_mesh).
         instances = shapes["instance"][0]
@@ -615,6 +626,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             features.add("uv_mesh")
         if bvh_spheres:
             features.add("bvh_spheres")
+        if bvh_instances:
+            features.add("bvh_instances")
     for kind in SHAPES:
         if kind.bvh:
             faces = mesh.faces if mesh is not None else np.zeros((0, 4), dtype=np.int32)
@@ -665,6 +678,8 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
 BVH_MIN_SPHERES = 16
 # The first entry of a sphere's row in FlatMesh.faces.
 SPHERE_ROW = -1
+# The first entry of an instance's row in FlatMesh.faces.
+INSTANCE_ROW = -2
 
 # What compile_scene made for a scene from its meshes, per precision: the BVH and the
 # FlatMesh arrays, the materials table. {scene: {name: (inputs, value)}}: a value is reused
@@ -690,7 +705,7 @@ def _cached(scene, name, inputs: tuple, make):
     return value, False
 
 
-def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=()) -> FlatMesh:
+def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None) -> FlatMesh:
     """The FlatMesh of the mesh triangles ``mesh_faces`` ((index, MeshTriangle) or (index of
     its first face, Mesh), ...) and, unless ``spheres`` is None, of the sphere table and index
     ``spheres``, with the scene's BVH over them (built, or taken from the scene's cache).
@@ -699,6 +714,9 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=()) -> FlatMesh:
     instances) follows with its faces and a tree of its own, over its own coordinates: its
     rows' last entry is the face's place in the mesh (an instance adds its first index), its
     tree's nodes come after the scene's, and ``roots`` names each tree's first node.
+
+    ``instances``: None, or the instance index and each Instance's box (Instance.bounds), for
+    rows [INSTANCE_ROW, instance row, 0, scene index] in the scene's tree after the spheres'.
 
     A Mesh is packed from its arrays (its faces' rows are its ``faces`` plus the place of its
     first vertex); a MeshTriangle gives its row itself. Either way the rows, and so the BVH,
@@ -761,9 +779,22 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=()) -> FlatMesh:
         reach = radius + pad * (np.abs(center).max(axis=1) + radius)
         faces = np.concatenate([faces, np.stack([np.full(len(table), SPHERE_ROW), np.arange(len(table)),
                                                  np.zeros(len(table)), index], axis=1).astype(np.int64)])
-        sphere_lo, sphere_hi = center - reach[:, None], center + reach[:, None]
+        bound_lo, bound_hi = center - reach[:, None], center + reach[:, None]
     else:
-        sphere_lo = sphere_hi = np.zeros((0, 3))
+        bound_lo = bound_hi = np.zeros((0, 3))
+    if instances is not None:
+        # An instance's box, grown in float32 by 2^-16 of its size and distance from the
+        # origin: its float32 test transforms the ray with a rounded matrix.
+        index, boxes = instances
+        box_lo = np.array([[b.p0.x, b.p0.y, b.p0.z] for b in boxes])
+        box_hi = np.array([[b.p1.x, b.p1.y, b.p1.z] for b in boxes])
+        if dtype != np.float64:
+            pad = 2.0 ** -16 * (np.abs(np.concatenate([box_lo, box_hi], axis=1)).max(axis=1)
+                                + (box_hi - box_lo).max(axis=1))
+            box_lo, box_hi = box_lo - pad[:, None], box_hi + pad[:, None]
+        faces = np.concatenate([faces, np.stack([np.full(len(index), INSTANCE_ROW), np.arange(len(index)),
+                                                 np.zeros(len(index)), index], axis=1).astype(np.int64)])
+        bound_lo, bound_hi = np.concatenate([bound_lo, box_lo]), np.concatenate([bound_hi, box_hi])
     # What the BVH and the arrays depend on: the vertices, the rows, the spheres' boxes and
     # the normals and uvs (_cached compares them with those of the last compile).
 
@@ -771,7 +802,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=()) -> FlatMesh:
         trees, rows, roots = [], [], []
         if len(faces):
             lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
-            bvh = flat_bvh.build(np.concatenate([lo, sphere_lo]), np.concatenate([hi, sphere_hi]))
+            bvh = flat_bvh.build(np.concatenate([lo, bound_lo]), np.concatenate([hi, bound_hi]))
             trees.append(bvh)
             rows.append(faces[bvh.order])
         for part in object_faces:
@@ -785,9 +816,9 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=()) -> FlatMesh:
                         normals=None if normals is None else normals.astype(dtype),
                         uvs=None if uvs is None else uvs.astype(dtype),
                         bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None,
-                        roots=tuple(roots), scene_tree=len(faces) > 0)
+                        roots=tuple(roots), scene_tree=len(faces) > 0, instances=instances is not None)
 
-    inputs = (vertices, faces, sphere_lo, sphere_hi, np.zeros(0) if normals is None else normals,
+    inputs = (vertices, faces, bound_lo, bound_hi, np.zeros(0) if normals is None else normals,
               np.zeros(0) if uvs is None else uvs, *object_faces)
     mesh, reused = _cached(scene, ("mesh", np.dtype(dtype).name), inputs, make)
     return dataclasses.replace(mesh, build_seconds=0.0) if reused else mesh

@@ -208,14 +208,14 @@ def _octahedron(**kwargs) -> Mesh:
     return Mesh(v, f, [(0.9, 0.2, 0.1 + 0.1 * k) for k in range(8)], **kwargs)
 
 
-def _agree(path, scene, rays):
+def _agree(path, scene, rays, float32=2e-4):
     """Each ray's bounces on ``path`` against the lecture layer's: exactly in float64 (the
-    shape hit, its kind and shader always exactly), within float32's rounding otherwise."""
+    shape hit, its kind and shader always exactly), within ``float32`` (relative) otherwise."""
     from rtfgu.debug import first_difference
 
     want = path.reference.trace(scene, rays)
     got = path.trace(scene, rays)
-    tolerance = 0.0 if path.precision == "float64" else 2e-4
+    tolerance = 0.0 if path.precision == "float64" else float32
     for ray, a, b in zip(rays, want, got):
         assert first_difference(a, b, tolerance) is None, (path.label, ray, a, b)
     return want
@@ -269,3 +269,56 @@ def test_a_tie_inside_an_instanced_mesh_goes_to_the_earlier_face_on_every_path(p
             ((-1.5, 0.5, 3.0), (0.0, 0.0, -1.0), 0.0, math.inf)]     # the third's diagonal
     want = _agree(path, scene, rays)
     assert [b[0].shape for b in want] == [0, 1, 4]
+
+
+def _instances(count: int) -> list:
+    """``count`` instances of one unit sphere and one unit box, each scaled, turned and moved
+    along a row, and a floor under them."""
+    sphere, box = Sphere((0.0, 0.0, 0.0), 1.0, GREY), Box((0.0, 0.0, 0.0), (1.0, 1.0, 1.0), GREY)
+    shapes = [Instance(sphere if k % 2 else box, Matte(cd=Float3(0.2 + 0.03 * k, 0.5, 0.3)))
+              .scale(0.3 + 0.02 * k, 0.4, 0.35).rotate_y(17.0 * k).translate(-4.0 + 0.4 * k, 0.3 * math.sin(k), -0.5 * k)
+              for k in range(count)]
+    return shapes + [Rectangle((-6.0, -1.5, -12.0), (0.0, 0.0, 14.0), (12.0, 0.0, 0.0), GREY, Matte())]
+
+
+def test_the_bvh_holds_the_instances_on_every_path(path):
+    """Twenty instances (BVH_MIN_SPHERES or more) go into the scene's BVH by their boxes
+    (Instance.bounds), as the spheres do, and a triangle's mesh takes them in with it: every
+    path hits what the lecture layer hits, and the shadow rays find the instances there too."""
+    from rtfgu import PointLight
+    from rtfgu.layout import BVH_MIN_SPHERES, INSTANCE_ROW, compile_scene
+
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.lights = [PointLight(Float3(0.0, 6.0, 0.5), Float3(1.0, 1.0, 1.0), 30.0)]
+    scene.shadows = True
+    rays = [((x, y, 5.0), (0.0, 0.0, -1.0), 0.0, math.inf)
+            for x in np.linspace(-4.3, 4.1, 24) for y in np.linspace(-1.4, 1.3, 8)]
+    rays += [((x, 4.0, z), (0.0, -1.0, 0.0), 0.0, math.inf) for x in np.linspace(-4.3, 4.1, 16) for z in (-7.0, -2.5, 0.5)]
+    triangle = Mesh(np.array([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]), np.array([(0, 1, 2)]), GREY)
+    for shapes in (_instances(BVH_MIN_SPHERES + 4), _instances(3) + [triangle]):
+        scene.shapes = shapes
+        flat = compile_scene(scene)
+        assert "bvh_instances" in flat.features
+        assert (flat.mesh.faces[:, 0] == INSTANCE_ROW).sum() == flat.count("instance")
+        want = _agree(path, scene, rays, float32=1e-3)
+        assert len({b[0].shape for b in want if b and b[0].kind == "instance"}) >= 3
+        floor = [b[0].color for b in want if b and b[0].kind == "rectangle"]
+        assert min(floor) < max(floor), "some of the floor lies in an instance's shadow"
+
+
+def test_instances_stay_in_their_loop_where_the_bvh_cannot_hold_them():
+    """Fewer than BVH_MIN_SPHERES instances without a mesh, an instance of a plane (no box),
+    or an instance of a Mesh (whose tree the BVH's test would enter from inside it): the
+    instances keep their loop."""
+    from rtfgu import Plane
+    from rtfgu.layout import compile_scene
+
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    plane = Instance(Plane((0.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY)).translate(0.0, -2.0, 0.0)
+    for shapes in (_instances(3), _instances(20) + [plane], _instances(20) + [Instance(_octahedron())]):
+        scene.shapes = shapes
+        flat = compile_scene(scene)
+        assert "bvh_instances" not in flat.features
+        assert flat.mesh is None or not flat.mesh.instances
+    scene.shapes = _instances(20)
+    assert "bvh_instances" in compile_scene(scene).features

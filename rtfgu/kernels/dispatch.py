@@ -66,16 +66,19 @@ def slot_offsets() -> dict:
 
 def _mesh_parts(k: int, kind, at: int) -> list:
     """scan_, any_hit_, normal_row_ and texcoord_row_ of a mesh kind: the BVH's traversal
-    (of the faces, and of the spheres when it holds them: rtfgu.layout.FlatMesh)."""
+    (of the faces, and of the spheres and the instances when it holds them:
+    rtfgu.layout.FlatMesh; ``instances`` is the instance kind's table, index and objects)."""
     name = kind.name
     return [
-        _overloaded("scan_" + name, "vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula",
-                    "hit",
-                    "    return mesh_closest(vertices, faces, nodes, links, spheres, %d, origin, direction, tmin, hit, formula)" % k,
+        _overloaded("scan_" + name, "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, hit, "
+                    "formula", "hit",
+                    "    return mesh_closest(vertices, faces, nodes, links, spheres, %d, origin, direction, tmin, hit, "
+                    "formula, 0, instances)" % k,
                     "The nearest hit among what the BVH holds, given the nearest so far"),
-        _overloaded("any_hit_" + name, "vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula",
-                    "False",
-                    "    return mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula)",
+        _overloaded("any_hit_" + name, "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, "
+                    "tmax, formula", "False",
+                    "    return mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, "
+                    "0, instances)",
                     "Is anything the BVH holds hit in [tmin, tmax)?"),
         _overloaded("normal_row_" + name, "vertices, faces, normals, row, position, direction", "position",
                     "    return normal_mesh(vertices, faces, normals, row, position)",
@@ -137,6 +140,12 @@ def _instance_parts(k: int, kind) -> list:
         "(lit(math.inf, tmin), 0, -1)",
         "(t, place, face) of the object along the object-space ray: t in [tmin, tmax] or inf; a "
         "mesh's face hit, its place in the mesh and its row in faces (instanced_mesh_t), else 0 and -1."))
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+        "def instance_t(table, objects, i, origin, direction, tmin, tmax, formula):",
+        '    """t of instance ``i`` in [tmin, tmax), else inf (the BVH\'s test of an instance it holds)."""',
+        "    return instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
+        "tmin, tmax, formula, -1)[0]" % (obj % ("i", "i"))]))
     parts.append(_object_switch("instanced_normal", "face, position, direction",
                                 "normal_row_{kind}({table}, row, position, direction)",
                                 "normal_row_mesh({vertices}, {faces}, {normals}, face, position, direction)",
@@ -482,8 +491,9 @@ def source() -> str:
     for k, kind in enumerate(SHAPES):
         a = at[kind.name]
         if kind.bvh:
-            mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d], shapes[%d]" % (
-                a, a + 1, a + 3, a + 4, at["sphere"])
+            instance = at["instance"]
+            mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d], shapes[%d], (shapes[%d], shapes[%d], %s)" % (
+                a, a + 1, a + 3, a + 4, at["sphere"], instance, instance + 1, _objects(instance))
             calls.append("    hit = scan_%s(%s, origin, direction, tmin, hit, formula)" % (kind.name, mesh))
             shadow_calls.append("    if any_hit_%s(%s, position, w_i, tmin, tmax, formula):\n        return True"
                                 % (kind.name, mesh))
@@ -684,3 +694,4 @@ shape_normal = _generated.shape_normal
 shade = _generated.shade
 surface_color = _generated.surface_color
 direct_path = _generated.direct_path
+instance_t = _generated.instance_t

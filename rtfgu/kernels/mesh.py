@@ -33,7 +33,10 @@ from numba.core import cgutils
 from numba.extending import intrinsic, overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
-from ..layout import SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
+from ..layout import INSTANCE_ROW, SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
+from ..registry import SHAPE_IDS
+
+INSTANCE = SHAPE_IDS["instance"]
 from .dispatch_support import as_python
 from .intersect import intersect_sphere, intersect_sphere_robust
 from .robust import _pick, ray_shear
@@ -127,6 +130,24 @@ def _typed_sphere_prim(spheres, row, origin, direction, tmin, tmax, formula):
     return test
 
 
+def instance_prim(instances, row, origin, direction, tmin, tmax, formula):
+    """t of instance ``row`` in [tmin, tmax), else inf, for the tree that holds the instances
+    (rows INSTANCE_ROW): ``instances`` is the instance kind's (table, index, objects); inf
+    where the tree holds none (its table None, or an index: the instances' own loop)."""
+    return as_python(_typed_instance_prim, instances, row, origin, direction, tmin, tmax, formula)
+
+
+@overload(instance_prim, inline="always")
+def _typed_instance_prim(instances, row, origin, direction, tmin, tmax, formula):
+    if isinstance(instances.types[0], types.NoneType) or not isinstance(instances.types[1], types.NoneType):
+        return lambda instances, row, origin, direction, tmin, tmax, formula: lit(math.inf, tmin)
+    from .dispatch import instance_t    # generated from the registry: the instance's object switch
+
+    def test(instances, row, origin, direction, tmin, tmax, formula):
+        return instance_t(instances[0], instances[2], row, origin, direction, tmin, tmax, formula)
+    return test
+
+
 @njit(cache=True, error_model="numpy", inline="always")
 def box_entry(nodes, n, origin, inv, tmin, tmax):
     """BBox.hit for node ``n``: the t at which the ray enters its box within [tmin, tmax],
@@ -163,12 +184,14 @@ def _inverse(direction):
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
 # they are shared by every render kernel (each scene's kinds compile a kernel of their own).
 @njit(cache=True, error_model="numpy")
-def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction, tmin, hit, formula, root=0):
-    """The nearest face or sphere hit, given the nearest hit so far ``hit`` = (t, scene
-    index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier one is
-    tested up to the next float above the best t). A face is (kind, its row in faces), a
-    sphere (SPHERE, its row in the sphere table). ``root``: the tree's first node (the
-    scene's, 0; an instanced mesh's, whose rows' indices are places in the mesh)."""
+def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction, tmin, hit, formula, root=0,
+                 instances=(None, None, None)):
+    """The nearest face, sphere or instance hit, given the nearest hit so far ``hit`` = (t,
+    scene index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier
+    one is tested up to the next float above the best t). A face is (kind, its row in
+    faces), a sphere (SPHERE, its row in the sphere table), an instance (INSTANCE, its row:
+    instance_prim). ``root``: the tree's first node (the scene's, 0; an instanced mesh's,
+    whose rows' indices are places in the mesh)."""
     tmax, best, best_kind, best_row = hit
     inf = lit(math.inf, tmin)
     frame = ray_frame(origin, direction)
@@ -189,6 +212,9 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
                 if faces[f, 0] == SPHERE_ROW:
                     t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
                     k, r = SPHERE, faces[f, 1]
+                elif faces[f, 0] == INSTANCE_ROW:
+                    t = instance_prim(instances, faces[f, 1], origin, direction, tmin, limit, formula)
+                    k, r = INSTANCE, faces[f, 1]
                 else:
                     t = intersect_face(vertices, faces, f, frame, tmin, limit)
                     k, r = kind, f
@@ -225,7 +251,8 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
 
 
 @njit(cache=True, error_model="numpy")
-def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0):
+def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0,
+             instances=(None, None, None)):
     """A shadow ray: is any face or sphere hit in [tmin, tmax)? ``root`` as in mesh_closest."""
     inf = lit(math.inf, tmin)
     frame = ray_frame(origin, direction)
@@ -240,6 +267,9 @@ def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tm
             for f in range(first, first + count):
                 if faces[f, 0] == SPHERE_ROW:
                     if sphere_prim(spheres, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
+                        return True
+                elif faces[f, 0] == INSTANCE_ROW:
+                    if instance_prim(instances, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
                         return True
                 elif intersect_face(vertices, faces, f, frame, tmin, tmax) < tmax:
                     return True

@@ -78,7 +78,9 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
             # The instance table and index, then the instanced table of each kind an instance
             # may hold (None for a kind none holds), then the mesh arrays with the trees of
             # the meshes instances hold (None where none holds one).
-            shapes += (flat.table(kind.name), flat.index(kind.name)) + tuple(
+            # The index is None where the BVH holds the instances (no loop of their own).
+            in_bvh = flat.mesh is not None and flat.mesh.instances
+            shapes += (flat.table(kind.name), None if in_bvh else flat.index(kind.name)) + tuple(
                 flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
                 + (mesh_arrays(flat) if "instanced_mesh" in flat.features else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:

@@ -173,7 +173,8 @@ def each_kinds(flat, features, formula):
                        "$keep": "instanced_face = candidate_face;" if of_mesh else ""})
     # The kinds intersect_scene and in_shadow loop over: the BVH holds the others.
     rows = [entry for entry in shapes
-            if not (entry["$kind"] == "sphere" and "bvh_spheres" in features)]
+            if not (entry["$kind"] == "sphere" and "bvh_spheres" in features)
+            and not (entry["$kind"] == "instance" and "bvh_instances" in features)]
     lights = [{"$kind": kind.name, "$table": kind.table, "$TABLE": kind.table.upper()}
               for kind in LIGHTS if len(flat.lights[kind.name])]
     shaders, brdfs = [], []

@@ -9,7 +9,9 @@
 //   bvh_nodes      the BVH (rtfgu.accelerators.flat_bvh): a leaf has b = its face count and
 //                  a = its first face; an inner node b = 0 and its children at a and a + 1.
 // With the feature bvh_spheres the BVH holds the spheres too: a row [-1, row in spheres, 0,
-// place in Scene.shapes] of mesh_faces is that sphere (rtfgu.layout.FlatMesh).
+// place in Scene.shapes] of mesh_faces is that sphere (rtfgu.layout.FlatMesh); with
+// bvh_instances the instances, a row [-2, row in instances, 0, place in Scene.shapes]
+// (never with instanced_mesh: an instance's mesh would enter mesh_closest from inside it).
 // A face is hit where the watertight test hits it (Woop, Benthin and Wald 2013, as in
 // robust_triangle.wgsl, with the ray's shear computed once per ray): faces that share an
 // edge compute its edge function from the same two vertices, so no ray leaks through it.
@@ -204,7 +206,7 @@ fn mesh_uv(i: u32) -> vec2f
 fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<function, i32>,
                 kind: ptr<function, i32>, row: ptr<function, u32>, root: u32) -> bool
 {
-    var sphere_hit = *hit;
+    var shape_hit = *hit;
     var face_hit = false;
     let o = (*r).origin;
     let d = (*r).direction;
@@ -224,16 +226,35 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
             for (var f = u32(links.a); f < u32(links.a + links.b); f++) {
                 let face = mesh_faces[f];
                 // #if bvh_spheres
-                if (face.x < 0) {
+                if (face.x == -1) {
                     let rec = spheres[face.y];
                     var candidate = *hit;
                     if (intersect_sphere(q, &candidate, rec.center, rec.radius)
                         && (candidate.dist < (*r).tmax || face.w < *shape)) {
-                        sphere_hit = candidate;
+                        shape_hit = candidate;
                         (*r).tmax = candidate.dist;
                         q.tmax = next_up(candidate.dist);
                         *shape = face.w;
                         *kind = SPHERE;
+                        *row = u32(face.y);
+                        found = true;
+                        face_hit = false;
+                    }
+                    continue;
+                }
+                // #endif
+                // #if bvh_instances
+                if (face.x == -2) {
+                    let rec = instances[face.y];
+                    var candidate = *hit;
+                    if (intersect_instance(q, &candidate, rec.row0, rec.t0, rec.row1, rec.t1, rec.row2, rec.t2,
+                                           rec.object_kind, rec.object_row)
+                        && (candidate.dist < (*r).tmax || face.w < *shape)) {
+                        shape_hit = candidate;
+                        (*r).tmax = candidate.dist;
+                        q.tmax = next_up(candidate.dist);
+                        *shape = face.w;
+                        *kind = INSTANCE;
                         *row = u32(face.y);
                         found = true;
                         face_hit = false;
@@ -292,7 +313,7 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
         (*hit).position = (*r).origin + (*r).direction * (*r).tmax;
         (*hit).normal = mesh_normal(*row, (*hit).position);
     } else if (found) {
-        *hit = sphere_hit;
+        *hit = shape_hit;
     }
     return found;
 }
@@ -311,12 +332,25 @@ fn mesh_any(r: Ray, root: u32) -> bool
         let links = bvh_nodes[node];
         if (links.b > 0) {
             for (var f = u32(links.a); f < u32(links.a + links.b); f++) {
-                // #if bvh_spheres
+                // #if bvh_spheres|bvh_instances
                 let face = mesh_faces[f];
-                if (face.x < 0) {
+                // #endif
+                // #if bvh_spheres
+                if (face.x == -1) {
                     let rec = spheres[face.y];
                     var candidate = empty_hit();
                     if (intersect_sphere(r, &candidate, rec.center, rec.radius)) {
+                        return true;
+                    }
+                    continue;
+                }
+                // #endif
+                // #if bvh_instances
+                if (face.x == -2) {
+                    let rec = instances[face.y];
+                    var candidate = empty_hit();
+                    if (intersect_instance(r, &candidate, rec.row0, rec.t0, rec.row1, rec.t1, rec.row2, rec.t2,
+                                           rec.object_kind, rec.object_row)) {
                         return true;
                     }
                     continue;
