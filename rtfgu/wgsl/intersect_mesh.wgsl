@@ -225,36 +225,32 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
             q.tmax = next_up((*r).tmax);
             for (var f = u32(links.a); f < u32(links.a + links.b); f++) {
                 let face = mesh_faces[f];
-                // #if bvh_spheres
-                if (face.x == -1) {
-                    let rec = spheres[face.y];
+                // #if bvh_spheres|bvh_instances
+                // A row of the sphere table (face.x -1) or of the instance table (-2).
+                if (face.x < 0) {
                     var candidate = *hit;
-                    if (intersect_sphere(q, &candidate, rec.center, rec.radius)
-                        && (candidate.dist < (*r).tmax || face.w < *shape)) {
-                        shape_hit = candidate;
-                        (*r).tmax = candidate.dist;
-                        q.tmax = next_up(candidate.dist);
-                        *shape = face.w;
-                        *kind = SPHERE;
-                        *row = u32(face.y);
-                        found = true;
-                        face_hit = false;
+                    var hit_row = false;
+                    var row_kind = SPHERE;
+                    // #if bvh_spheres
+                    if (face.x == -1) {
+                        let rec = spheres[face.y];
+                        hit_row = intersect_sphere(q, &candidate, rec.center, rec.radius);
                     }
-                    continue;
-                }
-                // #endif
-                // #if bvh_instances
-                if (face.x == -2) {
-                    let rec = instances[face.y];
-                    var candidate = *hit;
-                    if (intersect_instance(q, &candidate, rec.row0, rec.t0, rec.row1, rec.t1, rec.row2, rec.t2,
-                                           rec.object_kind, rec.object_row)
-                        && (candidate.dist < (*r).tmax || face.w < *shape)) {
+                    // #endif
+                    // #if bvh_instances
+                    if (face.x == -2) {
+                        let rec = instances[face.y];
+                        hit_row = intersect_instance(q, &candidate, rec.row0, rec.t0, rec.row1, rec.t1, rec.row2,
+                                                     rec.t2, rec.object_kind, rec.object_row);
+                        row_kind = INSTANCE;
+                    }
+                    // #endif
+                    if (hit_row && (candidate.dist < (*r).tmax || face.w < *shape)) {
                         shape_hit = candidate;
                         (*r).tmax = candidate.dist;
                         q.tmax = next_up(candidate.dist);
                         *shape = face.w;
-                        *kind = INSTANCE;
+                        *kind = row_kind;
                         *row = u32(face.y);
                         found = true;
                         face_hit = false;
