@@ -388,13 +388,19 @@ def compile_camera(camera) -> tuple[int, np.ndarray]:
 
 def _leaves(shapes):
     """(where, shape) of Scene.shapes with each Compound (rtfgu.shapes.compound) replaced by its
-    leaves, in order: a compound has no row of its own, its children take its place."""
+    leaves, in order: a compound has no row of its own, its children take its place; an
+    Instance of a Compound by an Instance of each leaf (Instance.parts)."""
     from .shapes.compound import Compound
+    from .shapes.instance import Instance
 
     for p, shape in enumerate(shapes):
         if isinstance(shape, Compound):
             for k, child in enumerate(shape.leaves()):
                 yield "Scene.shapes[%d] (leaf %d of its %s)" % (p, k, type(shape).__name__), child
+        elif isinstance(shape, Instance) and isinstance(shape.object, Compound):
+            # An instance of each leaf (Instance.parts), each leaf's row shared by them all.
+            for k, part in enumerate(shape.parts()):
+                yield "Scene.shapes[%d] (leaf %d of its Instance's %s)" % (p, k, type(shape.object).__name__), part
         else:
             yield "Scene.shapes[%d]" % p, shape
 

@@ -37,14 +37,15 @@ class Scene:
     def with_faces(self) -> "Scene":
         """The scene as the lecture layer traces it: ``shapes`` with each ``Mesh`` replaced by
         its faces, ``mesh.triangles()`` (made on the first call, then kept by the mesh), in
-        place, and each Instance of a Mesh by an Instance of each face (``Instance.faces()``).
+        place, and each Instance of a Mesh or a Compound by an Instance of each face or leaf
+        (``Instance.parts()``).
         A shallow copy that shares everything else; the scene itself when it holds no
         Mesh. The numba and WGSL paths read a Mesh's arrays instead (rtfgu.layout)."""
         from .shapes.instance import Instance
         from .shapes.mesh import Mesh
 
         def has_faces(shape) -> bool:
-            return isinstance(shape, Mesh) or (isinstance(shape, Instance) and shape.holds_mesh())
+            return isinstance(shape, Mesh) or (isinstance(shape, Instance) and shape.holds_parts())
 
         if not any(has_faces(shape) for shape in self.shapes):
             return self
@@ -54,7 +55,7 @@ class Scene:
             if isinstance(shape, Mesh):
                 view.shapes += shape.triangles()
             elif has_faces(shape):
-                view.shapes += shape.faces()
+                view.shapes += shape.parts()
             else:
                 view.shapes.append(shape)
         return view

@@ -322,3 +322,25 @@ def test_instances_stay_in_their_loop_where_the_bvh_cannot_hold_them():
         assert flat.mesh is None or not flat.mesh.instances
     scene.shapes = _instances(20)
     assert "bvh_instances" in compile_scene(scene).features
+
+
+def test_instances_of_a_compound_share_its_leaves_on_every_path(path):
+    """A solid cylinder (a Compound of a tube and two disks) placed twice, once with a
+    material of its own: every path hits the leaf the lecture layer hits, numbered as the
+    compound's leaves in its place, and the leaves' rows are laid out once for both."""
+    from rtfgu import Phong, SolidCylinder
+    from rtfgu.layout import compile_scene
+
+    can = SolidCylinder(-0.5, 0.5, 0.6, (0.8, 0.3, 0.1), Matte())
+    scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+    scene.shapes = [Instance(can).rotate_x(60.0).translate(-1.2, 0.0, 0.0),
+                    Instance(can, Phong(cd=Float3(0.2, 0.6, 0.9), cs=Float3(0.3, 0.3, 0.3), exp=20.0))
+                    .scale(1.0, 1.5, 1.0).rotate_z(40.0).translate(1.2, 0.0, 0.0)]
+    rays = [((x, y, 5.0), (0.0, 0.0, -1.0), 0.0, math.inf)
+            for x in np.linspace(-2.13, 2.19, 22) for y in np.linspace(-1.21, 1.17, 9)]
+    want = _agree(path, scene, rays, float32=1e-3)
+    leaves = {b[0].shape for b in want if b and b[0].kind is not None}
+    assert {0, 1, 2} & leaves and {3, 4, 5} & leaves and len(leaves) >= 3, leaves
+    flat = compile_scene(scene)
+    assert flat.count("instance") == 6 and len(flat.instanced["open_cylinder"]) == 1
+    assert len(flat.instanced["disk"]) == 2

@@ -64,8 +64,13 @@ class Instance(Shape):
             raise ValueError("Instance.object must be a Shape, a Mesh or an Instance, got %r" % (shape,))
         self.object = shape
         self._own_material = material
+        from .compound import Compound
+
         if isinstance(shape, Mesh):
             color, inner = shape.color(0), shape.materials[0]
+        elif isinstance(shape, Compound):   # no colour of its own: its first leaf's (each leaf shows its own)
+            first = shape.leaves()[0] if shape.leaves() else None
+            color, inner = (first.color, first.material) if first is not None else (Float3(0.0), None)
         else:
             color, inner = shape.color, shape.material
         super().__init__(color, inner if material is None else material)
@@ -200,20 +205,31 @@ class Instance(Shape):
     t1 = property(lambda self: self.inv_matrix.m[1][3])
     t2 = property(lambda self: self.inv_matrix.m[2][3])
 
-    # --- a Mesh inside ---------------------------------------------------------------------
-    def holds_mesh(self) -> bool:
+    # --- a Mesh or a Compound inside ------------------------------------------------------
+    def holds_parts(self) -> bool:
+        """Whether the object is a Mesh or a Compound (or an instance of one), which the
+        lecture layer traces as an instance of each part (parts)."""
+        from .compound import Compound
         from .mesh import Mesh
 
         inner = self.object
-        return isinstance(inner, Mesh) or (isinstance(inner, Instance) and inner.holds_mesh())
+        return isinstance(inner, (Mesh, Compound)) or (isinstance(inner, Instance) and inner.holds_parts())
 
-    def faces(self) -> list:
-        """The instance of a Mesh (or of an instance of one) as the lecture layer traces it:
-        an Instance of each of its faces with this instance's matrices and material
-        (Scene.with_faces), in the order of the mesh's faces."""
+    def parts(self) -> list:
+        """The instance of a Mesh or a Compound (or of an instance of one) as the lecture layer
+        traces it: an Instance of each face of the mesh, or of each leaf of the compound
+        (Compound.leaves), with this instance's matrices and material (Scene.with_faces), in
+        their order: the nearest part is hit and the earlier one wins a tie, as the
+        compound's intersect_p and the mesh's faces in Scene.shapes have it."""
+        from .compound import Compound
         from .mesh import Mesh
 
-        inner = self.object.triangles() if isinstance(self.object, Mesh) else self.object.faces()
+        if isinstance(self.object, Mesh):
+            inner = self.object.triangles()
+        elif isinstance(self.object, Compound):
+            inner = self.object.leaves()
+        else:
+            inner = self.object.parts()
         out = []
         for face in inner:
             one = Instance(face, self._own_material)
