@@ -605,9 +605,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
                                                                 and not eye_rays_only))
     # The instances go into the scene's tree as the spheres do, with their boxes
-    # (Instance.bounds), where each has one and none holds a Mesh (whose tree the instance's
-    # test would enter from inside the scene's: intersect_mesh.wgsl).
-    boxes = [shape.bounds() for shape in instance_shapes] if not instanced_meshes else [None]
+    # (Instance.bounds), where each has one: an instance of a Mesh is then a row of the
+    # scene's tree whose test enters its mesh's tree (two levels, as Embree's instances).
+    boxes = [shape.bounds() for shape in instance_shapes]
     bvh_instances = len(instance_shapes) > 0 and all(box is not None for box in boxes) and (
         bool(mesh_faces) or bvh_spheres or len(instance_shapes) >= BVH_MIN_SPHERES)
     mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype, instanced_meshes,

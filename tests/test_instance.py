@@ -283,8 +283,10 @@ def _instances(count: int) -> list:
 
 def test_the_bvh_holds_the_instances_on_every_path(path):
     """Twenty instances (BVH_MIN_SPHERES or more) go into the scene's BVH by their boxes
-    (Instance.bounds), as the spheres do, and a triangle's mesh takes them in with it: every
-    path hits what the lecture layer hits, and the shadow rays find the instances there too."""
+    (Instance.bounds), as the spheres do, and a triangle's mesh takes them in with it, and so
+    do instances of a smooth Mesh, whose test enters the mesh's own tree (two levels): every
+    path hits what the lecture layer hits, each instanced face at its place, and the shadow
+    rays find the instances there too."""
     from rtfgu import PointLight
     from rtfgu.layout import BVH_MIN_SPHERES, INSTANCE_ROW, compile_scene
 
@@ -295,7 +297,10 @@ def test_the_bvh_holds_the_instances_on_every_path(path):
             for x in np.linspace(-4.3, 4.1, 24) for y in np.linspace(-1.4, 1.3, 8)]
     rays += [((x, 4.0, z), (0.0, -1.0, 0.0), 0.0, math.inf) for x in np.linspace(-4.3, 4.1, 16) for z in (-7.0, -2.5, 0.5)]
     triangle = Mesh(np.array([(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 1.0, 0.0)]), np.array([(0, 1, 2)]), GREY)
-    for shapes in (_instances(BVH_MIN_SPHERES + 4), _instances(3) + [triangle]):
+    octahedron = _octahedron(normals=np.array([(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, 1), (0, 0, -1)]))
+    meshes = [Instance(octahedron).scale(0.5).rotate_x(10.0 * k).translate(-3.0 + 0.9 * k, 1.0, -1.0 * k)
+              for k in range(8)]
+    for shapes in (_instances(BVH_MIN_SPHERES + 4), _instances(3) + [triangle], _instances(12) + meshes):
         scene.shapes = shapes
         flat = compile_scene(scene)
         assert "bvh_instances" in flat.features
@@ -307,15 +312,14 @@ def test_the_bvh_holds_the_instances_on_every_path(path):
 
 
 def test_instances_stay_in_their_loop_where_the_bvh_cannot_hold_them():
-    """Fewer than BVH_MIN_SPHERES instances without a mesh, an instance of a plane (no box),
-    or an instance of a Mesh (whose tree the BVH's test would enter from inside it): the
-    instances keep their loop."""
+    """Fewer than BVH_MIN_SPHERES instances without a mesh, or an instance of a plane (no
+    box): the instances keep their loop."""
     from rtfgu import Plane
     from rtfgu.layout import compile_scene
 
     scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
     plane = Instance(Plane((0.0, 0.0, 0.0), (0.0, 1.0, 0.0), GREY)).translate(0.0, -2.0, 0.0)
-    for shapes in (_instances(3), _instances(20) + [plane], _instances(20) + [Instance(_octahedron())]):
+    for shapes in (_instances(3), _instances(20) + [plane], _instances(3) + [Instance(_octahedron())]):
         scene.shapes = shapes
         flat = compile_scene(scene)
         assert "bvh_instances" not in flat.features

@@ -142,10 +142,10 @@ def _instance_parts(k: int, kind) -> list:
         "mesh's face hit, its place in the mesh and its row in faces (instanced_mesh_t), else 0 and -1."))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def instance_t(table, objects, i, origin, direction, tmin, tmax, formula):",
-        '    """t of instance ``i`` in [tmin, tmax), else inf (the BVH\'s test of an instance it holds)."""',
+        "def instance_t(table, objects, i, origin, direction, tmin, tmax, formula, best):",
+        '    """(t, place, face) of instance ``i`` (instanced_t): the BVH\'s test of an instance it holds."""',
         "    return instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
-        "tmin, tmax, formula, -1)[0]" % (obj % ("i", "i"))]))
+        "tmin, tmax, formula, best)" % (obj % ("i", "i"))]))
     parts.append(_object_switch("instanced_normal", "face, position, direction",
                                 "normal_row_{kind}({table}, row, position, direction)",
                                 "normal_row_mesh({vertices}, {faces}, {normals}, face, position, direction)",

@@ -35,6 +35,7 @@ from numba.extending import intrinsic, overload
 from ..accelerators.flat_bvh import MAX_DEPTH
 from ..layout import INSTANCE_ROW, SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
 from ..registry import SHAPE_IDS
+from .instance import FACE_SHIFT
 
 INSTANCE = SHAPE_IDS["instance"]
 from .dispatch_support import as_python
@@ -130,21 +131,23 @@ def _typed_sphere_prim(spheres, row, origin, direction, tmin, tmax, formula):
     return test
 
 
-def instance_prim(instances, row, origin, direction, tmin, tmax, formula):
-    """t of instance ``row`` in [tmin, tmax), else inf, for the tree that holds the instances
-    (rows INSTANCE_ROW): ``instances`` is the instance kind's (table, index, objects); inf
-    where the tree holds none (its table None, or an index: the instances' own loop)."""
-    return as_python(_typed_instance_prim, instances, row, origin, direction, tmin, tmax, formula)
+def instance_prim(instances, row, origin, direction, tmin, tmax, formula, best):
+    """(t, place, face) of instance ``row`` for the tree that holds the instances (rows
+    INSTANCE_ROW), as the instance's loop has them (rtfgu.kernels.dispatch, instanced_t;
+    ``best``: the best index so far less the instance's first): ``instances`` is the
+    instance kind's (table, index, objects); (inf, 0, -1) where the tree holds none (its
+    table None, or an index: the instances' own loop)."""
+    return as_python(_typed_instance_prim, instances, row, origin, direction, tmin, tmax, formula, best)
 
 
 @overload(instance_prim, inline="always")
-def _typed_instance_prim(instances, row, origin, direction, tmin, tmax, formula):
+def _typed_instance_prim(instances, row, origin, direction, tmin, tmax, formula, best):
     if isinstance(instances.types[0], types.NoneType) or not isinstance(instances.types[1], types.NoneType):
-        return lambda instances, row, origin, direction, tmin, tmax, formula: lit(math.inf, tmin)
+        return lambda instances, row, origin, direction, tmin, tmax, formula, best: (lit(math.inf, tmin), 0, -1)
     from .dispatch import instance_t    # generated from the registry: the instance's object switch
 
-    def test(instances, row, origin, direction, tmin, tmax, formula):
-        return instance_t(instances[0], instances[2], row, origin, direction, tmin, tmax, formula)
+    def test(instances, row, origin, direction, tmin, tmax, formula, best):
+        return instance_t(instances[0], instances[2], row, origin, direction, tmin, tmax, formula, best)
     return test
 
 
@@ -213,8 +216,11 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
                     t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
                     k, r = SPHERE, faces[f, 1]
                 elif faces[f, 0] == INSTANCE_ROW:
-                    t = instance_prim(instances, faces[f, 1], origin, direction, tmin, limit, formula)
-                    k, r = INSTANCE, faces[f, 1]
+                    # An instance of a Mesh: its face's place and row (FACE_SHIFT).
+                    t, place, face = instance_prim(instances, faces[f, 1], origin, direction, tmin, limit, formula,
+                                                   best - idx)
+                    k, r = INSTANCE, faces[f, 1] + (face << FACE_SHIFT) if face >= 0 else faces[f, 1]
+                    idx += place
                 else:
                     t = intersect_face(vertices, faces, f, frame, tmin, limit)
                     k, r = kind, f
@@ -250,6 +256,11 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
     return tmax, best, best_kind, best_row
 
 
+# mesh_closest again, for the tree of a mesh an instance holds: the scene's tree may hold that
+# instance (rtfgu.layout: bvh_instances), and numba compiles no function that calls itself.
+object_mesh_closest = njit(cache=True, error_model="numpy")(mesh_closest.py_func)
+
+
 @njit(cache=True, error_model="numpy")
 def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0,
              instances=(None, None, None)):
@@ -269,7 +280,7 @@ def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tm
                     if sphere_prim(spheres, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
                         return True
                 elif faces[f, 0] == INSTANCE_ROW:
-                    if instance_prim(instances, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
+                    if instance_prim(instances, faces[f, 1], origin, direction, tmin, tmax, formula, -1)[0] < tmax:
                         return True
                 elif intersect_face(vertices, faces, f, frame, tmin, tmax) < tmax:
                     return True
@@ -311,8 +322,8 @@ def _typed_instanced_mesh_t(vertices, faces, nodes, links, root, origin, directi
             (lit(math.inf, tmin), 0, -1)
 
     def present(vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best):
-        t, place, _, face = mesh_closest(vertices, faces, nodes, links, None, 0, origin, direction, tmin,
-                                         (tmax, best, 0, -1), 0, root)
+        t, place, _, face = object_mesh_closest(vertices, faces, nodes, links, None, 0, origin, direction, tmin,
+                                                (tmax, best, 0, -1), 0, root)
         if face < 0:
             return lit(math.inf, tmin), 0, -1
         return t, place, face

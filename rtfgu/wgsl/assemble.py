@@ -380,6 +380,20 @@ def select_lines(text: str, features, name: str = "", each=None) -> list:
     return out
 
 
+def _object_tree(name: str, text: str, features, each) -> list:
+    """intersect_mesh.wgsl's mesh_closest once more as object_mesh_closest, without the rows of
+    spheres and instances, where the scene's tree holds instances of a Mesh: the scene's
+    mesh_closest tests such an instance, whose test enters its mesh's tree, and WGSL has no
+    recursion (intersect_instance.wgsl). Else nothing."""
+    if name != "intersect_mesh.wgsl" or not {"bvh_instances", "instanced_mesh"} <= set(features):
+        return []
+    selected = select_lines(text, set(features) - {"bvh_spheres", "bvh_instances"}, name, each)
+    start = next(k for k, (_, line) in enumerate(selected) if line.startswith("fn mesh_closest("))
+    end = next(k for k in range(start, len(selected)) if selected[k][1] == "}")
+    return [(0, "")] + [(number, line.replace("fn mesh_closest(", "fn object_mesh_closest("))
+                        for number, line in selected[start:end + 1]]
+
+
 def _bindings(flat, features, scene_buffer: str) -> list:
     """The scene buffers, numbered in a stated order: the camera, then table and index of
     every shape kind the scene has, materials and shaders, then every light kind's table."""
@@ -522,7 +536,7 @@ def assemble(flat, scene_buffer: str = "uniform", overrides: dict | None = None,
         origin.append((GENERATED, 0))
         lines.append("// ---- rtfgu/wgsl/%s" % source)
         origin.append((source, 0))
-        for number, line in select_lines(text, features, source, each):
+        for number, line in select_lines(text, features, source, each) + _object_tree(name, text, features, each):
             lines.append(line)
             origin.append((source, number))
     return Program("\n".join(lines) + "\n", origin, bindings, features, used)

@@ -27,7 +27,12 @@ fn intersect_instanced(r: Ray, hit: ptr<function, HitInfo>, kind: i32, row: u32)
         var place = -1;      // no face earlier in Scene.shapes than the first one hit
         var mesh_kind = -1;
         var face = 0u;
+        // #if bvh_instances
+        // The scene's tree holds this instance: its own copy of the traversal (assemble.py).
+        if (object_mesh_closest(&q, hit, &place, &mesh_kind, &face, row)) {
+        // #else
         if (mesh_closest(&q, hit, &place, &mesh_kind, &face, row)) {
+        // #endif
             instanced_place = place;
             candidate_face = face;
             return true;

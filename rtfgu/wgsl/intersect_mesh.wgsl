@@ -231,6 +231,7 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
                     var candidate = *hit;
                     var hit_row = false;
                     var row_kind = SPHERE;
+                    var index = face.w;
                     // #if bvh_spheres
                     if (face.x == -1) {
                         let rec = spheres[face.y];
@@ -243,13 +244,21 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
                         hit_row = intersect_instance(q, &candidate, rec.row0, rec.t0, rec.row1, rec.t1, rec.row2,
                                                      rec.t2, rec.object_kind, rec.object_row);
                         row_kind = INSTANCE;
+                        // #if instanced_mesh
+                        index += instanced_place;   // an instance of a Mesh: the face's place
+                        // #endif
                     }
                     // #endif
-                    if (hit_row && (candidate.dist < (*r).tmax || face.w < *shape)) {
+                    if (hit_row && (candidate.dist < (*r).tmax || index < *shape)) {
                         shape_hit = candidate;
                         (*r).tmax = candidate.dist;
                         q.tmax = next_up(candidate.dist);
-                        *shape = face.w;
+                        *shape = index;
+                        // #if bvh_instances
+                        // #if instanced_mesh
+                        instanced_face = candidate_face;
+                        // #endif
+                        // #endif
                         *kind = row_kind;
                         *row = u32(face.y);
                         found = true;
