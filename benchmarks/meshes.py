@@ -102,7 +102,6 @@ from rtfgu.accelerators import flat_bvh  # noqa: E402
 from rtfgu.kernels.camera import gen_ray  # noqa: E402
 from rtfgu.kernels.float3 import lit  # noqa: E402
 from rtfgu.kernels.mesh import mesh_closest  # noqa: E402
-from rtfgu.layout import MESH  # noqa: E402
 
 from bench import cpu_model, replace_section  # noqa: E402
 
@@ -277,8 +276,8 @@ def closest_hits(vertices, faces4, nodes, links, origins, directions, t_out, fac
         origin = (origins[i, 0], origins[i, 1], origins[i, 2])
         direction = (directions[i, 0], directions[i, 1], directions[i, 2])
         tmin = lit(0, origins[i, 0])
-        # no spheres in the BVH (None), the faces' kind MESH, formula 0 (used by spheres only)
-        hit = mesh_closest(vertices, faces4, nodes, links, None, MESH, origin, direction, tmin,
+        # no spheres in the BVH (None), formula 0 (used by spheres only)
+        hit = mesh_closest(vertices, faces4, nodes, links, None, origin, direction, tmin,
                            (lit(math.inf, tmin), -1, -1, -1), 0)
         t_out[i] = hit[0]
         face_out[i] = hit[1]
@@ -507,7 +506,7 @@ fn main(@builtin(global_invocation_id) gid: vec3u)
     var shape = -1;
     var kind = -1;
     var row = 0u;
-    let found = mesh_closest(&r, &hit, &shape, &kind, &row);
+    let found = mesh_closest(&r, &hit, &shape, &kind, &row, 0u);
     result[i] = vec4f(select(-1.0, hit.dist, found), bitcast<f32>(select(-1, shape, found)), 0.0, 0.0);
 }
 """

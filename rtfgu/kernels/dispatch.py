@@ -72,8 +72,8 @@ def _mesh_parts(k: int, kind, at: int) -> list:
     return [
         _overloaded("scan_" + name, "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, hit, "
                     "formula", "hit",
-                    "    return mesh_closest(vertices, faces, nodes, links, spheres, %d, origin, direction, tmin, hit, "
-                    "formula, 0, instances)" % k,
+                    "    return mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, "
+                    "formula, 0, instances)",
                     "The nearest hit among what the BVH holds, given the nearest so far"),
         _overloaded("any_hit_" + name, "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, "
                     "tmax, formula", "False",

@@ -33,7 +33,7 @@ from numba.core import cgutils
 from numba.extending import intrinsic, overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
-from ..layout import INSTANCE_ROW, SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
+from ..layout import INSTANCE_ROW, MESH, SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
 from ..registry import SHAPE_IDS
 from .instance import FACE_SHIFT
 
@@ -187,11 +187,11 @@ def _inverse(direction):
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
 # they are shared by every render kernel (each scene's kinds compile a kernel of their own).
 @njit(cache=True, error_model="numpy")
-def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction, tmin, hit, formula, root=0,
+def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root=0,
                  instances=(None, None, None)):
     """The nearest face, sphere or instance hit, given the nearest hit so far ``hit`` = (t,
     scene index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier
-    one is tested up to the next float above the best t). A face is (kind, its row in
+    one is tested up to the next float above the best t). A face is (MESH, its row in
     faces), a sphere (SPHERE, its row in the sphere table), an instance (INSTANCE, its row:
     instance_prim). ``root``: the tree's first node (the scene's, 0; an instanced mesh's,
     whose rows' indices are places in the mesh)."""
@@ -223,7 +223,7 @@ def mesh_closest(vertices, faces, nodes, links, spheres, kind, origin, direction
                     idx += place
                 else:
                     t = intersect_face(vertices, faces, f, frame, tmin, limit)
-                    k, r = kind, f
+                    k, r = MESH, f
                 if t < tmax or (t == tmax and idx < best):
                     tmax = t
                     best = idx
@@ -322,7 +322,7 @@ def _typed_instanced_mesh_t(vertices, faces, nodes, links, root, origin, directi
             (lit(math.inf, tmin), 0, -1)
 
     def present(vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best):
-        t, place, _, face = object_mesh_closest(vertices, faces, nodes, links, None, 0, origin, direction, tmin,
+        t, place, _, face = object_mesh_closest(vertices, faces, nodes, links, None, origin, direction, tmin,
                                                 (tmax, best, 0, -1), 0, root)
         if face < 0:
             return lit(math.inf, tmin), 0, -1
