@@ -535,7 +535,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             rows[kind.name][0].append(instance_row(where, kind, shape))
             instance_shapes.append(shape)
             if isinstance(shape.object, Mesh):
-                # As the lecture layer traces it (Instance.faces): an instance of each face,
+                # As the lecture layer traces it (Instance.parts): an instance of each face,
                 # in the mesh's order, each with the instance's material or the face's own.
                 mesh = shape.object
                 places = np.empty(mesh.num_triangles, dtype=np.int64)

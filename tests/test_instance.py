@@ -225,7 +225,7 @@ def test_instances_of_a_mesh_share_its_tree_on_every_path(path):
     """One smooth, textured mesh drawn as itself and through two instances (one with a
     material of its own), lit by a point light whose shadow rays cross the instances: every
     path hits the face the lecture layer hits (each instance's faces are shapes of their own,
-    Instance.faces), with its normal through the inverse transpose, its (u, v) and the face's
+    Instance.parts), with its normal through the inverse transpose, its (u, v) and the face's
     or the instance's material; the mesh's vertices and its tree are laid out once."""
     from rtfgu import Checker, PointLight
     from rtfgu.layout import compile_scene

@@ -8,7 +8,7 @@
 //
 // An instanced mesh (one mesh, many instances: rtfgu.layout.compile_mesh) is the tree whose
 // first node is object_row, its faces' w their place in the mesh. As the lecture layer traces
-// an Instance of a Mesh (an Instance of each face, Instance.faces), the instance's hit is its
+// an Instance of a Mesh (an Instance of each face, Instance.parts), the instance's hit is its
 // first index plus the face's place (instanced_place, which intersect_scene adds), and the
 // face it hit (candidate_face) is kept as instanced_face where intersect_scene keeps the hit,
 // for the face's (u, v) (texcoord.wgsl).
