@@ -258,7 +258,7 @@ def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin
 
 # mesh_closest again, for the tree of a mesh an instance holds: the scene's tree may hold that
 # instance (rtfgu.layout: bvh_instances), and numba compiles no function that calls itself.
-object_mesh_closest = njit(cache=True, error_model="numpy")(mesh_closest.py_func)
+object_mesh_closest = njit(cache=True, error_model="numpy")(getattr(mesh_closest, "py_func", mesh_closest))
 
 
 @njit(cache=True, error_model="numpy")
