@@ -734,8 +734,11 @@ def test_the_gradebook_error_column_names_why_tests_could_not_judge_the_code(tmp
     # The loop's line (from the traceback dumped before the limit); the later tests that call
     # the stopped function fail at once, naming the test that found it.
     loop = solved["brdfs/lambertian.py"].splitlines().index(rho.rstrip("\n")) + 1
-    assert re.match(r"time limit \(1 s\) at brdfs/lambertian.py:(%d|%d) \(1 test\); time limit in test 4\.\d+ \(\d+ "
-                    r"tests?\)" % (loop, loop + 1), errors["erin"]), errors["erin"]
+    # Under load a test may run out of its second before it reaches the loop: it is counted
+    # without a line, before the one that names the loop.
+    assert re.match(r"(time limit \(1 s\) \(\d+ tests?\); )?time limit \(1 s\) at brdfs/lambertian.py:(%d|%d) "
+                    r"\(1 test\); time limit in test 4\.\d+ \(\d+ tests?\)" % (loop, loop + 1),
+                    errors["erin"]), errors["erin"]
     assert "exception: RuntimeError: boom" in errors["fred"], errors["fred"]
 
 
