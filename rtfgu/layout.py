@@ -607,9 +607,10 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     # The instances go into the scene's tree as the spheres do, with their boxes
     # (Instance.bounds), where each has one: an instance of a Mesh is then a row of the
     # scene's tree whose test enters its mesh's tree (two levels, as Embree's instances).
-    boxes = [shape.bounds() for shape in instance_shapes]
-    bvh_instances = len(instance_shapes) > 0 and all(box is not None for box in boxes) and (
-        bool(mesh_faces) or bvh_spheres or len(instance_shapes) >= BVH_MIN_SPHERES)
+    wanted = len(instance_shapes) > 0 and (bool(mesh_faces) or bvh_spheres
+                                           or len(instance_shapes) >= BVH_MIN_SPHERES)
+    boxes = [shape.bounds() for shape in instance_shapes] if wanted else []
+    bvh_instances = wanted and all(box is not None for box in boxes)
     mesh = compile_mesh(scene, mesh_faces, spheres if bvh_spheres else None, dtype, instanced_meshes,
                         (shapes["instance"][1], boxes) if bvh_instances else None) \
         if mesh_faces or bvh_spheres or instanced_meshes or bvh_instances else None
