@@ -306,46 +306,57 @@ class Rtfgu(System):
             self.mesh, self.tree_seconds = mesh, []
         start = time.perf_counter()
         bvh, faces4 = bvh_of(mesh)
+        wide = bvh.wide()
         seconds = time.perf_counter() - start
-        self.tree_seconds.append(bvh.build_seconds)
-        self.bvh, self.faces4 = bvh, faces4
+        self.tree_seconds.append((bvh.build_seconds, wide.build_seconds))
+        self.bvh, self.wide, self.faces4 = bvh, wide, faces4
         self.vertices = {"float64": np.ascontiguousarray(mesh.vertices, dtype=np.float64),
                          "float32": np.ascontiguousarray(mesh.vertices, dtype=np.float32)}
         return seconds
 
     def paths(self):
-        def path(precision):
+        def path(precision, nodes, note=""):
             def run(rays):
                 origins, directions = rays.of(precision)
                 t = np.empty(len(origins), dtype=origins.dtype)
                 face = np.empty(len(origins), dtype=np.int64)
-                closest_hits(self.vertices[precision], self.faces4, self.bvh.nodes,
-                             self.bvh.links, origins, directions, t, face)
+                closest_hits(self.vertices[precision], self.faces4, nodes, nodes.view(np.int32), origins, directions,
+                             t, face)
                 return t, face
-            return Path_(self.name, precision, self.threads, run)
-        return [path("float64"), path("float32")]
+            return Path_(self.name, precision, self.threads, run, note=note)
+        binary = "the binary tree (the render's where the CPU has no AVX)"
+        return [path("float64", self.wide.nodes), path("float32", self.wide.nodes),
+                path("float64", self.bvh.nodes, binary), path("float32", self.bvh.nodes, binary)]
 
     def bytes_per_triangle(self):
         n = len(self.faces4)
-        return {p: (self.bvh.nbytes + self.faces4.nbytes + v.nbytes) / n
+        return {p: (self.wide.nbytes + self.faces4.nbytes + v.nbytes) / n
                 for p, v in self.vertices.items()}
 
     def build_note(self):
-        return "flat_bvh.build alone: %.3g s (median); %d nodes, depth %d" % (
-            statistics.median(self.tree_seconds[1:] or self.tree_seconds),
-            self.bvh.num_nodes, self.bvh.depth())
+        binary, wide = zip(*(self.tree_seconds[1:] or self.tree_seconds))
+        return ("flat_bvh.build alone: %.3g s, the collapse to the wide tree %.3g s (medians); %d binary nodes, "
+                "depth %d; %d wide nodes (%d bytes each); the binary table (%.1f bytes per triangle, the WGSL "
+                "path's) is not counted" % (
+                    statistics.median(binary), statistics.median(wide), self.bvh.num_nodes, self.bvh.depth(),
+                    len(self.wide.nodes), self.wide.nodes[0].nbytes, self.bvh.nbytes / len(self.faces4)))
 
 
 class Embree(System):
     name = "Embree"
 
-    def __init__(self, threads):
+    def __init__(self, threads, robust=True):
         from embreex import mesh_construction, rtcore_scene
         self.rtcore_scene, self.mesh_construction = rtcore_scene, mesh_construction
         self.threads = threads
+        self.robust = robust
         self.pool = ThreadPoolExecutor(threads)
-        self.about = ("embreex %s (Embree 4, robust scene flag; its run traces one ray at a "
-                      "time with rtcIntersect1)" % version("embreex"))
+        if robust:
+            self.about = ("embreex %s (Embree 4; \"Embree\": robust=True, its default, Embree's robust mode; "
+                          "\"Embree fast\": robust=False; its run traces one ray at a time with rtcIntersect1)"
+                          % version("embreex"))
+        else:
+            self.name, self.about = "Embree fast", ""
 
     def build(self, mesh):
         self.scene = None  # the previous scene is released before the next one is built
@@ -353,7 +364,7 @@ class Embree(System):
         faces = np.ascontiguousarray(mesh.faces, dtype=np.int32)
         one = np.zeros((1, 3), dtype=np.float32)
         start = time.perf_counter()
-        scene = self.rtcore_scene.EmbreeScene(robust=True)
+        scene = self.rtcore_scene.EmbreeScene(robust=self.robust)
         self.mesh_construction.TriangleMesh(scene, vertices, faces)
         scene.run(one, one + np.float32(1), output=1)  # embreex commits at the first run
         seconds = time.perf_counter() - start
@@ -896,27 +907,31 @@ def fmt_rel(x) -> str:
 
 
 def trace_table(measured) -> list:
-    lines = ["| mesh | rays | path | precision | threads | rays/s | / Embree | hit/miss differ "
+    lines = ["| mesh | rays | path | precision | threads | rays/s | / Embree | / Embree fast | hit/miss differ "
              "| other face | ... at another t | max rel dt, same face | max rel dt, both hit "
              "| note |",
-             "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+             "|---|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     groups = list(dict.fromkeys((m.mesh, m.rays) for m in measured))
     measured = sorted(measured, key=lambda m: groups.index((m.mesh, m.rays)))
     embree = {(m.mesh, m.rays): m.rate for m in measured
               if m.path.system == Embree.name and m.path.threads > 1 and not m.failed}
     embree1 = {(m.mesh, m.rays): m.rate for m in measured
                if m.path.system == Embree.name and not m.failed}
+    fast = {(m.mesh, m.rays): m.rate for m in measured
+            if m.path.system == "Embree fast" and m.path.threads > 1 and not m.failed}
     for m in measured:
         p = m.path
         if m.failed:
-            lines.append("| %s | %s | %s | %s | %s | - | - | - | - | - | - | - | not run: %s |"
+            lines.append("| %s | %s | %s | %s | %s | - | - | - | - | - | - | - | - | not run: %s |"
                          % (m.mesh, m.rays, p.system, p.precision, p.threads or "-", m.failed))
             continue
         base = embree.get((m.mesh, m.rays)) or embree1.get((m.mesh, m.rays))
+        base_fast = fast.get((m.mesh, m.rays))
         e = m.error or {}
-        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |" % (
             m.mesh, m.rays, p.system, p.precision, p.threads or "-", fmt_rate(m.rate),
-            "%.2f" % (m.rate / base) if base else "-", fmt_share(e.get("hit_miss")),
+            "%.2f" % (m.rate / base) if base else "-", "%.2f" % (m.rate / base_fast) if base_fast else "-",
+            fmt_share(e.get("hit_miss")),
             fmt_share(e.get("other_face")), fmt_share(e.get("other_far")),
             fmt_rel(e.get("rel_same")), fmt_rel(e.get("rel_both")),
             "; ".join(x for x in (p.note, "the reference: %s of the rays hit" % fmt_share(
@@ -1007,6 +1022,8 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
                                (Mitsuba, "mitsuba", bench_extra)):
         try:
             systems.append(cls(threads))
+            if cls is Embree:
+                systems.append(cls(threads, robust=False))
         except Exception as error:  # the section says which peer did not run, and why
             missing[cls.name] = "%s: %s%s" % (
                 package, str(error).splitlines()[0] if str(error) else repr(error), hint)

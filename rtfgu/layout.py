@@ -224,6 +224,11 @@ class FlatMesh:
     instances: bool = False
 
     @property
+    def tree_roots(self) -> tuple:
+        """The first node of every tree in the table: the scene's (0) where it has one, then ``roots``."""
+        return ((0,) if self.scene_tree else ()) + tuple(self.roots)
+
+    @property
     def nbytes(self) -> int:
         """The bytes of the BVH and the triangle data (vertices, faces, normals, uvs)."""
         return self.vertices.nbytes + self.faces.nbytes + self.bvh.nbytes + sum(

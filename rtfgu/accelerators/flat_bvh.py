@@ -24,7 +24,7 @@ precisions, and a float32 vertex (the nearest float32 to a float64 one) is insid
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -50,10 +50,20 @@ class FlatBVH:
     nodes: np.ndarray          # (N, 8) float32 (module docstring)
     order: np.ndarray          # (P,) int32
     build_seconds: float
+    _wide: tuple = field(default=None, repr=False, compare=False)
 
     @property
     def links(self) -> np.ndarray:
         return self.nodes.view(np.int32)
+
+    def wide(self, roots=(0,)):
+        """The wide tree of the numba path (rtfgu.accelerators.wide_bvh) over this table's trees
+        from ``roots``: collapsed at the first call and kept with the table."""
+        from .wide_bvh import collapse
+        roots = tuple(int(r) for r in roots)
+        if self._wide is None or self._wide[0] != roots:
+            self._wide = (roots, collapse(self, roots))
+        return self._wide[1]
 
     @property
     def num_nodes(self) -> int:

@@ -42,6 +42,7 @@ from .dispatch_support import as_python
 from .intersect import intersect_sphere, intersect_sphere_robust
 from .robust import _pick, ray_shear
 from .float3 import add, cross, dot, lit, lit_per_precision, normalize, scale, sub
+from . import wide_bvh
 
 # 1 + 2 gamma_3 (PBRT-v4 section 6.1.2): the far end of a slab interval is widened by it, so
 # that rounding never drops a box whose face the triangle test would hit (BBox.hit).
@@ -184,56 +185,73 @@ def _inverse(direction):
     return inv, (near_at, (4 - near_at[0], 4 - near_at[1], 4 - near_at[2]))
 
 
-# mesh_closest and mesh_any are called, not inlined: compiled once per precision and cached,
-# they are shared by every render kernel (each scene's kinds compile a kernel of their own).
-@njit(cache=True, error_model="numpy")
-def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root=0,
-                 instances=(None, None, None)):
-    """The nearest face, sphere or instance hit, given the nearest hit so far ``hit`` = (t,
-    scene index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier
-    one is tested up to the next float above the best t). A face is (MESH, its row in
-    faces), a sphere (SPHERE, its row in the sphere table), an instance (INSTANCE, its row:
-    instance_prim). ``root``: the tree's first node (the scene's, 0; an instanced mesh's,
-    whose rows' indices are places in the mesh)."""
-    tmax, best, best_kind, best_row = hit
+@njit(cache=True, error_model="numpy", inline="always")
+def _leaf_closest(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, state, formula):
+    """The nearest of the leaf's rows faces[first:first + count] and the best so far,
+    ``state`` = (t, scene index, kind, row), by the tie rule (mesh_closest)."""
+    tmax, best, best_kind, best_row = state
     inf = lit(math.inf, tmin)
+    for f in range(first, first + count):
+        idx = faces[f, 3]
+        limit = tmax if idx > best else np.nextafter(tmax, inf)
+        if faces[f, 0] == SPHERE_ROW:
+            t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
+            k, r = SPHERE, faces[f, 1]
+        elif faces[f, 0] == INSTANCE_ROW:
+            # An instance of a Mesh: its face's place and row (FACE_SHIFT).
+            t, place, face = instance_prim(instances, faces[f, 1], origin, direction, tmin, limit, formula,
+                                           best - idx)
+            k, r = INSTANCE, faces[f, 1] + (face << FACE_SHIFT) if face >= 0 else faces[f, 1]
+            idx += place
+        else:
+            t = intersect_face(vertices, faces, f, frame, tmin, limit)
+            k, r = MESH, f
+        if t < tmax or (t == tmax and idx < best):
+            tmax = t
+            best = idx
+            best_kind = k
+            best_row = r
+    return tmax, best, best_kind, best_row
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, tmax, formula):
+    """Whether a row of faces[first:first + count] is hit in [tmin, tmax) (mesh_any)."""
+    for f in range(first, first + count):
+        if faces[f, 0] == SPHERE_ROW:
+            if sphere_prim(spheres, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
+                return True
+        elif faces[f, 0] == INSTANCE_ROW:
+            if instance_prim(instances, faces[f, 1], origin, direction, tmin, tmax, formula, -1)[0] < tmax:
+                return True
+        elif intersect_face(vertices, faces, f, frame, tmin, tmax) < tmax:
+            return True
+    return False
+
+
+def _binary_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances):
+    """mesh_closest on the binary table (N, 8): the nearer child first, the farther on the stack."""
+    state = hit
+    inf = lit(math.inf, tmin)
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
     frame = ray_frame(origin, direction)
     inv = _inverse(direction)
     node_stack = _stack_pointer(np.int32)
     entry_stack = _stack_pointer(tmin)
     sp = 0
     node = root
-    if box_entry(nodes, root, origin, inv, tmin, tmax) == inf:
+    if box_entry(nodes, root, origin, inv, tmin, state[0] * widen) == inf:
         return hit
     while True:
         count = links[node, 7]
         if count > 0:
-            first = links[node, 3]
-            for f in range(first, first + count):
-                idx = faces[f, 3]
-                limit = tmax if idx > best else np.nextafter(tmax, inf)
-                if faces[f, 0] == SPHERE_ROW:
-                    t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
-                    k, r = SPHERE, faces[f, 1]
-                elif faces[f, 0] == INSTANCE_ROW:
-                    # An instance of a Mesh: its face's place and row (FACE_SHIFT).
-                    t, place, face = instance_prim(instances, faces[f, 1], origin, direction, tmin, limit, formula,
-                                                   best - idx)
-                    k, r = INSTANCE, faces[f, 1] + (face << FACE_SHIFT) if face >= 0 else faces[f, 1]
-                    idx += place
-                else:
-                    t = intersect_face(vertices, faces, f, frame, tmin, limit)
-                    k, r = MESH, f
-                if t < tmax or (t == tmax and idx < best):
-                    tmax = t
-                    best = idx
-                    best_kind = k
-                    best_row = r
+            state = _leaf_closest(vertices, faces, spheres, instances, links[node, 3], count, frame, origin,
+                                  direction, tmin, state, formula)
             node = -1
         else:
             left = links[node, 3]
-            t_left = box_entry(nodes, left, origin, inv, tmin, tmax)
-            t_right = box_entry(nodes, left + 1, origin, inv, tmin, tmax)
+            t_left = box_entry(nodes, left, origin, inv, tmin, state[0] * widen)
+            t_right = box_entry(nodes, left + 1, origin, inv, tmin, state[0] * widen)
             if t_left <= t_right:
                 near, far, t_far = left, left + 1, t_right
                 node = near if t_left != inf else -1
@@ -249,11 +267,75 @@ def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin
                     sp += 1
         while node < 0 and sp > 0:
             sp -= 1
-            if entry_stack[sp] <= tmax:
+            if entry_stack[sp] <= state[0] * widen:
                 node = node_stack[sp]
         if node < 0:
             break
-    return tmax, best, best_kind, best_row
+    return state
+
+
+def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances):
+    """mesh_closest on the wide table (N, 8, WIDTH): rtfgu.kernels.wide_bvh's box8 and stack."""
+    state = hit
+    frame = ray_frame(origin, direction)
+    inv = _inverse(direction)[0]
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    stack = wide_bvh.stack_of(np.int32)
+    entry_stack = wide_bvh.stack_of(tmin)
+    entry = wide_bvh.lanes_of(tmin)
+    sp = 0
+    code = root
+    while True:
+        if code >= 0:
+            mask = wide_bvh.box8(nodes, code, origin, inv, tmin, state[0] * widen, widen, entry)
+            sp = wide_bvh.push_children(links, code, mask, entry, stack, entry_stack, sp)
+        else:
+            first, count = wide_bvh.leaf_span(code)
+            state = _leaf_closest(vertices, faces, spheres, instances, first, count, frame, origin, direction,
+                                  tmin, state, formula)
+        found = False
+        while sp > 0:
+            sp -= 1
+            if entry_stack[sp] <= state[0] * widen:
+                code = stack[sp]
+                found = True
+                break
+        if not found:
+            break
+    return state
+
+
+def _traverse_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances):
+    return (_wide_closest if nodes.ndim == 3 else _binary_closest)(
+        vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances)
+
+
+@overload(_traverse_closest, inline="always")
+def _typed_traverse_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root,
+                            instances):
+    return _wide_closest if nodes.ndim == 3 else _binary_closest
+
+
+# mesh_closest and mesh_any are called, not inlined: compiled once per precision and tree kind
+# and cached, they are shared by every render kernel (each scene's kinds compile a kernel of
+# their own). ``nodes`` is the binary table (flat_bvh, (N, 8)) or the wide one (wide_bvh,
+# (N, 8, WIDTH)): its number of dimensions picks the traversal when numba compiles it.
+@njit(cache=True, error_model="numpy")
+def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root=0,
+                 instances=(None, None, None)):
+    """The nearest face, sphere or instance hit, given the nearest hit so far ``hit`` = (t,
+    scene index, kind, row): of equal ts the one earlier in Scene.shapes wins (an earlier
+    one is tested up to the next float above the best t). A face is (MESH, its row in
+    faces), a sphere (SPHERE, its row in the sphere table), an instance (INSTANCE, its row:
+    instance_prim). ``root``: the tree's first node (the scene's, 0; an instanced mesh's,
+    whose rows' indices are places in the mesh).
+
+    A box is dropped where the ray enters it beyond the best t times 1 + 2 gamma_3, not
+    beyond the best t: the entry's rounding (up to gamma_3) must not drop a box whose face
+    ties the best t and is earlier in Scene.shapes, so that the tie rule holds on every tree
+    (tests/test_wide_bvh.py: the nearest face of a loop over all faces)."""
+    return _traverse_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root,
+                             instances)
 
 
 # mesh_closest again, for the tree of a mesh an instance holds: the scene's tree may hold that
@@ -261,10 +343,8 @@ def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin
 object_mesh_closest = njit(cache=True, error_model="numpy")(getattr(mesh_closest, "py_func", mesh_closest))
 
 
-@njit(cache=True, error_model="numpy")
-def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0,
-             instances=(None, None, None)):
-    """A shadow ray: is any face or sphere hit in [tmin, tmax)? ``root`` as in mesh_closest."""
+def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances):
+    """mesh_any on the binary table: both children entered, one kept on the stack."""
     inf = lit(math.inf, tmin)
     frame = ray_frame(origin, direction)
     inv = _inverse(direction)
@@ -274,16 +354,9 @@ def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tm
     while node >= 0:
         count = links[node, 7]
         if count > 0:
-            first = links[node, 3]
-            for f in range(first, first + count):
-                if faces[f, 0] == SPHERE_ROW:
-                    if sphere_prim(spheres, faces[f, 1], origin, direction, tmin, tmax, formula) < tmax:
-                        return True
-                elif faces[f, 0] == INSTANCE_ROW:
-                    if instance_prim(instances, faces[f, 1], origin, direction, tmin, tmax, formula, -1)[0] < tmax:
-                        return True
-                elif intersect_face(vertices, faces, f, frame, tmin, tmax) < tmax:
-                    return True
+            if _leaf_any(vertices, faces, spheres, instances, links[node, 3], count, frame, origin, direction, tmin,
+                         tmax, formula):
+                return True
             node = -1
         else:
             left = links[node, 3]
@@ -303,6 +376,50 @@ def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tm
             sp -= 1
             node = node_stack[sp]
     return False
+
+
+def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances):
+    """mesh_any on the wide table: every child the ray enters on the stack, in any order."""
+    frame = ray_frame(origin, direction)
+    inv = _inverse(direction)[0]
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    stack = wide_bvh.stack_of(np.int32)
+    entry_stack = wide_bvh.stack_of(tmin)
+    entry = wide_bvh.lanes_of(tmin)
+    sp = 0
+    code = root
+    while True:
+        if code >= 0:
+            mask = wide_bvh.box8(nodes, code, origin, inv, tmin, tmax, widen, entry)
+            sp = wide_bvh.push_children(links, code, mask, entry, stack, entry_stack, sp)
+        else:
+            first, count = wide_bvh.leaf_span(code)
+            if _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, tmax,
+                         formula):
+                return True
+        if sp == 0:
+            return False
+        sp -= 1
+        code = stack[sp]
+
+
+def _traverse_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances):
+    return (_wide_any if nodes.ndim == 3 else _binary_any)(
+        vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances)
+
+
+@overload(_traverse_any, inline="always")
+def _typed_traverse_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root,
+                        instances):
+    return _wide_any if nodes.ndim == 3 else _binary_any
+
+
+@njit(cache=True, error_model="numpy")
+def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0,
+             instances=(None, None, None)):
+    """A shadow ray: is any face or sphere hit in [tmin, tmax)? ``root`` as in mesh_closest."""
+    return _traverse_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root,
+                         instances)
 
 
 def instanced_mesh_t(vertices, faces, nodes, links, root, origin, direction, tmin, tmax, best):

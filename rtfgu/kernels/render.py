@@ -37,9 +37,9 @@ import numpy as np
 from numba import njit, prange, types
 from numba.extending import overload
 
-from ..layout import THIN_LENS
+from ..layout import MESH_KIND, THIN_LENS, offset
 from ..materials.material import BASE_COLOR
-from ..registry import INSTANCED, SHAPES, TEXTURES
+from ..registry import INSTANCED, SHAPE_IDS, SHAPES, TEXTURES
 from ..sampling.random import LENS_SET, PIXEL_SET, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
@@ -49,6 +49,7 @@ from .dispatch_support import as_python
 from .float3 import add, lit, load3, mul, scale
 from .environment import ENVIRONMENT, background_radiance
 from .path_trace import trace_path
+from .wide_bvh import WIDE
 from .sampling import concentric_map, pixel_sample
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
@@ -80,7 +81,7 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
             # the meshes instances hold (None where none holds one).
             # The index is None where the BVH holds the instances (no loop of their own).
             in_bvh = flat.mesh is not None and flat.mesh.instances
-            shapes += (flat.table(kind.name), None if in_bvh else flat.index(kind.name)) + tuple(
+            shapes += (instance_table(flat, kind.name), None if in_bvh else flat.index(kind.name)) + tuple(
                 flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
                 + (mesh_arrays(flat) if "instanced_mesh" in flat.features else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
@@ -95,10 +96,28 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
     return shapes
 
 
-def mesh_arrays(flat) -> tuple:
-    """The FlatMesh's arrays in MESH_SLOTS order."""
+def mesh_arrays(flat, wide=None) -> tuple:
+    """The FlatMesh's arrays in MESH_SLOTS order, with the tree the numba path traverses: the
+    wide one (rtfgu.accelerators.wide_bvh) where ``wide`` (by default: the CPU has vector
+    units, rtfgu.kernels.wide_bvh.WIDE), else the binary one."""
     mesh = flat.mesh
-    return mesh.vertices, mesh.faces, mesh.normals, mesh.bvh.nodes, mesh.bvh.links, mesh.uvs
+    nodes = mesh.bvh.wide(mesh.tree_roots).nodes if (WIDE if wide is None else wide) else mesh.bvh.nodes
+    return mesh.vertices, mesh.faces, mesh.normals, nodes, nodes.view(np.int32), mesh.uvs
+
+
+def instance_table(flat, kind: str, wide=None) -> np.ndarray:
+    """The instance table as the numba path reads it: an instance of a Mesh names its mesh's
+    root in the tree that mesh_arrays gives (the layout names the binary table's)."""
+    table = flat.table(kind)
+    if "instanced_mesh" not in flat.features or not (WIDE if wide is None else wide):
+        return table
+    mesh = flat.mesh
+    wide_roots = dict(zip(mesh.tree_roots, mesh.bvh.wide(mesh.tree_roots).roots))
+    column, kind_column = offset("Instance", "object_row"), offset("Instance", "object_kind")
+    table = table.copy()
+    of_mesh = table[:, kind_column] == SHAPE_IDS[MESH_KIND.name]
+    table[of_mesh, column] = [wide_roots[int(r)] for r in table[of_mesh, column]]
+    return table
 
 
 def scene_tuple(flat) -> tuple:

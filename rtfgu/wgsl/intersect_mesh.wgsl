@@ -25,6 +25,9 @@ struct BVHNode {
 
 // The deepest path from the root to a leaf that the build allows (flat_bvh.MAX_DEPTH).
 const BVH_STACK = 64u;
+// 1 + 2 gamma_3 in f32: mesh_closest drops a box entered beyond the best t times this, so that
+// the entry's rounding never drops a box whose face ties the best t (rtfgu/kernels/mesh.py).
+const CULL_WIDEN = 1.0000003576;
 
 struct Shear {
     kx: u32,
@@ -217,7 +220,7 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
     var sp = 0u;
     var found = false;
     var node = root;
-    var live = box_entry(root, o, d, inv, (*r).tmin, (*r).tmax) >= 0.0;
+    var live = box_entry(root, o, d, inv, (*r).tmin, (*r).tmax * CULL_WIDEN) >= 0.0;
     while (live) {
         let links = bvh_nodes[node];
         if (links.b > 0) {
@@ -281,8 +284,8 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
             live = false;
         } else {
             let left = u32(links.a);
-            let t_left = box_entry(left, o, d, inv, (*r).tmin, (*r).tmax);
-            let t_right = box_entry(left + 1u, o, d, inv, (*r).tmin, (*r).tmax);
+            let t_left = box_entry(left, o, d, inv, (*r).tmin, (*r).tmax * CULL_WIDEN);
+            let t_right = box_entry(left + 1u, o, d, inv, (*r).tmin, (*r).tmax * CULL_WIDEN);
             if (t_left >= 0.0 && t_right >= 0.0) {
                 var near = left;
                 var far = left + 1u;
@@ -306,7 +309,7 @@ fn mesh_closest(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<f
         }
         while (!live && sp > 0u) {
             sp--;
-            if (entry_stack[sp] <= (*r).tmax) {
+            if (entry_stack[sp] <= (*r).tmax * CULL_WIDEN) {
                 node = node_stack[sp];
                 live = true;
             }

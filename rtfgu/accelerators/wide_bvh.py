@@ -1,0 +1,132 @@
+"""The wide BVH of the numba path: flat_bvh's binary tree collapsed into nodes of WIDTH (8)
+children whose boxes are stored per coordinate, so that one vector instruction tests a
+coordinate's plane of all eight (Embree's BVH8, Wald et al. 2014, "Embree: A Kernel
+Framework for Efficient CPU Ray Tracing", section 4.1; the collapse of Wald, Benthin and
+Boulos 2008, "Getting Rid of Packets").
+
+A node is an (8, WIDTH) float32 block, 256 bytes, one row per field and one column per child:
+
+    rows 0-2  lo.x, lo.y, lo.z  of each child's box
+    rows 3-5  hi.x, hi.y, hi.z
+    row 6     int32 bits: an inner child's node, or a leaf child's first primitive
+    row 7     int32 bits: a leaf child's primitive count (>= 1), 0 for an inner child
+
+A column no child fills has the empty box (lo = +inf, hi = -inf), which no ray enters. The
+boxes are the binary tree's own (rounded outward to float32), so a ray enters a wide child
+wherever it enters that binary node; the wide tree tests fewer boxes on the way down, never
+other ones, and finds the same face and t with the one tie rule (docs/bvh.md).
+
+The collapse: a node starts with the two children of a binary node and opens the inner child
+of the largest surface area into its two children until it has WIDTH children or only
+leaves. The leaves (and the primitives in leaf order) are the binary tree's.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from .flat_bvh import FlatBVH, njit
+
+WIDTH = 8
+# A leaf on the traversal's stack is ~(first << LEAF_BITS | count - 1): LEAF_SIZE <= 2^LEAF_BITS.
+LEAF_BITS = 3
+MAX_FIRST = 2 ** (31 - LEAF_BITS)
+
+
+@dataclass
+class WideBVH:
+    nodes: np.ndarray          # (N, 8, WIDTH) float32 (module docstring)
+    roots: tuple               # the wide node of each root of the binary table, in order
+    build_seconds: float
+
+    @property
+    def links(self) -> np.ndarray:
+        return self.nodes.view(np.int32)
+
+    @property
+    def nbytes(self) -> int:
+        return self.nodes.nbytes
+
+
+@njit(cache=True)
+def _area(nodes, n):
+    dx = np.float64(nodes[n, 4]) - nodes[n, 0]
+    dy = np.float64(nodes[n, 5]) - nodes[n, 1]
+    dz = np.float64(nodes[n, 6]) - nodes[n, 2]
+    return dx * dy + dy * dz + dz * dx
+
+
+@njit(cache=True)
+def _collapse(nodes, links, roots, out, out_links, wide_roots, width):
+    """Fill out (M, 8, width) from the binary table; returns M. A work list of (binary node,
+    wide node) pairs; each wide node's children are chosen as the module docstring says."""
+    work = np.empty((len(nodes) + len(roots), 2), dtype=np.int64)
+    kids = np.empty(width, dtype=np.int64)
+    done = 0
+    for r in range(len(roots)):
+        wide_roots[r] = done
+        work[0, 0], work[0, 1] = roots[r], done
+        top = 1
+        done += 1
+        while top > 0:
+            top -= 1
+            b, w = work[top, 0], work[top, 1]
+            if links[b, 7] > 0:        # a tree that is a single leaf
+                kids[0] = b
+                count = 1
+            else:
+                kids[0], kids[1] = links[b, 3], links[b, 3] + 1
+                count = 2
+                while count < width:
+                    widest = -1
+                    widest_area = -1.0
+                    for k in range(count):
+                        if links[kids[k], 7] == 0:
+                            a = _area(nodes, kids[k])
+                            if a > widest_area:
+                                widest, widest_area = k, a
+                    if widest < 0:
+                        break
+                    left = links[kids[widest], 3]
+                    kids[widest] = left
+                    kids[count] = left + 1
+                    count += 1
+            for j in range(width):
+                if j >= count:
+                    for a in range(3):
+                        out[w, a, j] = np.inf
+                        out[w, 3 + a, j] = -np.inf
+                    out_links[w, 6, j] = 0
+                    out_links[w, 7, j] = 0
+                    continue
+                c = kids[j]
+                for a in range(3):
+                    out[w, a, j] = nodes[c, a]
+                    out[w, 3 + a, j] = nodes[c, 4 + a]
+                if links[c, 7] > 0:
+                    out_links[w, 6, j] = links[c, 3]
+                    out_links[w, 7, j] = links[c, 7]
+                else:
+                    out_links[w, 6, j] = done
+                    out_links[w, 7, j] = 0
+                    work[top, 0], work[top, 1] = c, done
+                    top += 1
+                    done += 1
+    return done
+
+
+def collapse(bvh: FlatBVH, roots=(0,)) -> WideBVH:
+    """The wide tree of ``bvh`` (each of ``roots`` the first node of a tree in its table)."""
+    start = time.perf_counter()
+    links = bvh.links
+    leaves = links[:, 7] > 0
+    if leaves.any() and (links[leaves, 7].max() > 2 ** LEAF_BITS or links[leaves, 3].max() >= MAX_FIRST):
+        raise ValueError("wide BVH: a leaf holds more than %d primitives or starts past %d"
+                         % (2 ** LEAF_BITS, MAX_FIRST))
+    out = np.empty((len(bvh.nodes) + len(roots), 8, WIDTH), dtype=np.float32)
+    wide_roots = np.zeros(len(roots), dtype=np.int64)
+    n = _collapse(bvh.nodes, links, np.asarray(roots, dtype=np.int64), out, out.view(np.int32), wide_roots, WIDTH)
+    nodes = np.ascontiguousarray(out[:n])
+    return WideBVH(nodes, tuple(int(r) for r in wide_roots), time.perf_counter() - start)

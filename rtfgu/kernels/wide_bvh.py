@@ -1,0 +1,167 @@
+"""The traversal of the wide BVH (rtfgu.accelerators.wide_bvh) on the numba path: a node's
+eight child boxes tested at once by one vector slab test (``box8``), the children entered
+nearest first.
+
+numba leaves LLVM's SLP vectoriser off, and a loop over eight boxes stays scalar; ``box8`` is
+a numba intrinsic that writes the LLVM IR itself, on ``<8 x float>`` (``<8 x double>`` in a
+float64 render, the float32 boxes widened exactly), which LLVM compiles to packed AVX
+instructions where the CPU has them (rtfgu.kernels.mesh.WIDE chooses the tree by the CPU).
+It is the scalar slab test of rtfgu.kernels.mesh.box_entry lane by lane, the same
+operations in the same order, so a lane enters a box exactly where box_entry does.
+
+The stack: a node's children that the ray enters are pushed sorted, the farthest deepest, so
+the nearest is popped first (Embree's sorting network does the same for its hits); an entry
+popped beyond the nearest hit so far is dropped. A leaf child goes on the stack as
+~(first << LEAF_BITS | count - 1), an inner one as its node.
+"""
+from __future__ import annotations
+
+import math
+
+from llvmlite import ir
+from numba import njit, types
+from numba.core import cgutils
+from numba.extending import intrinsic
+
+from ..accelerators.flat_bvh import MAX_DEPTH
+from ..accelerators.wide_bvh import LEAF_BITS, WIDTH
+
+# A traversal pushes at most WIDTH - 1 entries per level it descends.
+STACK = MAX_DEPTH * WIDTH
+
+
+def vector_cpu() -> bool:
+    """Whether the CPU tests WIDTH float32 lanes in one instruction (AVX): the numba path then
+    traverses the wide tree, else the binary one (rtfgu.kernels.render.mesh_arrays). Both give
+    every ray the same face and t (tests/test_wide_bvh.py); the wide one is the faster where
+    the box test is one instruction (docs/bvh.md, "The wide BVH")."""
+    from llvmlite import binding
+    return bool(binding.get_host_cpu_features().get("avx", False))
+
+
+WIDE = vector_cpu()
+
+
+def _element(dtype):
+    if isinstance(dtype, types.NumberClass):
+        return dtype.instance_type
+    if isinstance(dtype, types.Number):
+        return dtype
+    return None
+
+
+@intrinsic
+def stack_of(typingctx, dtype):
+    """A pointer to STACK elements of ``dtype`` (a number type, or a value of the float type
+    wanted): an alloca in the entry block of the function this is inlined into."""
+    element = _element(dtype)
+    if element is None:
+        return None
+
+    def codegen(context, builder, signature, args):
+        return cgutils.alloca_once(builder, context.get_value_type(element), size=STACK)
+    return types.CPointer(element)(dtype), codegen
+
+
+@intrinsic
+def lanes_of(typingctx, dtype):
+    """A pointer to WIDTH elements of ``dtype``, as stack_of."""
+    element = _element(dtype)
+    if element is None:
+        return None
+
+    def codegen(context, builder, signature, args):
+        return cgutils.alloca_once(builder, context.get_value_type(element), size=WIDTH)
+    return types.CPointer(element)(dtype), codegen
+
+
+@intrinsic
+def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
+    """The slab test of node ``n``'s WIDTH child boxes (nodes (N, 8, WIDTH) float32): a bit
+    mask of the children the ray enters within [tmin, tmax], and at ``entry`` (a pointer to
+    WIDTH floats of tmin's type) the t at which it enters each (inf where it does not).
+    ``inv`` = 1 / direction (inf for a zero component): the near plane of an axis is hi
+    where its inv < 0, lo otherwise. As box_entry: near = (plane - o) * inv, far the same
+    times ``widen``; t0 the largest of tmin and the nears, t1 the smallest of tmax and the
+    fars, a NaN (0 * inf) narrowing neither; entered where not t0 > t1."""
+    if not (isinstance(nodes, types.Array) and nodes.ndim == 3 and nodes.dtype == types.float32):
+        return None
+    if not isinstance(tmin, types.Float):
+        return None
+    real = tmin
+
+    def codegen(context, builder, signature, args):
+        nodes_v, n_v, origin_v, inv_v, tmin_v, tmax_v, widen_v, entry_v = args
+        nodes_t, n_t, origin_t, inv_t, tmin_t, tmax_t, widen_t, _ = signature.args
+        ft = context.get_value_type(real)
+        vt = ir.VectorType(ft, WIDTH)
+        vf32 = ir.VectorType(ir.FloatType(), WIDTH)
+        i64 = ir.IntType(64)
+        i32 = ir.IntType(32)
+        array = context.make_array(nodes_t)(context, builder, nodes_v)
+        n64 = context.cast(builder, n_v, n_t, types.int64)
+        base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, 8 * WIDTH))])
+
+        def scalar(value, typ):
+            return context.cast(builder, value, typ, real)
+
+        def splat(x):
+            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
+            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined), ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+
+        def row(index):
+            p = builder.gep(base, [builder.mul(index, ir.Constant(i64, WIDTH))])
+            v = builder.load(builder.bitcast(p, vf32.as_pointer()), align=4)
+            return v if real.bitwidth == 32 else builder.fpext(v, vt)
+
+        zero = ir.Constant(ft, 0.0)
+        t0 = splat(scalar(tmin_v, tmin_t))
+        t1 = splat(scalar(tmax_v, tmax_t))
+        w = splat(scalar(widen_v, widen_t))
+        for a in range(3):
+            o = splat(scalar(builder.extract_value(origin_v, a), origin_t.types[a]))
+            inv_a = scalar(builder.extract_value(inv_v, a), inv_t.types[a])
+            i = splat(inv_a)
+            negative = builder.fcmp_ordered("<", inv_a, zero)
+            near_row = builder.select(negative, ir.Constant(i64, 3 + a), ir.Constant(i64, a))
+            far_row = builder.select(negative, ir.Constant(i64, a), ir.Constant(i64, 3 + a))
+            near = builder.fmul(builder.fsub(row(near_row), o), i)
+            far = builder.fmul(builder.fmul(builder.fsub(row(far_row), o), i), w)
+            t0 = builder.select(builder.fcmp_ordered(">", near, t0), near, t0)
+            t1 = builder.select(builder.fcmp_ordered("<", far, t1), far, t1)
+        missed = builder.fcmp_ordered(">", t0, t1)
+        inf = ir.Constant(vt, [math.inf] * WIDTH)
+        builder.store(builder.select(missed, inf, t0), builder.bitcast(entry_v, vt.as_pointer()), align=4)
+        entered = builder.xor(missed, ir.Constant(ir.VectorType(ir.IntType(1), WIDTH), [1] * WIDTH))
+        mask = builder.bitcast(entered, ir.IntType(WIDTH))
+        return builder.zext(mask, i64)
+    return types.int64(nodes, n, origin, inv, tmin, tmax, widen, types.CPointer(real)), codegen
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def push_children(links, node, mask, entry, stack, entry_stack, sp):
+    """Push the children of ``mask`` (box8) sorted by their entry t, the nearest on top;
+    returns the new stack size. A leaf child as ~(first << LEAF_BITS | count - 1)."""
+    base = sp
+    for j in range(WIDTH):
+        if mask >> j & 1:
+            t = entry[j]
+            count = links[node, 7, j]
+            child = links[node, 6, j] if count == 0 else ~(links[node, 6, j] << LEAF_BITS | (count - 1))
+            k = sp
+            while k > base and entry_stack[k - 1] < t:
+                stack[k] = stack[k - 1]
+                entry_stack[k] = entry_stack[k - 1]
+                k -= 1
+            stack[k] = child
+            entry_stack[k] = t
+            sp += 1
+    return sp
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def leaf_span(code):
+    """(first, count) of a leaf's stack entry."""
+    leaf = ~code
+    return leaf >> LEAF_BITS, (leaf & ((1 << LEAF_BITS) - 1)) + 1
+

@@ -1,0 +1,310 @@
+"""The wide BVH of the numba path (rtfgu.accelerators.wide_bvh, rtfgu.kernels.wide_bvh): the
+collapse keeps every leaf and every box of the binary tree, the vector box test (an LLVM
+intrinsic) is the scalar slab test lane by lane, and the wide traversal gives every ray the
+binary traversal's face and t (the tie rule included) and its shadow answer, in both
+precisions, with no leak from inside a closed mesh; through rtfgu.render the two trees give
+the same image."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+import trimesh
+from numba import njit, prange
+
+from rtfgu.accelerators import flat_bvh, wide_bvh
+from rtfgu.kernels import render as render_kernels
+from rtfgu.kernels.float3 import lit, lit_per_precision
+from rtfgu.kernels.mesh import WIDEN32, WIDEN64, _inverse, box_entry, intersect_face, mesh_any, mesh_closest, ray_frame
+from rtfgu.kernels.wide_bvh import box8, lanes_of
+
+PRECISIONS = (np.float64, np.float32)
+
+
+def tree_of(vertices, faces):
+    """The binary tree, the wide one, and the (F, 4) faces in leaf order with their index."""
+    bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, faces))
+    rows = np.empty((len(faces), 4), dtype=np.int32)
+    rows[:, :3] = faces[bvh.order]
+    rows[:, 3] = bvh.order
+    return bvh, bvh.wide(), rows
+
+
+def leaves_of_binary(bvh, root=0):
+    links = bvh.links
+    out, stack = [], [root]
+    while stack:
+        n = stack.pop()
+        if links[n, 7] > 0:
+            out.append((int(links[n, 3]), int(links[n, 7]), tuple(bvh.nodes[n, [0, 1, 2, 4, 5, 6]])))
+        else:
+            stack += [links[n, 3], links[n, 3] + 1]
+    return sorted(out)
+
+
+def leaves_of_wide(wide, root=0):
+    links = wide.links
+    out, stack, nodes = [], [root], 0
+    while stack:
+        n = stack.pop()
+        nodes += 1
+        for j in range(wide_bvh.WIDTH):
+            box = tuple(wide.nodes[n, :6, j])
+            if links[n, 7, j] > 0:
+                out.append((int(links[n, 6, j]), int(links[n, 7, j]), box))
+            elif np.isfinite(box).all():
+                stack.append(links[n, 6, j])
+            else:     # an empty column: the empty box, which no ray enters
+                assert box == (math.inf,) * 3 + (-math.inf,) * 3
+    return sorted(out), nodes
+
+
+def soup(count, seed, spread=1.0, size=0.3):
+    rng = np.random.default_rng(seed)
+    centers = rng.uniform(-spread, spread, (count, 1, 3))
+    vertices = (centers + rng.uniform(-size, size, (count, 3, 3))).reshape(-1, 3)
+    return vertices, np.arange(3 * count).reshape(count, 3)
+
+
+def closed_mesh(subdivisions=3):
+    sphere = trimesh.creation.icosphere(subdivisions=subdivisions)
+    return np.asarray(sphere.vertices, dtype=np.float64), np.asarray(sphere.faces, dtype=np.int64)
+
+
+def hard_rays(vertices, count, seed):
+    """Rays from around the mesh at random points of it, and rays along the axes (zero
+    direction components, negative zeros) and through vertices: the slab test's NaN and
+    infinite cases and the faces' shared edges."""
+    rng = np.random.default_rng(seed)
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    origins = rng.uniform(lo - 1.0, hi + 1.0, (count, 3))
+    targets = vertices[rng.integers(0, len(vertices), count)] + rng.normal(0.0, 0.05, (count, 3))
+    directions = targets - origins
+    k = count // 4
+    axis = rng.integers(0, 3, k)
+    directions[:k] = 0.0
+    directions[np.arange(k), axis] = rng.choice([-1.0, 1.0], k)
+    directions[:k // 2][directions[:k // 2] == 0.0] = -0.0
+    origins[k:2 * k] = np.round(origins[k:2 * k] * 4) / 4     # origins on box planes, often
+    directions[2 * k:3 * k] = vertices[rng.integers(0, len(vertices), k)] - origins[2 * k:3 * k]
+    return origins, directions
+
+
+@njit(parallel=True, error_model="numpy")
+def trace_all(vertices, faces, nodes, links, origins, directions, hits, shadows):
+    for i in prange(origins.shape[0]):
+        origin = (origins[i, 0], origins[i, 1], origins[i, 2])
+        direction = (directions[i, 0], directions[i, 1], directions[i, 2])
+        tmin = lit(0, origins[i, 0])
+        t, index, kind, row = mesh_closest(vertices, faces, nodes, links, None, origin, direction, tmin,
+                                           (lit(math.inf, tmin), -1, -1, -1), 0)
+        hits[i, 0] = t
+        hits[i, 1] = index
+        hits[i, 2] = row
+        # a shadow ray to a point just short of the nearest face, and one past it
+        reach = lit(4, tmin) if t == lit(math.inf, tmin) else t
+        shadows[i, 0] = mesh_any(vertices, faces, nodes, links, None, origin, direction, tmin,
+                                 reach * lit(0.5, tmin), 0)
+        shadows[i, 1] = mesh_any(vertices, faces, nodes, links, None, origin, direction, tmin,
+                                 reach * lit(1.5, tmin), 0)
+
+
+@njit(error_model="numpy")
+def loop_one(vertices, faces, origin, direction):
+    """The truth of the tie rule: every face tested, the nearest kept, of equal ts the one of
+    the lower index (tested up to the next float above the best t)."""
+    tmin = lit(0, origin[0])
+    inf = lit(math.inf, tmin)
+    frame = ray_frame(origin, direction)
+    tmax, best, row = inf, -1, -1
+    for f in range(faces.shape[0]):
+        idx = faces[f, 3]
+        limit = tmax if idx > best else np.nextafter(tmax, inf)
+        t = intersect_face(vertices, faces, f, frame, tmin, limit)
+        if t < tmax or (t == tmax and idx < best):
+            tmax, best, row = t, idx, f
+    return tmax, best, row
+
+
+@njit(parallel=True, error_model="numpy")
+def loop_all(vertices, faces, origins, directions, hits):
+    for i in prange(origins.shape[0]):
+        t, best, row = loop_one(vertices, faces, (origins[i, 0], origins[i, 1], origins[i, 2]),
+                                (directions[i, 0], directions[i, 1], directions[i, 2]))
+        hits[i, 0] = t
+        hits[i, 1] = best
+        hits[i, 2] = row
+
+
+def looped(vertices, faces, origins, directions, dtype):
+    hits = np.empty((len(origins), 3), dtype=np.float64)
+    loop_all(vertices.astype(dtype), faces, origins.astype(dtype), directions.astype(dtype), hits)
+    return hits
+
+
+def traced(vertices, faces, nodes, origins, directions, dtype):
+    hits = np.empty((len(origins), 3), dtype=np.float64)
+    shadows = np.empty((len(origins), 2), dtype=np.bool_)
+    trace_all(vertices.astype(dtype), faces, nodes, nodes.view(np.int32), origins.astype(dtype),
+              directions.astype(dtype), hits, shadows)
+    return hits, shadows
+
+
+# --- the collapse -------------------------------------------------------------------------
+
+@pytest.mark.parametrize("count", [1, 2, 7, 9, 300, 5000])
+def test_the_collapse_keeps_every_leaf_and_box_of_the_binary_tree(count):
+    bvh, wide, _ = tree_of(*soup(count, seed=count))
+    binary_leaves = leaves_of_binary(bvh)
+    wide_leaves, reached = leaves_of_wide(wide)
+    assert wide_leaves == binary_leaves
+    assert reached == len(wide.nodes)                      # no node is unreachable
+    assert sum(c for _, c, _ in wide_leaves) == count       # every primitive once
+    if count >= 300:
+        # fewer levels: the depth of a leaf is about log8 rather than log2 of the count
+        assert len(wide.nodes) * 4 < bvh.num_nodes
+
+
+def test_a_node_opens_its_largest_child_first():
+    # Two far clusters of unequal extent: the root's two children are the clusters, and the
+    # wide root opens the larger one down to its leaves before the smaller.
+    big, faces = soup(64, seed=1, spread=8.0, size=1.0)
+    small, small_faces = soup(64, seed=2, spread=0.1, size=0.01)
+    vertices = np.concatenate([big, small + 100.0])
+    bvh, wide, _ = tree_of(vertices, np.concatenate([faces, small_faces + len(big)]))
+    root_boxes = wide.nodes[0, :6, :].T
+    in_small = (root_boxes[:, 0] > 50.0).sum()
+    assert in_small == 1 and np.isfinite(root_boxes).all()
+
+
+def test_the_roots_of_several_trees_in_one_table_are_collapsed_each():
+    a_vertices, a_faces = soup(40, seed=5)
+    b_vertices, b_faces = soup(90, seed=6)
+    a = flat_bvh.build(*flat_bvh.triangle_bounds(a_vertices, a_faces))
+    b = flat_bvh.offset(flat_bvh.build(*flat_bvh.triangle_bounds(b_vertices, b_faces)), a.num_nodes, len(a_faces))
+    table = flat_bvh.FlatBVH(np.concatenate([a.nodes, b.nodes]), np.concatenate([a.order, b.order]), 0.0)
+    wide = table.wide((0, a.num_nodes))
+    assert wide.roots[0] == 0
+    assert leaves_of_wide(wide, wide.roots[0])[0] == leaves_of_binary(table, 0)
+    assert leaves_of_wide(wide, wide.roots[1])[0] == leaves_of_binary(table, a.num_nodes)
+    assert table.wide((0, a.num_nodes)) is wide                # kept with the table
+
+
+def test_a_leaf_too_big_for_the_stack_code_is_refused():
+    bvh, _, _ = tree_of(*soup(3, seed=1))
+    links = bvh.nodes.view(np.int32)
+    links[0, 3], links[0, 7] = 0, 2 ** wide_bvh.LEAF_BITS + 1
+    with pytest.raises(ValueError, match="leaf holds more than"):
+        wide_bvh.collapse(flat_bvh.FlatBVH(bvh.nodes[:1].copy(), bvh.order, 0.0))
+
+
+# --- the vector box test ------------------------------------------------------------------
+
+@njit(error_model="numpy")
+def both_box_tests(nodes8, wide_nodes, origin, direction, tmin, tmax, out_scalar, out_vector):
+    inv = _inverse(direction)
+    entry = lanes_of(tmin)
+    mask = box8(wide_nodes, 0, origin, inv[0], tmin, tmax, lit_per_precision(WIDEN32, WIDEN64, tmin), entry)
+    for j in range(8):
+        out_scalar[j] = box_entry(nodes8, j, origin, inv, tmin, tmax)
+        out_vector[j] = entry[j]
+    return mask
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_the_vector_box_test_is_the_scalar_one_lane_by_lane(dtype):
+    rng = np.random.default_rng(7)
+    mismatches = []
+    for trial in range(400):
+        lo = rng.uniform(-1, 1, (8, 3)).astype(np.float32)
+        hi = lo + rng.uniform(0, 1, (8, 3)).astype(np.float32)
+        if trial % 4 == 0:
+            hi[3] = lo[3]                                          # flat boxes
+        nodes8 = np.zeros((8, 8), dtype=np.float32)
+        nodes8[:, 0:3], nodes8[:, 4:7] = lo, hi
+        wide = np.zeros((1, 8, 8), dtype=np.float32)
+        wide[0, 0:3, :], wide[0, 3:6, :] = lo.T, hi.T
+        origin = rng.uniform(-2, 2, 3)
+        if trial % 3 == 0:
+            origin[trial % 3] = lo[trial % 8, trial % 3]           # on a box's plane
+        direction = rng.normal(size=3)
+        if trial % 5 == 0:
+            direction[trial % 3] = 0.0 if trial % 2 else -0.0      # in a slab's planes: 0 * inf
+        tmin = dtype(rng.uniform(0, 0.5))
+        tmax = dtype(math.inf if trial % 2 else rng.uniform(0.5, 3))
+        scalar, vector = np.empty(8, dtype), np.empty(8, dtype)
+        mask = both_box_tests(nodes8, wide, tuple(origin.astype(dtype)), tuple(direction.astype(dtype)), tmin, tmax,
+                              scalar, vector)
+        expected = sum(1 << j for j in range(8) if scalar[j] != math.inf)
+        if mask != expected or scalar.tobytes() != vector.tobytes():
+            mismatches.append((trial, mask, expected, scalar, vector))
+    assert not mismatches, mismatches[:2]
+
+
+# --- the traversal ------------------------------------------------------------------------
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+@pytest.mark.parametrize("mesh", ["soup", "icosphere", "coincident"])
+def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dtype):
+    if mesh == "soup":
+        vertices, faces = soup(3000, seed=4)
+    elif mesh == "icosphere":
+        vertices, faces = closed_mesh(4)
+    else:
+        # each face twice, at the same place: every hit is a tie, the earlier copy wins
+        vertices, faces = soup(500, seed=8)
+        faces = np.concatenate([faces, faces])[np.random.default_rng(0).permutation(1000)]
+    bvh, wide, rows = tree_of(vertices, faces)
+    origins, directions = hard_rays(vertices, 20000, seed=9)
+    binary = traced(vertices, rows, bvh.nodes, origins, directions, dtype)
+    wider = traced(vertices, rows, wide.nodes, origins, directions, dtype)
+    truth = looped(vertices, rows, origins, directions, dtype)
+    assert (truth[:, 1] >= 0).mean() > 0.3                        # the rays do hit
+    # t, face index and row, bit for bit: the loop's, on both trees
+    assert binary[0].tobytes() == truth.tobytes()
+    assert wider[0].tobytes() == truth.tobytes()
+    assert np.array_equal(binary[1], wider[1])
+    if mesh == "coincident":
+        first = {}
+        for k, f in enumerate(faces.tolist()):
+            first.setdefault(tuple(f), k)
+        hit = wider[0][:, 1] >= 0
+        won = wider[0][hit, 1].astype(int)
+        assert all(first[tuple(faces[k].tolist())] == k for k in won)
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_no_ray_from_inside_a_closed_mesh_leaks_through_the_wide_tree(dtype):
+    vertices, faces = closed_mesh(3)
+    _, wide, rows = tree_of(vertices, faces)
+    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in faces for a in range(3)}
+    targets = np.concatenate([vertices, [(vertices[i] + vertices[j]) * 0.5 for i, j in sorted(edges)]])
+    for origin in ((0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)):
+        origins = np.tile(origin, (len(targets), 1))
+        hits, _ = traced(vertices, rows, wide.nodes, origins, targets - origins, dtype)
+        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(targets))
+
+
+# --- through rtfgu.render -----------------------------------------------------------------
+
+def test_the_render_traverses_the_wide_tree_where_the_cpu_has_vector_units_and_both_give_one_image(monkeypatch):
+    from rtfgu.layout import compile_scene
+    from rtfgu.renderer import render
+    from rtfgu.scenes import SCENES
+
+    scene = SCENES["suffern_29_uv_mesh"]()
+    flat = compile_scene(scene, "float32")
+    arrays = render_kernels.mesh_arrays(flat)
+    assert arrays[3].ndim == (3 if wide_bvh_cpu() else 2)
+    images = {}
+    for wide in (False, True):
+        monkeypatch.setattr(render_kernels, "WIDE", wide)
+        images[wide] = render(SCENES["suffern_29_uv_mesh"](), 40, 30, backend="numba", precision="float32")
+    assert np.isfinite(images[True]).all() and images[True].std() > 0
+    assert images[False].tobytes() == images[True].tobytes()
+
+
+def wide_bvh_cpu() -> bool:
+    from rtfgu.kernels.wide_bvh import vector_cpu
+    return vector_cpu()
