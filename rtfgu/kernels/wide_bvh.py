@@ -1,3 +1,4 @@
+# release: solves a08
 """The traversal of the wide BVH (rtfgu.accelerators.wide_bvh) on the numba path: a node's
 eight child boxes tested at once by one vector slab test (``box8``), the children entered
 nearest first.
