@@ -29,8 +29,7 @@ import math
 
 import numpy as np
 from numba import njit, types
-from numba.core import cgutils
-from numba.extending import intrinsic, overload
+from numba.extending import overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
 from ..layout import INSTANCE_ROW, MESH, SPHERE, SPHERE_CENTER, SPHERE_RADIUS, SPHERE_ROW
@@ -50,21 +49,8 @@ WIDEN64 = 1.0 + 2.0 * (3 * 2.0 ** -53) / (1 - 3 * 2.0 ** -53)
 WIDEN32 = 1.0 + 2.0 * (3 * 2.0 ** -24) / (1 - 3 * 2.0 ** -24)
 
 
-@intrinsic
-def _stack_pointer(typingctx, dtype):
-    """A pointer to MAX_DEPTH elements of ``dtype`` (a number type, or a value of the float
-    type wanted) on the stack of the function this is inlined into: an LLVM alloca in its
-    entry block, so it costs nothing per call and needs no reference counting."""
-    if isinstance(dtype, types.NumberClass):
-        element = dtype.instance_type
-    elif isinstance(dtype, types.Number):
-        element = dtype
-    else:
-        return None
-
-    def codegen(context, builder, signature, args):
-        return cgutils.alloca_once(builder, context.get_value_type(element), size=MAX_DEPTH)
-    return types.CPointer(element)(dtype), codegen
+# A traversal's stack of MAX_DEPTH entries, in the caller's frame (rtfgu.kernels.wide_bvh.on_the_stack).
+_stack_pointer = wide_bvh.on_the_stack(MAX_DEPTH, "The binary traversal's stack: MAX_DEPTH elements.")
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -229,9 +215,10 @@ def _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, 
     return False
 
 
-def _binary_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances):
-    """mesh_closest on the binary table (N, 8): the nearer child first, the farther on the stack."""
-    state = hit
+def _binary_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
+    """mesh_closest on the binary table (N, 8): the nearer child first, the farther on the stack.
+    ``bound``: the best hit so far (mesh_closest's ``hit``)."""
+    state = bound
     inf = lit(math.inf, tmin)
     widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
     frame = ray_frame(origin, direction)
@@ -241,7 +228,7 @@ def _binary_closest(vertices, faces, nodes, links, spheres, origin, direction, t
     sp = 0
     node = root
     if box_entry(nodes, root, origin, inv, tmin, state[0] * widen) == inf:
-        return hit
+        return bound
     while True:
         count = links[node, 7]
         if count > 0:
@@ -274,15 +261,20 @@ def _binary_closest(vertices, faces, nodes, links, spheres, origin, direction, t
     return state
 
 
-def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances):
-    """mesh_closest on the wide table (N, 8, WIDTH): rtfgu.kernels.wide_bvh's box8 and stack."""
-    state = hit
-    frame = ray_frame(origin, direction)
-    inv = _inverse(direction)[0]
-    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
-    stack = wide_bvh.stack_of(np.int32)
-    entry_stack = wide_bvh.stack_of(tmin)
-    entry = wide_bvh.lanes_of(tmin)
+@njit(cache=True, error_model="numpy", inline="always")
+def _wide_start(origin, direction, tmin):
+    """What a wide traversal sets up once per ray: the faces' ray frame, 1 / direction, the
+    slab's widening, its stack of codes and of entry ts, and box8's lanes (allocas in the frame
+    of the function this is inlined into)."""
+    return (ray_frame(origin, direction), _inverse(direction)[0], lit_per_precision(WIDEN32, WIDEN64, tmin),
+            wide_bvh.stack_of(np.int32), wide_bvh.stack_of(tmin), wide_bvh.lanes_of(tmin))
+
+
+def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
+    """mesh_closest on the wide table (N, 8, WIDTH): rtfgu.kernels.wide_bvh's box8 and stack.
+    ``bound``: the best hit so far (mesh_closest's ``hit``)."""
+    state = bound
+    frame, inv, widen, stack, entry_stack, entry = _wide_start(origin, direction, tmin)
     sp = 0
     code = root
     while True:
@@ -305,15 +297,21 @@ def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmi
     return state
 
 
-def _traverse_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances):
-    return (_wide_closest if nodes.ndim == 3 else _binary_closest)(
-        vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root, instances)
+def _by_tree(binary, wide):
+    """A traversal that runs ``wide`` on a wide table ((N, 8, WIDTH) nodes) and ``binary`` on
+    a binary one ((N, 8)): numba picks one by the nodes' dimensions when it compiles the
+    caller, and inlines it there."""
+    def traverse(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
+        return (wide if nodes.ndim == 3 else binary)(
+            vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances)
+
+    @overload(traverse, inline="always")
+    def typed(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
+        return wide if nodes.ndim == 3 else binary
+    return traverse
 
 
-@overload(_traverse_closest, inline="always")
-def _typed_traverse_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root,
-                            instances):
-    return _wide_closest if nodes.ndim == 3 else _binary_closest
+_traverse_closest = _by_tree(_binary_closest, _wide_closest)
 
 
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and tree kind
@@ -343,8 +341,10 @@ def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin
 object_mesh_closest = njit(cache=True, error_model="numpy")(getattr(mesh_closest, "py_func", mesh_closest))
 
 
-def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances):
-    """mesh_any on the binary table: both children entered, one kept on the stack."""
+def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
+    """mesh_any on the binary table: both children entered, one kept on the stack. ``bound``:
+    mesh_any's ``tmax``."""
+    tmax = bound
     inf = lit(math.inf, tmin)
     frame = ray_frame(origin, direction)
     inv = _inverse(direction)
@@ -378,14 +378,11 @@ def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin,
     return False
 
 
-def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances):
-    """mesh_any on the wide table: every child the ray enters on the stack, in any order."""
-    frame = ray_frame(origin, direction)
-    inv = _inverse(direction)[0]
-    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
-    stack = wide_bvh.stack_of(np.int32)
-    entry_stack = wide_bvh.stack_of(tmin)
-    entry = wide_bvh.lanes_of(tmin)
+def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
+    """mesh_any on the wide table: every child the ray enters on the stack, in any order.
+    ``bound``: mesh_any's ``tmax``."""
+    tmax = bound
+    frame, inv, widen, stack, entry_stack, entry = _wide_start(origin, direction, tmin)
     sp = 0
     code = root
     while True:
@@ -403,15 +400,7 @@ def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, t
         code = stack[sp]
 
 
-def _traverse_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances):
-    return (_wide_any if nodes.ndim == 3 else _binary_any)(
-        vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root, instances)
-
-
-@overload(_traverse_any, inline="always")
-def _typed_traverse_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root,
-                        instances):
-    return _wide_any if nodes.ndim == 3 else _binary_any
+_traverse_any = _by_tree(_binary_any, _wide_any)
 
 
 @njit(cache=True, error_model="numpy")

@@ -51,29 +51,25 @@ def _element(dtype):
     return None
 
 
-@intrinsic
-def stack_of(typingctx, dtype):
-    """A pointer to STACK elements of ``dtype`` (a number type, or a value of the float type
-    wanted): an alloca in the entry block of the function this is inlined into."""
-    element = _element(dtype)
-    if element is None:
-        return None
+def on_the_stack(size: int, what: str):
+    """An intrinsic giving a pointer to ``size`` elements of a number type (or of the type of
+    a value given): an alloca in the entry block of the function it is inlined into, so it
+    costs nothing per call and needs no reference counting."""
+    @intrinsic
+    def allocate(typingctx, dtype):
+        element = _element(dtype)
+        if element is None:
+            return None
 
-    def codegen(context, builder, signature, args):
-        return cgutils.alloca_once(builder, context.get_value_type(element), size=STACK)
-    return types.CPointer(element)(dtype), codegen
+        def codegen(context, builder, signature, args):
+            return cgutils.alloca_once(builder, context.get_value_type(element), size=size)
+        return types.CPointer(element)(dtype), codegen
+    allocate.__doc__ = what
+    return allocate
 
 
-@intrinsic
-def lanes_of(typingctx, dtype):
-    """A pointer to WIDTH elements of ``dtype``, as stack_of."""
-    element = _element(dtype)
-    if element is None:
-        return None
-
-    def codegen(context, builder, signature, args):
-        return cgutils.alloca_once(builder, context.get_value_type(element), size=WIDTH)
-    return types.CPointer(element)(dtype), codegen
+stack_of = on_the_stack(STACK, "A traversal's stack: STACK elements.")
+lanes_of = on_the_stack(WIDTH, "box8's entry ts: WIDTH elements.")
 
 
 @intrinsic
