@@ -1,11 +1,12 @@
 """What a mesh costs through ``rtfgu.render``: the table "A mesh through rtfgu.render" of
 docs/meshes.md.
 
-    python benchmarks/mesh_render.py SUBDIVISIONS [--triangles] [--size N] [--save IMAGE.npy]
+    python benchmarks/mesh_render.py SUBDIVISIONS [--triangles] [--size N] [--precision P] [--save IMAGE.npy]
 
 One displaced icosphere (benchmarks/meshes.py's displaced_icosphere; 6 subdivisions: 81 920
 triangles, 8: 1 310 720) in a scene of one Matte mesh and one point light, seen by a pinhole
-camera, rendered with the numba backend in float64 at N x N (128), one sample per pixel.
+camera, rendered with the numba backend in float64 (or ``--precision float32``) at N x N (128),
+one sample per pixel.
 The scene holds the Mesh itself, or with ``--triangles`` its faces (``mesh.triangles()``,
 the only way before a scene could hold a Mesh). Printed, in seconds, as one JSON line:
 
@@ -62,23 +63,25 @@ def main() -> None:
     parser.add_argument("--triangles", action="store_true", help="hold mesh.triangles(), not the Mesh")
     parser.add_argument("--size", type=int, default=128)
     parser.add_argument("--save", help="write the first image to this .npy file")
+    parser.add_argument("--precision", default="float64", choices=("float64", "float32"))
     args = parser.parse_args()
     size = args.size
 
     warm = displaced_icosphere(1)
     rtfgu.render(mesh_scene(rtfgu.Mesh(warm.vertices, warm.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()),
-                            args.triangles), 16, 16, backend="numba")
+                            args.triangles), 16, 16, backend="numba", precision=args.precision)
 
     arrays = displaced_icosphere(args.subdivisions)
     scene, construct = timed(lambda: mesh_scene(
         rtfgu.Mesh(arrays.vertices, arrays.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()), args.triangles))
-    first_image, first = timed(rtfgu.render, scene, size, size, backend="numba")
-    second_image, second = timed(rtfgu.render, scene, size, size, backend="numba")
-    accumulate = NumbaAccumulator(scene, size, size, "float64")
+    first_image, first = timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
+    second_image, second = timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
+    accumulate = NumbaAccumulator(scene, size, size, args.precision)
     kernel_image, kernel = timed(accumulate, (0, 1))
     if args.save:
         np.save(args.save, first_image)
     print(json.dumps({"triangles": len(arrays.faces), "held": "triangles" if args.triangles else "Mesh",
+                      "precision": args.precision, "size": size,
                       "construct": construct, "first": first, "second": second, "kernel": kernel,
                       "same_images": bool(np.array_equal(first_image, second_image)
                                           and np.array_equal(first_image, kernel_image))}))

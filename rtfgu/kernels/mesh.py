@@ -279,8 +279,8 @@ def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmi
     code = root
     while True:
         if code >= 0:
-            mask = wide_bvh.box8(nodes, code, origin, inv, tmin, state[0] * widen, widen, entry)
-            sp = wide_bvh.push_children(links, code, mask, entry, stack, entry_stack, sp)
+            sp = wide_bvh.enter_node(nodes, links, code, origin, inv, tmin, state[0] * widen, widen, entry, stack,
+                                     entry_stack, sp)
         else:
             first, count = wide_bvh.leaf_span(code)
             state = _leaf_closest(vertices, faces, spheres, instances, first, count, frame, origin, direction,
@@ -381,17 +381,15 @@ def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin,
 def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
     """mesh_any on the wide table: every child the ray enters on the stack, in any order.
     ``bound``: mesh_any's ``tmax``."""
-    tmax = bound
     frame, inv, widen, stack, entry_stack, entry = _wide_start(origin, direction, tmin)
     sp = 0
     code = root
     while True:
         if code >= 0:
-            mask = wide_bvh.box8(nodes, code, origin, inv, tmin, tmax, widen, entry)
-            sp = wide_bvh.push_children(links, code, mask, entry, stack, entry_stack, sp)
+            sp = wide_bvh.enter_node(nodes, links, code, origin, inv, tmin, bound, widen, entry, stack, entry_stack, sp)
         else:
             first, count = wide_bvh.leaf_span(code)
-            if _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, tmax,
+            if _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, bound,
                          formula):
                 return True
         if sp == 0:

@@ -136,9 +136,11 @@ def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def push_children(links, node, mask, entry, stack, entry_stack, sp):
-    """Push the children of ``mask`` (box8) sorted by their entry t, the nearest on top;
-    returns the new stack size. A leaf child as ~(first << LEAF_BITS | count - 1)."""
+def enter_node(nodes, links, node, origin, inv, tmin, reach, widen, entry, stack, entry_stack, sp):
+    """box8 on ``node`` within [tmin, reach], and the children the ray enters pushed sorted
+    by their entry t, the nearest on top (``entry``: box8's lanes); returns the new stack
+    size. A leaf child goes on as ~(first << LEAF_BITS | count - 1)."""
+    mask = box8(nodes, node, origin, inv, tmin, reach, widen, entry)
     base = sp
     for j in range(WIDTH):
         if mask >> j & 1:
