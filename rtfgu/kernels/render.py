@@ -96,20 +96,20 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
     return shapes
 
 
-def mesh_arrays(flat, wide=None) -> tuple:
+def mesh_arrays(flat) -> tuple:
     """The FlatMesh's arrays in MESH_SLOTS order, with the tree the numba path traverses: the
-    wide one (rtfgu.accelerators.wide_bvh) where ``wide`` (by default: the CPU has vector
-    units, rtfgu.kernels.wide_bvh.WIDE), else the binary one."""
+    wide one (rtfgu.accelerators.wide_bvh) where the CPU has vector units
+    (rtfgu.kernels.wide_bvh.WIDE), else the binary one."""
     mesh = flat.mesh
-    nodes = mesh.bvh.wide(mesh.tree_roots).nodes if (WIDE if wide is None else wide) else mesh.bvh.nodes
+    nodes = mesh.bvh.wide(mesh.tree_roots).nodes if WIDE else mesh.bvh.nodes
     return mesh.vertices, mesh.faces, mesh.normals, nodes, nodes.view(np.int32), mesh.uvs
 
 
-def instance_table(flat, kind: str, wide=None) -> np.ndarray:
+def instance_table(flat, kind: str) -> np.ndarray:
     """The instance table as the numba path reads it: an instance of a Mesh names its mesh's
     root in the tree that mesh_arrays gives (the layout names the binary table's)."""
     table = flat.table(kind)
-    if "instanced_mesh" not in flat.features or not (WIDE if wide is None else wide):
+    if "instanced_mesh" not in flat.features or not WIDE:
         return table
     mesh = flat.mesh
     wide_roots = dict(zip(mesh.tree_roots, mesh.bvh.wide(mesh.tree_roots).roots))
