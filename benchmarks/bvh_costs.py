@@ -45,8 +45,7 @@ def build(lo, hi, c_traverse):
                         flat_bvh.MAX_DEPTH)
     seconds = time.perf_counter() - start
     nodes = np.zeros((n, flat_bvh.NODE_WIDTH), dtype=np.float32)
-    rounded = flat_bvh._round_out(box[:n])
-    nodes[:, 0:3], nodes[:, 4:7] = rounded[:, :3], rounded[:, 3:]
+    flat_bvh._round_out(box[:n], nodes)
     ints = nodes.view(np.int32)
     ints[:, 3], ints[:, 7] = links[:n, 0], links[:n, 1]
     return nodes, order, seconds

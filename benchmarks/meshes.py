@@ -822,7 +822,7 @@ def bench_spheres(mitsuba, size, runs, log):
     scene = bench_scenes.random_spheres_64()
     flat = compile_scene(scene, "float64")
     spheres = flat.table("sphere")
-    colors = np.vstack([flat.materials[:, MAT_COLOR:MAT_COLOR + 3], flat.background[None, :3]])
+    colors = np.vstack([flat.materials[flat.material_of, MAT_COLOR:MAT_COLOR + 3], flat.background[None, :3]])
     reference = render(scene, size, size, backend="numba", precision="float64")
 
     def differ(image):

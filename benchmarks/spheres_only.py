@@ -96,7 +96,7 @@ def prepare(flat, width, height):
 def run_brute_force(flat, width, height):
     camera = prepare(flat, width, height)[0]
     image = np.empty((height, width, 3), dtype=flat.dtype)
-    brute_force(width, height, camera, flat.table("sphere"), flat.materials, flat.background, image)
+    brute_force(width, height, camera, flat.table("sphere"), flat.materials[flat.material_of], flat.background, image)
     return image.astype(np.float64)
 
 
@@ -104,5 +104,5 @@ def run_spheres_only(flat, width, height):
     camera, camera64, sphere_eye, cones, stride = prepare(flat, width, height)
     image = np.empty((height, width, 3), dtype=flat.dtype)
     spheres_only(width, height, camera, camera64, flat.table("sphere"), sphere_eye, cones,
-                 flat.materials, flat.background, stride, image)
+                 flat.materials[flat.material_of], flat.background, stride, image)
     return image.astype(np.float64)

@@ -246,8 +246,12 @@ class FlatScene:
     camera_kind: int
     camera: np.ndarray
     shapes: dict
+    # The distinct materials' rows (M, MATERIAL_WIDTH) and shader ids (M,), and each shape's
+    # row among them (S,) int32 (a Mesh counted as its faces): a mesh of a million faces of
+    # one material has one row, not a million.
     materials: np.ndarray
     shaders: np.ndarray
+    material_of: np.ndarray
     lights: dict
     background: np.ndarray
     shadows: bool
@@ -523,7 +527,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         if isinstance(shape, Mesh):
             # Its faces, m shapes from index i on, packed from its arrays (compile_mesh).
             mesh_faces.append((i, shape))
-            places = np.empty(shape.num_triangles, dtype=np.int64)
+            places = np.empty(shape.num_triangles, dtype=np.int32)
             for face, m, faces in shape.surfaces():
                 places[faces] = material_row("%s.faces[%d]" % (where, face), m, shape.color(face))
             material_of_shape.append(places)
@@ -543,7 +547,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                 # As the lecture layer traces it (Instance.parts): an instance of each face,
                 # in the mesh's order, each with the instance's material or the face's own.
                 mesh = shape.object
-                places = np.empty(mesh.num_triangles, dtype=np.int64)
+                places = np.empty(mesh.num_triangles, dtype=np.int32)
                 its = shape._own_material
                 for face, m, faces in mesh.surfaces():
                     if its is None or isinstance(its.cd, Float3):
@@ -563,13 +567,10 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add(kind.name)
         material_of_shape.append(material_row(where, shape.material, shape.color))
         i += 1
-    material_of_shape = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int64))
-                                        for x in material_of_shape] or [np.zeros(0, dtype=np.int64)])
-    unique_table = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
-    unique_shaders = np.array(unique_shaders, dtype=np.int32)
-    (materials, shaders), _ = _cached(scene, ("materials", np.dtype(dtype).name),
-                                      (unique_table, unique_shaders, material_of_shape),
-                                      lambda: (unique_table[material_of_shape], unique_shaders[material_of_shape]))
+    material_of = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int32)) for x in material_of_shape]
+                                 or [np.zeros(0, dtype=np.int32)])
+    materials = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
+    shaders = np.array(unique_shaders, dtype=np.int32)
 
     lights = {kind.name: [] for kind in LIGHTS}
     for j, light in enumerate(scene.lights):
@@ -606,7 +607,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     spheres = shapes["sphere"]
     # Only primary rays from a pinhole: the per-tile culling finds a tile's spheres for less.
     eye_rays_only = camera_kind == PINHOLE and "shadows" not in features and "path_trace" not in features \
-        and not any(SHADER_BY_ID[s].continues for s in unique_shaders.tolist())
+        and not any(SHADER_BY_ID[s].continues for s in shaders.tolist())
     bvh_spheres = len(spheres[0]) > 0 and (bool(mesh_faces) or (len(spheres[0]) >= BVH_MIN_SPHERES
                                                                 and not eye_rays_only))
     # The instances go into the scene's tree as the spheres do, with their boxes
@@ -652,6 +653,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         shapes=shapes,
         materials=materials,
         shaders=shaders,
+        material_of=material_of,
         lights={kind.name: table(lights[kind.name], kind.record) for kind in LIGHTS},
         own_samples=np.array(own.samples, dtype=dtype).reshape(-1, 2) if own.samples else None,
         own_shuffled=np.array(own.shuffled, dtype=np.int32) if own.samples else None,
@@ -668,8 +670,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         area_lighting=tracer_feature == "area_lighting",
         environment=None if scene.environment is None else scene.environment.texels.astype(dtype),
     )
-    # The materials table repeats the rows of unique_rows: they are checked.
-    arrays = [("camera", flat.camera), ("materials", unique_table),
+    arrays = [("camera", flat.camera), ("materials", materials),
               ("background", flat.background)]
     arrays += [(kind.table, flat.table(kind.name)) for kind in ROW_SHAPES]
     arrays += [("instanced " + kind.table, flat.instanced[kind.name]) for kind in INSTANCED]
@@ -694,7 +695,7 @@ SPHERE_ROW = -1
 INSTANCE_ROW = -2
 
 # What compile_scene made for a scene from its meshes, per precision: the BVH and the
-# FlatMesh arrays, the materials table. {scene: {name: (inputs, value)}}: a value is reused
+# FlatMesh arrays. {scene: {name: (inputs, value)}}: a value is reused
 # while every input array is equal to the one it was made from (numpy compares them; no
 # Python per face), so that a scene compiled again (another render, a moved camera, a
 # notebook cell run twice) builds nothing again, and a vertex moved in place builds again.
@@ -715,6 +716,12 @@ def _cached(scene, name, inputs: tuple, make):
     value = make()
     store[name] = (tuple(np.array(a, copy=True) for a in inputs), value)
     return value, False
+
+
+def _joined(parts: list) -> np.ndarray:
+    """np.concatenate(parts), without a copy of the one part that is not empty."""
+    full = [p for p in parts if len(p)]
+    return full[0] if len(full) == 1 else np.concatenate(parts)
 
 
 def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None) -> FlatMesh:
@@ -753,10 +760,10 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
     for i, shape in mesh_faces:
         if isinstance(shape, Mesh):
             if loose:
-                face_parts.append(np.array(loose, dtype=np.int64).reshape(-1, 4))
+                face_parts.append(np.array(loose, dtype=np.int32).reshape(-1, 4))
                 loose = []
             first = first_vertex(shape, shape.normals is not None)
-            part = np.empty((shape.num_triangles, 4), dtype=np.int64)
+            part = np.empty((shape.num_triangles, 4), dtype=np.int32)
             part[:, :3] = shape.faces + first
             part[:, 3] = np.arange(i, i + shape.num_triangles)
             face_parts.append(part)
@@ -764,11 +771,11 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             first = first_vertex(shape.mesh, isinstance(shape, SmoothMeshTriangle))
             loose.append((shape.index0 + first, shape.index1 + first, shape.index2 + first, i))
     if loose:
-        face_parts.append(np.array(loose, dtype=np.int64).reshape(-1, 4))
-    faces = np.concatenate(face_parts) if face_parts else np.zeros((0, 4), dtype=np.int64)
+        face_parts.append(np.array(loose, dtype=np.int32).reshape(-1, 4))
+    faces = np.concatenate(face_parts) if face_parts else np.zeros((0, 4), dtype=np.int32)
     object_faces = []
     for mesh in instanced:
-        part = np.empty((mesh.num_triangles, 4), dtype=np.int64)
+        part = np.empty((mesh.num_triangles, 4), dtype=np.int32)
         part[:, :3] = mesh.faces + first_vertex(mesh, mesh.normals is not None)
         part[:, 3] = np.arange(mesh.num_triangles)
         object_faces.append(part)
@@ -790,7 +797,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
         pad = PAD if dtype == np.float64 else 2.0 ** -20
         reach = radius + pad * (np.abs(center).max(axis=1) + radius)
         faces = np.concatenate([faces, np.stack([np.full(len(table), SPHERE_ROW), np.arange(len(table)),
-                                                 np.zeros(len(table)), index], axis=1).astype(np.int64)])
+                                                 np.zeros(len(table)), index], axis=1).astype(np.int32)])
         bound_lo, bound_hi = center - reach[:, None], center + reach[:, None]
     else:
         bound_lo = bound_hi = np.zeros((0, 3))
@@ -805,7 +812,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
                                 + (box_hi - box_lo).max(axis=1))
             box_lo, box_hi = box_lo - pad[:, None], box_hi + pad[:, None]
         faces = np.concatenate([faces, np.stack([np.full(len(index), INSTANCE_ROW), np.arange(len(index)),
-                                                 np.zeros(len(index)), index], axis=1).astype(np.int64)])
+                                                 np.zeros(len(index)), index], axis=1).astype(np.int32)])
         bound_lo, bound_hi = np.concatenate([bound_lo, box_lo]), np.concatenate([bound_hi, box_hi])
     # What the BVH and the arrays depend on: the vertices, the rows, the spheres' boxes and
     # the normals and uvs (_cached compares them with those of the last compile).
@@ -814,7 +821,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
         trees, rows, roots = [], [], []
         if len(faces):
             lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
-            bvh = flat_bvh.build(np.concatenate([lo, bound_lo]), np.concatenate([hi, bound_hi]))
+            bvh = flat_bvh.build(_joined([lo, bound_lo]), _joined([hi, bound_hi]))
             trees.append(bvh)
             rows.append(faces[bvh.order])
         for part in object_faces:
@@ -822,9 +829,10 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             roots.append(sum(t.num_nodes for t in trees))
             trees.append(flat_bvh.offset(bvh, roots[-1], sum(len(r) for r in rows)))
             rows.append(part[bvh.order])
-        bvh = flat_bvh.FlatBVH(np.concatenate([t.nodes for t in trees]),
-                               np.concatenate([t.order for t in trees]), sum(t.build_seconds for t in trees))
-        return FlatMesh(vertices=vertices.astype(dtype), faces=np.concatenate(rows).astype(np.int32),
+        bvh = trees[0] if len(trees) == 1 else flat_bvh.FlatBVH(
+            np.concatenate([t.nodes for t in trees]), np.concatenate([t.order for t in trees]),
+            sum(t.build_seconds for t in trees))
+        return FlatMesh(vertices=vertices.astype(dtype), faces=_joined(rows),
                         normals=None if normals is None else normals.astype(dtype),
                         uvs=None if uvs is None else uvs.astype(dtype),
                         bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None,

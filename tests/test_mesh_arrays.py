@@ -89,7 +89,8 @@ def test_a_scene_holding_a_20k_face_mesh_compiles_and_renders_without_a_mesh_tri
     scene.shapes.append(mesh)
     scene.lights.append(PointLight(Float3(2, 2, 3), Float3(10.0)))
     flat = compile_scene(scene)
-    assert len(flat.mesh.faces) == 20480 and len(flat.materials) == 20480
+    assert len(flat.mesh.faces) == 20480 and len(flat.material_of) == 20480
+    assert len(flat.materials) == 1                                  # one material: one row
     assert sorted(flat.mesh.faces[:, 3]) == list(range(20480))      # each face's own index
     image = rtfgu.render(scene, 16, 16, backend="numba")
     assert image[8, 8].max() > 0.1 and image[0, 0].max() == 0.0      # the sphere in the middle
@@ -105,6 +106,7 @@ def test_a_mesh_packs_to_the_arrays_of_its_triangles(precision):
         assert np.array_equal(getattr(a.mesh, name), getattr(b.mesh, name)), name
     assert np.array_equal(a.mesh.bvh.nodes.view(np.int32), b.mesh.bvh.nodes.view(np.int32))
     assert np.array_equal(a.materials, b.materials) and np.array_equal(a.shaders, b.shaders)
+    assert np.array_equal(a.material_of, b.material_of)
     assert len(np.unique(a.materials, axis=0)) > 100                 # the faces' colours are there
     for kind in a.shapes:
         assert np.array_equal(a.table(kind), b.table(kind)) and np.array_equal(a.index(kind), b.index(kind))
@@ -149,7 +151,7 @@ def test_a_second_render_a_camera_move_and_another_sample_count_reuse_the_bvh(bu
     again, once_more = compile_scene(scene), compile_scene(scene)
     assert again.mesh.build_seconds == 0.0 and builds.calls == 1
     assert once_more.mesh.faces is again.mesh.faces and once_more.mesh.vertices is again.mesh.vertices
-    assert once_more.materials is again.materials                     # nothing per face made again
+    assert len(once_more.materials) == 1 and len(once_more.material_of) == mesh.num_triangles   # a row per material
     scene.camera = PinholeCamera(Float3(0.5, 0, 3.0), Float3(0.0), Float3(0, 1, 0))
     moved = rtfgu.render(scene, 16, 16, backend="numba", spp=4)
     assert builds.calls == 1 and not np.array_equal(moved, first)

@@ -30,11 +30,7 @@ import numpy as np
 
 from .bvh import BINS, C_INTERSECT, LEAF_SIZE
 
-try:
-    from numba import njit
-except ImportError:   # a release without the numba path: the same build, in Python
-    def njit(*args, **kwargs):
-        return args[0] if args and callable(args[0]) else (lambda f: f)
+from ..jit import njit
 
 NODE_WIDTH = 8
 # Deepest stack a traversal needs: the build splits until LEAF_SIZE, and a tree of 2^31
@@ -233,15 +229,20 @@ def _depth(links):
     return deepest
 
 
-def _round_out(box: np.ndarray) -> np.ndarray:
-    """float64 (N, 6) [lo, hi] as float32, lo rounded down and hi up."""
-    out = box.astype(np.float32)
-    lo, hi = out[:, :3], out[:, 3:]
-    down = lo.astype(np.float64) > box[:, :3]
-    lo[down] = np.nextafter(lo[down], np.float32(-np.inf))
-    up = hi.astype(np.float64) < box[:, 3:]
-    hi[up] = np.nextafter(hi[up], np.float32(np.inf))
-    return out
+@njit(cache=True)
+def _round_out(box, nodes):
+    """Write the float64 boxes ``box`` (N, 6) [lo, hi] into the float32 ``nodes`` (N, 8)
+    columns 0-2 and 4-6, each lo rounded down and each hi up to a float32."""
+    for i in range(box.shape[0]):
+        for axis in range(3):
+            lo = np.float32(box[i, axis])
+            if np.float64(lo) > box[i, axis]:
+                lo = np.nextafter(lo, np.float32(-np.inf))
+            hi = np.float32(box[i, 3 + axis])
+            if np.float64(hi) < box[i, 3 + axis]:
+                hi = np.nextafter(hi, np.float32(np.inf))
+            nodes[i, axis] = lo
+            nodes[i, 4 + axis] = hi
 
 
 def build(lo, hi) -> FlatBVH:
@@ -261,9 +262,7 @@ def build(lo, hi) -> FlatBVH:
     if n < 0:
         raise ValueError("BVH: the tree would be deeper than %d levels (degenerate boxes)" % MAX_DEPTH)
     nodes = np.zeros((n, NODE_WIDTH), dtype=np.float32)
-    rounded = _round_out(box[:n])
-    nodes[:, 0:3] = rounded[:, :3]
-    nodes[:, 4:7] = rounded[:, 3:]
+    _round_out(box[:n], nodes)
     ints = nodes.view(np.int32)
     ints[:, 3] = links[:n, 0]
     ints[:, 7] = links[:n, 1]
@@ -281,6 +280,19 @@ def offset(bvh: FlatBVH, first_node: int, first_primitive: int) -> FlatBVH:
 
 
 def triangle_bounds(vertices: np.ndarray, faces: np.ndarray):
-    """lo, hi (F, 3) of the triangles faces (F, >=3) of vertices (V, 3)."""
-    v = vertices[faces[:, :3]]
-    return v.min(axis=1), v.max(axis=1)
+    """lo, hi (F, 3) float64 of the triangles faces (F, >=3) of vertices (V, 3)."""
+    faces = np.ascontiguousarray(faces)
+    lo = np.empty((len(faces), 3))
+    hi = np.empty((len(faces), 3))
+    _triangle_bounds(np.ascontiguousarray(vertices, dtype=np.float64), faces, lo, hi)
+    return lo, hi
+
+
+@njit(cache=True)
+def _triangle_bounds(vertices, faces, lo, hi):
+    for f in range(faces.shape[0]):
+        a, b, c = faces[f, 0], faces[f, 1], faces[f, 2]
+        for axis in range(3):
+            x, y, z = vertices[a, axis], vertices[b, axis], vertices[c, axis]
+            lo[f, axis] = min(x, min(y, z))
+            hi[f, axis] = max(x, max(y, z))

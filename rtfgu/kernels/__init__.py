@@ -91,7 +91,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             terms = np.zeros((len(table), 4), dtype=flat.dtype)
             sphere_eye_terms(camera[PINHOLE_EYE:PINHOLE_EYE + 3].copy(), table, terms)
             eye = (terms, cone_table(camera64, table))
-    continues = any(SHADER_BY_ID[int(s)].continues for s in flat.shaders)
+    continues = any(SHADER_BY_ID[s].continues for s in flat.shaders.tolist())
     tiles = ((width + TILE - 1) // TILE) * ((height + TILE - 1) // TILE)
     stacks = np.empty((tiles, MAX_DEPTH, STACK_FIELDS), dtype=flat.dtype) if "two_rays" in flat.features else None
     cast, path = (MAX_DEPTH if continues else None, flat.area_lighting, stacks), None

@@ -11,8 +11,10 @@ from ..registry import TEXTURES
 from .dispatch_support import as_python
 from .float3 import lit, load3
 
-# The environment's place in the kernels' ``scene`` tuple (rtfgu.kernels.render.scene_tuple).
+# The places of the environment and of each shape's material row in the kernels' ``scene``
+# tuple (rtfgu.kernels.render.scene_tuple).
 ENVIRONMENT = 4 + len(TEXTURES)
+MATERIAL_OF = ENVIRONMENT + 1
 
 
 @njit(cache=True, error_model="numpy")

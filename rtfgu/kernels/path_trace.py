@@ -18,7 +18,7 @@ from ..registry import LIGHTS
 from ..sampling.random import BOUNCE_U, CHOICE, LOBE, ROULETTE, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
 from ..tracers.path_trace import ROULETTE_DEPTH
-from .environment import ENVIRONMENT, background_radiance
+from .environment import ENVIRONMENT, MATERIAL_OF, background_radiance
 from .dispatch import direct_path, intersect_scene, shape_normal, surface_color
 from .float3 import add, div, dot, lit, load3, mul, neg, scale
 from .glossy import about, lobe_direction
@@ -103,8 +103,9 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             result = add(result, mul(throughput, background_radiance(scene[ENVIRONMENT], background, direction)))
             break
         position = add(origin, scale(direction, t))
-        shader = shaders[idx]
-        mat = materials[idx]
+        m = scene[MATERIAL_OF][idx]
+        shader = shaders[m]
+        mat = materials[m]
         normal = shape_normal(shapes, kind, row, position, direction)
         facing = dot(normal, direction)
         if sees_emission and facing < zero:
@@ -136,7 +137,7 @@ def trace_path(ray, shapes, lights, scene, terms, candidates, n_candidates, sett
             q_d, q_s = q_d / (q_d + q_s), q_s / (q_d + q_s)
             xi = random_float(pixel, sample, first + LOBE, seed, zero)
             # the chosen BRDF's own sampler's point, or the render's pair (BRDF.sample_point)
-            u, v = sampler_point(sampler_sets(lights[OWN_SAMPLES], lights[OWN_SHUFFLED], lights[SOBOL]), materials, idx,
+            u, v = sampler_point(sampler_sets(lights[OWN_SAMPLES], lights[OWN_SHUFFLED], lights[SOBOL]), materials, m,
                                  MAT_DIFFUSE_SAMPLER if xi < q_d else MAT_SPECULAR_SAMPLER, pixel, sample,
                                  first + BOUNCE_U, seed, zero)
             if xi < q_d:

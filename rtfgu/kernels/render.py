@@ -9,8 +9,10 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
     shapes    table, index per registered shape kind; lights: a table per light kind; None
               for a kind the scene lacks (rtfgu.kernels.dispatch)
     scene     (materials, shaders, background, texels, a table per texture kind,
-              environment): the texture entries None in a scene without textures, the
-              environment None without an EnvironmentLight (scene_tuple)
+              environment, material_of): the distinct materials' rows and shader ids, each
+              shape's row among them last (rtfgu.layout.FlatScene); the texture entries None
+              in a scene without textures, the environment None without an EnvironmentLight
+              (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
     tracer    (cast, path), exactly one of them None: ``cast`` the ray-cast loop's
@@ -47,7 +49,7 @@ from .culling import tile_candidates
 from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, slots, surface_color
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, mul, scale
-from .environment import ENVIRONMENT, background_radiance
+from .environment import ENVIRONMENT, MATERIAL_OF, background_radiance
 from .path_trace import trace_path
 from .wide_bvh import WIDE
 from .sampling import concentric_map, pixel_sample
@@ -122,14 +124,14 @@ def instance_table(flat, kind: str) -> np.ndarray:
 
 def scene_tuple(flat) -> tuple:
     """The kernels' ``scene``: materials, shaders, background, then the texels and a table
-    per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture, and
-    the environment's image (ENVIRONMENT) or None."""
+    per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture, the
+    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF)."""
     if "textures" not in flat.features:
         textures = (None,) * (1 + len(TEXTURES))
     else:
         textures = (flat.texels,) + tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None
                                           for k in TEXTURES)
-    return (flat.materials, flat.shaders, flat.background) + textures + (flat.environment,)
+    return (flat.materials, flat.shaders, flat.background) + textures + (flat.environment, flat.material_of)
 
 
 @njit(cache=True, error_model="numpy")
@@ -294,12 +296,13 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
                 break
             # HitInfo: position = ray(t) = o + d t, the normal of the shape hit, its material.
             position = add(origin, scale(direction, t))
-            shader = shaders[idx]
+            m = scene[MATERIAL_OF][idx]
+            shader = shaders[m]
             if shader == BASE_COLOR:
                 normal = position  # base_color reads no normal: a flat-colour scene skips normal_at
             else:
                 normal = shape_normal(shapes, kind, row, position, direction)
-            mat = materials[idx]
+            mat = materials[m]
             surface = surface_color(scene, shapes, mat, kind, row, position)
             color, has_hit, further, shadow_rays = shade(
                 shader, mat, surface, direction, (position, normal), lights, shapes, shadows,

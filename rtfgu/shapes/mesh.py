@@ -43,6 +43,7 @@ except ImportError:
     intersect_triangle_watertight = None
 
 from ..float3 import Float3, normalize
+from ..jit import njit
 from ..materials.material import Material
 from ..ray import Ray
 from .shape import Shape
@@ -332,13 +333,22 @@ def _per_face_materials(material, m: int) -> tuple:
 
 def zero_area_faces(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """The numbers of the faces whose n = (v1 - v0) x (v2 - v0) has n . n == 0, the test
-    ``Triangle`` refuses a triangle by (the same products, so both agree)."""
-    v0, v1, v2 = vertices[faces[:, 0]], vertices[faces[:, 1]], vertices[faces[:, 2]]
-    e0, e1 = v1 - v0, v2 - v0
-    n = np.stack([e0[:, 1] * e1[:, 2] - e0[:, 2] * e1[:, 1],
-                  e0[:, 2] * e1[:, 0] - e0[:, 0] * e1[:, 2],
-                  e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]], axis=1)
-    return np.flatnonzero(n[:, 0] * n[:, 0] + n[:, 1] * n[:, 1] + n[:, 2] * n[:, 2] == 0.0)
+    ``Triangle`` refuses a triangle by (the same products in the same order, so both agree)."""
+    zero = np.zeros(len(faces), dtype=np.bool_)
+    _zero_area(np.ascontiguousarray(vertices, dtype=np.float64), np.ascontiguousarray(faces), zero)
+    return np.flatnonzero(zero)
+
+
+@njit(cache=True)
+def _zero_area(vertices, faces, zero):
+    for f in range(faces.shape[0]):
+        a, b, c = faces[f, 0], faces[f, 1], faces[f, 2]
+        e0x, e0y, e0z = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
+        e1x, e1y, e1z = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
+        nx = e0y * e1z - e0z * e1y
+        ny = e0z * e1x - e0x * e1z
+        nz = e0x * e1y - e0y * e1x
+        zero[f] = nx * nx + ny * ny + nz * nz == 0.0
 
 
 def _refuse_zero_area(vertices: np.ndarray, faces: np.ndarray) -> None:

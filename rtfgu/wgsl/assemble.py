@@ -229,7 +229,7 @@ def _packed_index(values: np.ndarray) -> np.ndarray:
 
 def binding_data(flat, name: str) -> np.ndarray:
     """The FlatScene array behind the binding ``name``."""
-    if name in ("camera", "materials", "shaders"):
+    if name in ("camera", "materials", "shaders", "material_of"):
         return getattr(flat, name)
     if name in ("samples", "shuffled"):
         return getattr(flat.sampler, name)
@@ -327,7 +327,7 @@ def scene_features(flat) -> frozenset:
         f.add("continues")
     if flat.sampler is not None:
         f.add("sampler" if flat.sampler.kind == "sets" else flat.sampler.kind)
-    if len(flat.shaders):
+    if len(flat.material_of):
         f.add("shapes")
     if not flat.show_ray_direction:
         f.add("trace")
@@ -432,10 +432,12 @@ def _bindings(flat, features, scene_buffer: str) -> list:
             table = flat.instanced[kind.name]
             if len(table):
                 wanted.append(("instanced_" + kind.table, "array<%s, %d>" % (kind.record, len(table)), table, False))
-        if len(flat.shaders):
-            wanted.append(("materials", "array<Material, NUM_SHAPES>", flat.materials, False))
+        if len(flat.material_of):
+            wanted.append(("materials", "array<Material, NUM_MATERIALS>", flat.materials, False))
             wanted.append(("shaders", "array<vec4i, %d>" % (len(_packed_index(flat.shaders)) // 4),
                            flat.shaders, True))
+            wanted.append(("material_of", "array<vec4i, %d>" % (len(_packed_index(flat.material_of)) // 4),
+                           flat.material_of, True))
         if "textures" in features:
             for kind in TEXTURES:
                 table = flat.textures[kind.name]
@@ -474,7 +476,7 @@ def _bindings(flat, features, scene_buffer: str) -> list:
 
 def _header(flat, features, bindings) -> str:
     parts = ["// The scene layout and ids, generated from rtfgu/layout.py.", structs.constants_wgsl()]
-    counts = [("NUM_SHAPES", len(flat.shaders))]
+    counts = [("NUM_MATERIALS", len(flat.materials))]
     if flat.sampler is not None:
         counts += [("NUM_SAMPLES", flat.sampler.num_samples), ("NUM_SETS", flat.sampler.num_sets)]
     counts += [("NUM_" + kind.table.upper(), flat.count(kind.name)) for kind in SHAPES]

@@ -10,9 +10,16 @@
 // Index arrays (int32) arrive packed four to a vec4i (a uniform array needs a 16-byte
 // stride): entry k is [k / 4][k % 4].
 // #if shapes
+// Shape k's row in the distinct materials and their shaders (rtfgu.layout.FlatScene).
+fn material_row(k: u32) -> u32
+{
+    return u32(material_of[k / 4u][k % 4u]);
+}
+
 fn set_material(hit: ptr<function, HitInfo>, k: u32, kind: i32, row: u32)
 {
-    let m = materials[k];
+    let j = material_row(k);
+    let m = materials[j];
     (*hit).color = m.color;
     // #if textures
     // A texture's colour at the hit replaces the shape's (rtfgu.scene.Scene.intersect).
@@ -29,7 +36,7 @@ fn set_material(hit: ptr<function, HitInfo>, k: u32, kind: i32, row: u32)
         // #end
     }
     // #endif
-    (*hit).shader = shaders[k / 4u][k % 4u];
+    (*hit).shader = shaders[j / 4u][j % 4u];
     (*hit).specular = m.specular;
     (*hit).shininess = m.shininess;
     (*hit).ior = m.ior;

@@ -162,7 +162,7 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
             let xi = random_float(pixel, s, first + LOBE, uniforms.seed);
             // The chosen BRDF's own sampler's point, or the stream's (BRDF.sample_point).
             // #if own_sampler
-            let m = materials[u32(hit_shape)];
+            let m = materials[material_row(u32(hit_shape))];
             let uv = sampler_point(pixel, s, first + BOUNCE_U, select(m.specular_sampler, m.diffuse_sampler, xi < q_d));
             // #else
             let uv = sampler_point(pixel, s, first + BOUNCE_U, vec3f(0.0));
@@ -215,7 +215,7 @@ fn trace_path(eye_ray: Ray, pixel: u32, s: u32) -> vec3f
         // #if dielectric
         if (hit.shader == DIELECTRIC) {
             if (facing > 0.0) {     // met from inside: Bouguer's law over the way here
-                throughput *= exp(-materials[u32(hit_shape)].absorption * hit.dist);
+                throughput *= exp(-materials[material_row(u32(hit_shape))].absorption * hit.dist);
             }
             let xi = random_float(pixel, s, first + CHOICE, uniforms.seed);
             r = Ray(hit.position, scatter(r.direction, hit.normal, hit.ior, xi), SPAWN_EPSILON, FAR);
