@@ -69,6 +69,7 @@ would make the measured RMSE stop falling and exceed the prediction.
 from __future__ import annotations
 
 import argparse
+import copy
 import glob
 import json
 import math
@@ -336,14 +337,21 @@ class Peer:
         return not self.failed and not self.stopped
 
 
-def rtfgu_peer(backend: str, precision: str, scene) -> Peer:
-    from rtfgu import render
+def rtfgu_peer(backend: str, precision: str, scene, sobol: bool = False) -> Peer:
+    """rtfgu's render: Jittered(spp) at the pixels and the random stream elsewhere, or with
+    ``sobol`` the scene's sampler Sobol(spp), whose stream draws every 2D sample."""
+    from rtfgu import Sobol, render
+
+    if sobol:
+        scene = copy.copy(scene)
+        scene.sampler = Sobol(1)
 
     def run(spp, seed):
         start = time.perf_counter()
         image = render(scene, SIZE, SIZE, backend=backend, precision=precision, spp=spp, seed=seed)
         return image, time.perf_counter() - start
-    return Peer("rtfgu " + backend, precision, "PathTrace, Jittered(spp) pixel sampler", run)
+    method = "PathTrace, Sobol(spp) stream" if sobol else "PathTrace, Jittered(spp) pixel sampler"
+    return Peer("rtfgu " + backend, precision, method, run)
 
 
 def worker_peer(worker: Worker, sampler: str, why: str = "") -> Peer:
@@ -529,8 +537,8 @@ def verdicts(peers, results) -> list:
             elif llvm:
                 verdict = ": the target (no later than Mitsuba 3 LLVM) is %s" % (
                     "met" if rn.seconds <= rm.seconds else "NOT met")
-            out.append("- rtfgu numba %s / Mitsuba 3 %s: %s / %s = %.2f%s%s." % (
-                n.precision, m.method, fmt_seconds(rn.seconds), fmt_seconds(rm.seconds),
+            out.append("- rtfgu numba %s (%s) / Mitsuba 3 %s: %s / %s = %.2f%s%s." % (
+                n.precision, n.method, m.method, fmt_seconds(rn.seconds), fmt_seconds(rm.seconds),
                 rn.seconds / rm.seconds, est, verdict))
     if not any(p.method.startswith("llvm") for p in mitsuba):
         out.append("- Mitsuba 3's LLVM variant did not run here: no LLVM verdict.")
@@ -604,7 +612,8 @@ def path_tracing_section(plot_path=None, quick=False, with_wgpu=True, log=print,
         % (ref_rms, ref_rms / TARGET, TARGET ** 2 / max(TARGET ** 2 - ref_mse, 1e-300)))
 
     scene = cornell_scene()
-    peers = [rtfgu_peer("numba", "float32", scene), rtfgu_peer("numba", "float64", scene)]
+    peers = [rtfgu_peer("numba", "float32", scene), rtfgu_peer("numba", "float64", scene),
+             rtfgu_peer("numba", "float32", scene, sobol=True)]
     adapter, no_adapter = (None, "--no-wgpu") if not with_wgpu else gpu_adapter()
     if adapter is not None:
         peers.append(rtfgu_peer("wgpu", "float32", scene))

@@ -54,6 +54,13 @@ def pixel_sampler(scene, spp):
     return sampler_of(Jittered if math.isqrt(spp) ** 2 == spp else NRooks, spp)
 
 
+def check_finite_image(image: np.ndarray, backend: str) -> None:
+    """A ValueError if ``image`` (a render's, before gamma) holds a value that is not finite:
+    no path writes NaN or infinite pixels silently."""
+    if not np.all(np.isfinite(image)):
+        raise ValueError("the %s backend produced non-finite pixels" % backend)
+
+
 def check_size(width, height) -> None:
     for name, value in (("width", width), ("height", height)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1:

@@ -13,7 +13,7 @@ import numpy as np
 from .float3 import Float3
 from .ray import Ray
 from .options import (BACKENDS, DEFAULT_BACKEND, DEFAULT_FORMULAS, FORMULAS, PRECISIONS, check_options,  # noqa: F401
-                      check_size, lens_sample, pixel_sampler)
+                      check_finite_image, check_size, lens_sample, pixel_sampler)
 from .sampling import concentric_map
 from .sampling.random import check_seed
 
@@ -110,11 +110,10 @@ def render_passes(scene, width: int, height: int, backend: str = "reference",
         if accumulate is None:
             sums = render_reference(scene, width, height, rows, sampler, seed, samples, sums)
             image = sums / samples[1]
+            check_finite_image(image, backend)
         else:
-            image = accumulate(samples, rows)
-        if not np.all(np.isfinite(image)):
-            raise ValueError("the %s backend produced non-finite pixels" % backend)
-        yield samples[1], image.astype(np.float64, copy=False)
+            image = accumulate(samples, rows)   # float64, refused where not finite
+        yield samples[1], image
 
 
 def render(scene, width: int, height: int, backend: str = "reference",

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import rtfgu
-from rtfgu import (AreaLight, Box, Float3, Material, OpenCylinder, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
+from rtfgu import (AreaLight, Box, Float3, Material, Matte, OpenCylinder, OrthographicCamera, PinholeCamera, Plane, PointLight, Ray,
                    Rectangle, Scene, Sphere, Torus, Triangle)
 from rtfgu.image import to_8bit, write_png
 from rtfgu.scenes import get_scene
@@ -19,6 +19,7 @@ from rtfgu.shapes.flat_rimmed_bowl import FlatRimmedBowl
 from rtfgu.shapes.open_part_cylinder import OpenPartCylinder
 from rtfgu.shapes.solid_cylinder import SolidCylinder
 from rtfgu.shapes.thick_ring import ThickRing
+from wgsl_support import wgpu_device  # noqa: F401  (fixture)
 
 NAN = math.nan
 INF = math.inf
@@ -391,3 +392,22 @@ def test_render_non_finite_background():
     scene.background = Float3(0, NAN, 0)
     with raises_naming("background"):
         rtfgu.render(scene, 4, 4)
+
+
+def _overflowing_scene():
+    """A point light of 3e38 a tenth of a unit above a plane: its 1/r^2 falloff is 3e40 at
+    the plane, beyond float32 (not float64)."""
+    scene = rtfgu.Scene(PinholeCamera(Float3(0, 2, 0), Float3(0, 0, 0), Float3(0, 0, -1)))
+    scene.shapes.append(Plane(Float3(0, 0, 0), Float3(0, 1, 0), Float3(0.8), Matte()))
+    scene.lights.append(PointLight(Float3(0, 0.1, 0), Float3(3e38)))
+    return scene
+
+
+@pytest.mark.parametrize("backend", ["numba", "wgpu"])
+def test_a_render_whose_float32_radiance_overflows_is_refused_not_written(backend, request):
+    if backend == "wgpu":
+        request.getfixturevalue("wgpu_device")
+    with pytest.raises(ValueError, match="the %s backend produced non-finite pixels" % backend):
+        rtfgu.render(_overflowing_scene(), 8, 8, backend=backend, precision="float32")
+    image = rtfgu.render(_overflowing_scene(), 8, 8, backend="numba", precision="float64")
+    assert image.dtype == np.float64 and np.isfinite(image).all() and image.max() > 1e38

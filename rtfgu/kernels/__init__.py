@@ -18,12 +18,12 @@ import numpy as np
 from . import dispatch  # noqa: F401  (first: it points numba's cache at this kernel version)
 from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_sampler, compile_scene
 from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
-from ..options import DEFAULT_FORMULAS, pixel_sampler
+from ..options import DEFAULT_FORMULAS, check_finite_image, pixel_sampler
 from ..tracers.whitted import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, render_kernel, scene_tuple, shape_arrays
+from .render import PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, render_kernel, scene_tuple, shape_arrays
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -124,6 +124,7 @@ class NumbaAccumulator:
         self.counts = np.zeros(3, dtype=np.int64)
 
     def __call__(self, samples, progress=None) -> np.ndarray:
+        """The float64 image so far, refused (check_finite_image) where not finite."""
         width, height = self.size
         args, tiles = kernel_arguments(self.flat, width, height, self.formula, self.sampler,
                                        self.seed, samples)
@@ -132,7 +133,10 @@ class NumbaAccumulator:
         self.counts += counts.sum(axis=0)
         if progress is not None:
             progress(height, height)
-        return self.sums / self.flat.dtype(samples[1])
+        image = np.empty(self.sums.shape)
+        if mean_image(self.sums, self.flat.dtype(samples[1]), image):
+            check_finite_image(image, "numba")
+        return image
 
     @property
     def ray_counts(self) -> RayCounts:
@@ -149,7 +153,6 @@ def render_numba(scene, width: int, height: int, precision: str = "float64",
     sampler = pixel_sampler(scene, spp)
     accumulate = NumbaAccumulator(scene, width, height, precision, formula, sampler, seed)
     image = accumulate((0, 1 if sampler is None else sampler.num_samples))
-    image = image.astype(np.float64, copy=False)  # float64 already: no second 1.5 MB pass
     if with_counts:
         return image, accumulate.ray_counts
     return image

@@ -417,3 +417,19 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
+
+
+@njit(parallel=True, cache=True)
+def mean_image(sums, n, out) -> int:
+    """Write the image of the samples so far, ``out`` (float64) = ``sums`` / ``n``, the
+    division in the sums' own precision (``n`` of their type), all cores, in one pass over
+    the pixels; returns how many of its values are not finite (rtfgu.renderer refuses them)."""
+    bad = 0
+    for y in prange(sums.shape[0]):
+        for x in range(sums.shape[1]):
+            for c in range(sums.shape[2]):
+                value = sums[y, x, c] / n
+                out[y, x, c] = value
+                if not math.isfinite(value):
+                    bad += 1
+    return bad

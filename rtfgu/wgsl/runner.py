@@ -19,7 +19,7 @@ import time
 import numpy as np
 
 from ..layout import compile_sampler, compile_scene
-from ..options import pixel_sampler
+from ..options import check_finite_image, pixel_sampler
 from . import structs
 from .assemble import GENERATED, assemble, check_formula
 from .device import get_device
@@ -236,9 +236,12 @@ class WGPUAccumulator:
         self.tile = tile
 
     def __call__(self, samples, progress=None) -> np.ndarray:
+        """The float64 image so far, refused (check_finite_image) where not finite."""
         width, height = self.size
         sums = self.compiled.render(width, height, self.tile, progress, self.seed, samples)
-        return sums / np.float32(samples[1])
+        image = (sums / np.float32(samples[1])).astype(np.float64)
+        check_finite_image(image, "wgpu")
+        return image
 
 
 def render_wgpu(scene, width: int, height: int, progress=None,
@@ -249,4 +252,4 @@ def render_wgpu(scene, width: int, height: int, progress=None,
     sampler = pixel_sampler(scene, spp)
     accumulate = WGPUAccumulator(scene, width, height, formula, sampler, seed, scene_buffer, tile)
     samples = (0, 1 if sampler is None else sampler.num_samples)
-    return accumulate(samples, progress).astype(np.float64)
+    return accumulate(samples, progress)
