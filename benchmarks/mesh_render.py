@@ -1,29 +1,37 @@
 """What a mesh costs through ``rtfgu.render``: the table "A mesh through rtfgu.render" of
 docs/meshes.md.
 
-    python benchmarks/mesh_render.py SUBDIVISIONS [--triangles] [--size N] [--precision P] [--save IMAGE.npy]
+    python benchmarks/mesh_render.py SUBDIVISIONS [--bunny] [--triangles] [--size N] [--precision P]
+                                              [--cold] [--save IMAGE.npy]
 
 One displaced icosphere (benchmarks/meshes.py's displaced_icosphere; 6 subdivisions: 81 920
-triangles, 8: 1 310 720) in a scene of one Matte mesh and one point light, seen by a pinhole
-camera, rendered with the numba backend in float64 (or ``--precision float32``) at N x N (128),
-one sample per pixel.
+triangles, 8: 1 310 720), or with ``--bunny`` the Stanford bunny (SUBDIVISIONS unused), in a
+scene of one Matte mesh and one point light, seen by a pinhole camera, rendered with the
+numba backend in float64 (or ``--precision float32``) at N x N (128), one sample per pixel.
 The scene holds the Mesh itself, or with ``--triangles`` its faces (``mesh.triangles()``,
 the only way before a scene could hold a Mesh). Printed, in seconds, as one JSON line:
 
     construct   Mesh(...) and the scene (with --triangles: the MeshTriangle per face);
     first       the first rtfgu.render: compile_scene (the packing and the BVH build) and
                 the trace;
-    second      rtfgu.render of the same scene again;
-    kernel      one call of a NumbaAccumulator made beforehand: the trace alone.
+    second      rtfgu.render of the same scene again (the median of ``--runs``, 1);
+    kernel      one call of a NumbaAccumulator made beforehand: the trace alone (the median
+                of ``--runs``).
 
-numba compiles the kernels before anything is timed (a render of a 80-face icosphere).
-``--save`` writes the first image, so that two runs (another commit, --triangles) can be
-compared pixel by pixel. One run, one timing each: a measurement to read, not a test.
+numba compiles the kernels before anything is timed (a render of a 80-face icosphere); with
+``--cold`` it does not, and ``first`` includes loading the compiled kernels from numba's
+cache on disk (what a new Python session pays once the kernels were ever compiled).
+In float32 the image is compared with the float64 render of the same scene: ``differing``,
+the share of pixels with a channel more than 1e-6 apart, and ``largest``, the largest
+difference. ``--save`` writes the first image, so that two runs (another commit,
+--triangles) can be compared pixel by pixel. One run, one timing each: a measurement to
+read, not a test (benchmarks/meshes.py runs it for docs/bench.md).
 """
 from __future__ import annotations
 
 import argparse
 import json
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -38,7 +46,7 @@ import rtfgu  # noqa: E402
 from rtfgu.float3 import Float3  # noqa: E402
 from rtfgu.kernels import NumbaAccumulator  # noqa: E402
 
-from meshes import displaced_icosphere  # noqa: E402
+from meshes import bunny, displaced_icosphere  # noqa: E402
 
 
 def mesh_scene(mesh: rtfgu.Mesh, as_triangles: bool) -> rtfgu.Scene:
@@ -57,34 +65,48 @@ def timed(function, *args, **kwargs):
     return result, time.perf_counter() - start
 
 
-def main() -> None:
+def main(argv=None) -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("subdivisions", type=int)
+    parser.add_argument("--bunny", action="store_true", help="the bunny, not an icosphere")
     parser.add_argument("--triangles", action="store_true", help="hold mesh.triangles(), not the Mesh")
     parser.add_argument("--size", type=int, default=128)
     parser.add_argument("--save", help="write the first image to this .npy file")
     parser.add_argument("--precision", default="float64", choices=("float64", "float32"))
-    args = parser.parse_args()
+    parser.add_argument("--cold", action="store_true", help="no warm-up render before the timing")
+    parser.add_argument("--runs", type=int, default=1, help="renders of the second and kernel timings")
+    args = parser.parse_args(argv)
     size = args.size
 
-    warm = displaced_icosphere(1)
-    rtfgu.render(mesh_scene(rtfgu.Mesh(warm.vertices, warm.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()),
-                            args.triangles), 16, 16, backend="numba", precision=args.precision)
+    if not args.cold:
+        warm = displaced_icosphere(1)
+        rtfgu.render(mesh_scene(rtfgu.Mesh(warm.vertices, warm.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()),
+                                args.triangles), 16, 16, backend="numba", precision=args.precision)
 
-    arrays = displaced_icosphere(args.subdivisions)
+    arrays = bunny() if args.bunny else displaced_icosphere(args.subdivisions)
     scene, construct = timed(lambda: mesh_scene(
         rtfgu.Mesh(arrays.vertices, arrays.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()), args.triangles))
     first_image, first = timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
-    second_image, second = timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
+    seconds = [timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
+               for _ in range(max(1, args.runs))]
+    second_image, second = seconds[0][0], statistics.median(s for _, s in seconds)
     accumulate = NumbaAccumulator(scene, size, size, args.precision)
-    kernel_image, kernel = timed(accumulate, (0, 1))
+    kernels = [timed(accumulate, (0, 1)) for _ in range(max(1, args.runs))]
+    kernel_image, kernel = kernels[0][0], statistics.median(s for _, s in kernels)
     if args.save:
         np.save(args.save, first_image)
-    print(json.dumps({"triangles": len(arrays.faces), "held": "triangles" if args.triangles else "Mesh",
-                      "precision": args.precision, "size": size,
-                      "construct": construct, "first": first, "second": second, "kernel": kernel,
-                      "same_images": bool(np.array_equal(first_image, second_image)
-                                          and np.array_equal(first_image, kernel_image))}))
+    result = {"mesh": arrays.name, "triangles": len(arrays.faces),
+              "held": "triangles" if args.triangles else "Mesh", "precision": args.precision,
+              "size": size, "cold": args.cold, "construct": construct, "first": first,
+              "second": second, "kernel": kernel,
+              "same_images": bool(np.array_equal(first_image, second_image)
+                                  and np.array_equal(first_image, kernel_image))}
+    if args.precision != "float64":
+        reference = rtfgu.render(scene, size, size, backend="numba", precision="float64")
+        difference = np.abs(first_image - reference)
+        result.update(differing=float(np.mean(np.any(difference > 1e-6, axis=2))),
+                      largest=float(difference.max()))
+    print(json.dumps(result))
 
 
 if __name__ == "__main__":

@@ -79,9 +79,11 @@ pixels whose sphere (or background) differs from the numba float64 render.
 from __future__ import annotations
 
 import argparse
+import json
 import math
 import os
 import statistics
+import subprocess
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -813,6 +815,7 @@ def camera_rays(camera_kind, camera, width, height, origins, directions):
 def bench_spheres(mitsuba, size, runs, log):
     """Rows (label, precision, threads, rays/s, pixels differing, what is timed, note) for
     the 64-sphere scene."""
+    from rtfgu.kernels import NumbaAccumulator
     from rtfgu.layout import CAMERA_WIDTH, MAT_COLOR, SPHERE_RADIUS, compile_scene
     from rtfgu.renderer import render
 
@@ -836,6 +839,13 @@ def bench_spheres(mitsuba, size, runs, log):
         rows.append(["rtfgu.render numba (slide)", precision, numba.get_num_threads(),
                      run_render, None, [], differ(run_render(None)),
                      "whole render: rays, intersection, image", ""])
+        accumulate = NumbaAccumulator(scene, size, size, precision)
+
+        def run_accumulate(_, accumulate=accumulate):
+            return accumulate((0, 1))
+        rows.append(["rtfgu numba kernel (slide)", precision, numba.get_num_threads(),
+                     run_accumulate, None, [], differ(run_accumulate(None)),
+                     "the render's kernel alone: one NumbaAccumulator call", ""])
         flat_p = compile_scene(scene, precision)
 
         def run_kernel(_, flat_p=flat_p):
@@ -888,6 +898,54 @@ def bench_spheres(mitsuba, size, runs, log):
     return [(label, precision, threads, size * size / statistics.median(times) if times else None,
              d, what, note)
             for label, precision, threads, _, _, times, d, what, note in rows]
+
+
+def bench_render(meshes, subdivisions, size, builds, runs, log) -> list:
+    """What each mesh costs through rtfgu.render (benchmarks/mesh_render.py, float32, at size
+    x size, each in a Python process of its own): once with numba's kernels compiled before
+    ("warm"), once loading them from numba's cache on disk ("cold": a new session). Each
+    row is mesh_render.py's JSON with Embree's build time of this run."""
+    embree = {b.mesh: b.seconds for b in builds if b.system == Embree.name and b.seconds}
+    rows = []
+    for mesh, which in ((meshes[0], [str(subdivisions)]), (meshes[1], ["0", "--bunny"])):
+        for cold in (False, True):
+            command = [sys.executable, str(HERE / "mesh_render.py"), *which, "--size", str(size),
+                       "--precision", "float32", "--runs", str(runs)] + (["--cold"] if cold else [])
+            try:
+                done = subprocess.run(command, capture_output=True, text=True, check=True)
+                row = json.loads(done.stdout.strip().splitlines()[-1])
+            except (subprocess.CalledProcessError, ValueError, IndexError) as error:
+                row = {"mesh": mesh.name, "triangles": len(mesh.faces), "cold": cold,
+                       "failed": (getattr(error, "stderr", "") or str(error)).strip().splitlines()[-1:]}
+            row["embree_build"] = embree.get(mesh.name)
+            rows.append(row)
+            log("  through rtfgu.render: %s" % row)
+    return rows
+
+
+def render_table(rows) -> list:
+    lines = ["| mesh | triangles | kernels | `Mesh(...)` | first render | `Mesh` + first render "
+             "| second render | kernel alone | second / kernel | first - kernel: layout, build "
+             "| Embree build | (first - kernel) / Embree build | pixels differing from float64 "
+             "| largest difference |",
+             "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        kernels = "from disk (cold)" if r["cold"] else "compiled before"
+        if r.get("failed"):
+            lines.append("| %s | %d | %s | not run: %s |||||||||||" % (
+                r["mesh"], r["triangles"], kernels, " ".join(r["failed"])))
+            continue
+        embree = r.get("embree_build")
+        setup = r["first"] - r["kernel"]
+        lines.append("| %s | %d | %s | %.3g s | %.3g s | %.3g s | %.3g s | %.3g s | %.2f | %.3g s | "
+                     "%s | %s | %s | %.2g |" % (
+                         r["mesh"], r["triangles"], kernels, r["construct"], r["first"],
+                         r["construct"] + r["first"], r["second"], r["kernel"],
+                         r["second"] / r["kernel"], setup,
+                         "%.3g s" % embree if embree else "-",
+                         "%.2f" % (setup / embree) if embree else "-",
+                         fmt_share(r["differing"]), r["largest"]))
+    return lines
 
 
 # ---- the section ------------------------------------------------------------------------
@@ -963,6 +1021,24 @@ def sphere_table(rows, size) -> list:
         lines.append("| %s | %s | %s | %s | %s | %s | %s |" % (
             label, precision, threads or "-", fmt_rate(rate), what, fmt_share(d), note))
     return lines
+
+
+def sphere_verdicts(rows) -> list:
+    """rtfgu.render against its own kernel (within 1.25x) and against Mitsuba 3 LLVM (at or
+    above), per precision."""
+    rate = {(label, precision): r for label, precision, _, r, _, _, _ in rows if r}
+    mitsuba = rate.get(("Mitsuba 3 ray_intersect_preliminary", "float32"))
+    out = []
+    for precision in ("float64", "float32"):
+        whole = rate.get(("rtfgu.render numba (slide)", precision))
+        kernel = rate.get(("rtfgu numba kernel (slide)", precision))
+        if whole and kernel:
+            out.append("- %s: rtfgu.render takes %.2fx its kernel's time (target: within 1.25x): %s."
+                       % (precision, kernel / whole, "met" if kernel / whole <= 1.25 else "NOT met"))
+        if whole and mitsuba and precision == "float32":
+            out.append("- float32: rtfgu.render's rays/s are %.2fx Mitsuba 3 LLVM's (target: at "
+                       "or above 1): %s." % (whole / mitsuba, "met" if whole >= mitsuba else "NOT met"))
+    return out
 
 
 def plot(measured, title, path):
@@ -1047,6 +1123,9 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
                                   Path_(name, "float32", 0, None), failed=why)
                          for name, why in missing.items()]
 
+    log("meshes: through rtfgu.render at %dx%d" % (sphere_size, sphere_size))
+    render_rows = bench_render(meshes, QUICK_SUBDIVISIONS if quick else ICOSPHERE_SUBDIVISIONS,
+                               sphere_size, builds, runs, log)
     log("meshes: the 64 spheres at %dx%d" % (sphere_size, sphere_size))
     sphere_rows = bench_spheres(mitsuba or "not run: %s" % missing.get(Mitsuba.name),
                                 sphere_size, runs, log)
@@ -1125,6 +1204,21 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
         "the vertices in that precision, over the triangles (WGSL: what is uploaded, the "
         "float32 arrays).",
         "",
+        "### Through rtfgu.render",
+        "",
+        "Each mesh in a scene as a user renders it (benchmarks/mesh_render.py: the Mesh, a "
+        "Matte, a point light, a pinhole camera; float32, %dx%d, 1 sample per pixel, numba on "
+        "%d threads), in a Python process of its own: `Mesh(...)` from the arrays, the first "
+        "`rtfgu.render` (the layout, the BVH build and the wide tree, the trace), the second "
+        "(median of %d; nothing is built again), and the kernel alone (one NumbaAccumulator "
+        "call, median of %d). Kernels \"compiled before\": a render of another mesh ran first "
+        "in the process; \"from disk (cold)\": the first render also loads numba's compiled "
+        "kernels from its cache. Embree build: this run's (the table above). The difference "
+        "columns compare the first image with numba float64's." % (
+            sphere_size, sphere_size, threads, runs, runs),
+        "",
+        *render_table(render_rows),
+        "",
         "### The 64 spheres",
         "",
         "random_spheres_64 (benchmarks/scenes.py) at %dx%d, primary rays only (flat colours); "
@@ -1133,6 +1227,8 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
         "float32, through 64 `sphere` shapes." % (sphere_size, sphere_size),
         "",
         *sphere_table(sphere_rows, sphere_size),
+        "",
+        *sphere_verdicts(sphere_rows),
         "",
         END,
     ]
