@@ -495,11 +495,12 @@ class Mitsuba(System):
 # bindings 0 .. 3, the result at 4, ``main`` with @workgroup_size(64)): one invocation per
 # ray, through intersect_mesh.wgsl's mesh_closest with no feature on (flat faces, no spheres
 # in the BVH), as intersect_scene calls it for a scene of one mesh. Rays: [o, tmin],
-# [w, tmax] per ray; result: [t (-1 on a miss), bitcast face (-1), 0, 0] per ray.
-WGSL_MAIN = """\
+# [w, tmax] per ray; result: [t (-1 on a miss), bitcast face (-1), 0, 0] per ray. $nodes and
+# $closest: the tree's binding and its traversal (wgsl_main).
+WGSL_MAIN_TEMPLATE = """\
 @group(0) @binding(0) var<storage, read> mesh_vertices: array<f32>;
 @group(0) @binding(1) var<storage, read> mesh_faces: array<vec4i>;
-@group(0) @binding(2) var<storage, read> bvh_nodes: array<BVHNode>;
+@group(0) @binding(2) var<storage, read> $nodes;
 @group(0) @binding(3) var<storage, read> rays: array<vec4f>;
 @group(0) @binding(4) var<storage, read_write> result: array<vec4f>;
 
@@ -517,22 +518,41 @@ fn main(@builtin(global_invocation_id) gid: vec3u)
     var shape = -1;
     var kind = -1;
     var row = 0u;
-    let found = mesh_closest(&r, &hit, &shape, &kind, &row, 0u);
+    let found = $closest(&r, &hit, &shape, &kind, &row, 0u);
     result[i] = vec4f(select(-1.0, hit.dist, found), bitcast<f32>(select(-1, shape, found)), 0.0, 0.0);
 }
 """
 
 
-def wgsl_next_up() -> str:
-    """intersect_scene.wgsl's next_up (mesh_closest calls it), cut from that file: the rest
-    of it needs the scene's tables."""
+def wgsl_main(nodes: str, closest: str) -> str:
+    """WGSL_MAIN_TEMPLATE with the tree's binding ``nodes`` and its traversal ``closest``."""
+    from string import Template
+    return Template(WGSL_MAIN_TEMPLATE).substitute(nodes=nodes, closest=closest)
+
+
+WGSL_MAIN = wgsl_main("bvh_nodes: array<BVHNode>", "mesh_closest")
+
+
+def wgsl_cut(piece: str, names) -> str:
+    """The declarations ``names`` (functions, structs, constants) of rtfgu/wgsl/``piece``, in
+    the file's order, cut from it: the rest of the file needs bindings the program lacks."""
     import re
 
     from rtfgu.wgsl.assemble import read_piece
-    m = re.search(r"^fn next_up\(.*?^\}\n", read_piece("intersect_scene.wgsl"), re.M | re.S)
-    if m is None:
-        raise RuntimeError("no fn next_up in rtfgu/wgsl/intersect_scene.wgsl")
-    return m.group(0)
+    text = read_piece(piece)
+    found = []
+    for name in names:
+        m = re.search(r"^(?:fn %s\(|struct %s \{).*?^\};?\n|^const %s = [^\n]*\n"
+                      % (name, name, name), text, re.M | re.S)
+        if m is None:
+            raise RuntimeError("no fn, struct or const %s in rtfgu/wgsl/%s" % (name, piece))
+        found.append(m)
+    return "\n".join(m.group(0) for m in sorted(found, key=lambda m: m.start()))
+
+
+def wgsl_next_up() -> str:
+    """intersect_scene.wgsl's next_up (mesh_closest calls it)."""
+    return wgsl_cut("intersect_scene.wgsl", ["next_up"])
 
 
 class Wgsl(System):
@@ -543,6 +563,19 @@ class Wgsl(System):
     rays (and no more than a storage binding holds); a timed run is the dispatches and the
     readback of t and the face."""
     name = "rtfgu WGSL"
+    traversal = "rtfgu's WGSL path (rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest)"
+    built = "rtfgu numba's flat_bvh.build"
+
+    @staticmethod
+    def program(batch_program):
+        return batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl", "intersect_mesh.wgsl",
+                              "mesh_bench_main.wgsl"],
+                             overrides={"next_up.wgsl": wgsl_next_up(), "mesh_bench_main.wgsl": WGSL_MAIN})
+
+    @staticmethod
+    def tree(bvh):
+        """The node table the program's binding 2 reads: the binary one (flat_bvh)."""
+        return bvh.nodes
 
     def __init__(self, threads):
         from rtfgu.wgsl.device import adapter_description, get_device
@@ -557,17 +590,12 @@ class Wgsl(System):
         self.max_groups = int(self.limits["max-compute-workgroups-per-dimension"])
         self.alignment = int(self.limits["min-storage-buffer-offset-alignment"])
         start = time.perf_counter()
-        program = batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl",
-                                 "intersect_mesh.wgsl", "mesh_bench_main.wgsl"],
-                                overrides={"next_up.wgsl": wgsl_next_up(),
-                                           "mesh_bench_main.wgsl": WGSL_MAIN})
-        self.batch = compile_batch(program)
+        self.batch = compile_batch(self.program(batch_program))
         self.layout, self.pipeline = self.batch.pipeline(4)
         self.compile_seconds = time.perf_counter() - start
         self.threads = 0  # not a thread count: the adapter's
-        self.about = ("rtfgu's WGSL path (rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest through "
-                      "rtfgu/wgsl/harness.py) with wgpu %s on %s (pipeline compile %.2g s)"
-                      % (version("wgpu"), self.adapter_name, self.compile_seconds))
+        self.about = ("%s through rtfgu/wgsl/harness.py with wgpu %s on %s (pipeline compile %.2g s)"
+                      % (self.traversal, version("wgpu"), self.adapter_name, self.compile_seconds))
         self.upload_seconds, self.buffers, self.mesh = [], None, None
 
     def build(self, mesh):
@@ -579,7 +607,7 @@ class Wgsl(System):
         start = time.perf_counter()
         bvh, faces4 = bvh_of(mesh)
         vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float32)
-        arrays = (vertices, faces4, bvh.nodes)
+        arrays = (vertices, faces4, self.tree(bvh))
         self.nbytes = sum(a.nbytes for a in arrays)
         too_big = [(name, a.nbytes) for name, a in zip(("vertices", "faces", "BVH nodes"), arrays)
                    if a.nbytes > self.max_binding]
@@ -662,11 +690,55 @@ class Wgsl(System):
         return {"float32": self.nbytes / len(self.mesh.faces)}
 
     def build_note(self):
-        return "rtfgu numba's flat_bvh.build, uploaded to %s: upload %.3g s " \
-               "(median), %.1f MB" % (self.device_name,
+        return "%s, uploaded to %s: upload %.3g s " \
+               "(median), %.1f MB" % (self.built, self.device_name,
                                       statistics.median(self.upload_seconds[1:]
                                                         or self.upload_seconds),
                                       self.nbytes / 1e6)
+
+
+class WgslWide(Wgsl):
+    """An experiment, not the render's traversal: the numba path's wide tree (FlatBVH.wide,
+    (N, 8, 8) float32 nodes uploaded as they are) traversed in WGSL by
+    benchmarks/wgsl_wide_bvh.wgsl, with intersect_mesh.wgsl's face test and leaf loop cut from
+    that file; otherwise the harness, the rays and the timing of ``Wgsl``. Faces only."""
+    name = "rtfgu WGSL wide"
+    traversal = ("the wide tree's traversal in WGSL (benchmarks/wgsl_wide_bvh.wgsl's mesh_closest_wide, "
+                 "intersect_mesh.wgsl's face test)")
+    built = "rtfgu numba's flat_bvh.build and its collapse to the wide tree"
+
+    @staticmethod
+    def program(batch_program):
+        from rtfgu.accelerators.wide_bvh import LEAF_BITS, WIDTH
+        from rtfgu.kernels.wide_bvh import STACK
+        face_functions = wgsl_cut("intersect_mesh.wgsl", [
+            "CULL_WIDEN", "Shear", "ray_shear", "mesh_vertex", "intersect_face", "safe_inverse", "face_frame",
+            "mesh_normal"])
+        return batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl", "mesh_faces.wgsl", "wgsl_wide_bvh.wgsl",
+                              "mesh_bench_main.wgsl"],
+                             constants={"WIDE_WIDTH": WIDTH, "WIDE_STACK": STACK, "LEAF_BITS": LEAF_BITS},
+                             overrides={"next_up.wgsl": wgsl_next_up(), "mesh_faces.wgsl": face_functions,
+                                        "wgsl_wide_bvh.wgsl": (HERE / "wgsl_wide_bvh.wgsl").read_text(),
+                                        "mesh_bench_main.wgsl": wgsl_main("wide_nodes: array<f32>",
+                                                                          "mesh_closest_wide")})
+
+    def build(self, mesh):
+        self.faces_only(mesh)
+        return super().build(mesh)
+
+    @staticmethod
+    def faces_only(mesh):
+        if mesh.faces.ndim != 2 or mesh.faces.shape[1] != 3 or (mesh.faces < 0).any():
+            raise ValueError("%s: benchmarks/wgsl_wide_bvh.wgsl traverses faces only: mesh.faces must be "
+                             "(F, 3) vertex indices >= 0, not spheres or instances" % mesh.name)
+
+    @staticmethod
+    def tree(bvh):
+        """The wide table (FlatBVH.wide) as (N * 8 * 8) float32, its link rows as stored."""
+        wide = bvh.wide()
+        if wide.roots != (0,):
+            raise ValueError("wide BVH: one tree rooted at node 0 expected, not roots %s" % (wide.roots,))
+        return wide.nodes
 
 
 # ---- measuring --------------------------------------------------------------------------
