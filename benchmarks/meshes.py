@@ -5,10 +5,12 @@ Mitsuba 3 on the 64 spheres of the first table. Writes the plot docs/bench_meshe
 
 ``benchmarks/bench.py`` puts ``meshes_section()`` into docs/bench.md; run alone,
 
-    python benchmarks/meshes.py [--quick]
+    python benchmarks/meshes.py [--quick] [--peers wgsl,wgsl-wide,embree,mitsuba]
+                                [--wgsl-rays N] [--out FILE]
 
-measures this section only and replaces it in docs/bench.md (the text between START and END;
-appended when the file has none). A script, not a test: nothing is asserted, and a peer that
+measures this section only and replaces it in docs/bench.md (or FILE: the text between START
+and END; appended when the file has none). --peers runs only the peers named beside rtfgu
+numba (the others are named as not chosen); --wgsl-rays sets WGSL_RAYS. A script, not a test: nothing is asserted, and a peer that
 cannot be installed or run is named in the section with the reason instead of a figure
 (so is the WGSL path where wgpu has no adapter, or where a mesh's buffers exceed the
 adapter's storage binding size).
@@ -39,6 +41,11 @@ The paths (``System.paths``):
                  one submit each, into one result buffer read back at the end. The row's
                  note names the adapter; its threads are "-" (the adapter's own). WGSL_RAYS,
                  when set, limits it to the first rays of a set.
+  rtfgu WGSL wide  an experiment, not the render's traversal: the numba path's wide tree
+                 (FlatBVH.wide, its (N, 8, 8) float32 nodes uploaded as they are) traversed
+                 by benchmarks/wgsl_wide_bvh.wgsl with intersect_mesh.wgsl's face test and
+                 leaf loop (cut from that file, wgsl_cut), through the same harness, rays and
+                 timing as rtfgu WGSL (tests/test_wgsl_wide_bvh.py: the same face and t).
   Embree         embreex.rtcore_scene.EmbreeScene (robust=True) with one
                  embreex.mesh_construction.TriangleMesh; ``scene.run(origins, directions,
                  output=1)`` traces its rays one by one (rtcIntersect1) without the GIL, so
@@ -741,6 +748,12 @@ class WgslWide(Wgsl):
         return wide.nodes
 
 
+# The peers of rtfgu numba, by their key for --peers: (class, package, whether the bench extra
+# installs the package).
+PEERS = {"wgsl": (Wgsl, "wgpu", False), "wgsl-wide": (WgslWide, "wgpu", False),
+         "embree": (Embree, "embreex", True), "mitsuba": (Mitsuba, "mitsuba", True)}
+
+
 # ---- measuring --------------------------------------------------------------------------
 
 @dataclass
@@ -1075,9 +1088,10 @@ def plot(measured, title, path):
     plt.close(fig)
 
 
-def meshes_section(plot_path=None, quick=False, log=print) -> str:
+def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
     """Measure, write the plot at ``plot_path`` (None: no plot), and return the markdown
-    section (from START to END) for a file in ``plot_path``'s folder."""
+    section (from START to END) for a file in ``plot_path``'s folder. ``peers``: the keys of
+    PEERS to run beside rtfgu numba (None: all); the others are named as not chosen."""
     import numba
     started = time.perf_counter()
     load_start = os.getloadavg()
@@ -1090,8 +1104,11 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     systems, missing = [Rtfgu(threads)], {}
     bench_extra = " (`make bench` installs the bench extra)"
     # the WGSL path's reason (rtfgu.wgsl.device.NoAdapterError) names what to install
-    for cls, package, hint in ((Wgsl, "wgpu", ""), (Embree, "embreex", bench_extra),
-                               (Mitsuba, "mitsuba", bench_extra)):
+    for key, (cls, package, hint) in PEERS.items():
+        if peers is not None and key not in peers:
+            missing[cls.name] = "not chosen (--peers)"
+            continue
+        hint = bench_extra if hint else ""
         try:
             systems.append(cls(threads))
             if cls is Embree:
@@ -1101,7 +1118,7 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
                 package, str(error).splitlines()[0] if str(error) else repr(error), hint)
             log("%s: not run: %s" % (cls.name, missing[cls.name]))
     mitsuba = next((s for s in systems if isinstance(s, Mitsuba)), None)
-    wgsl = next((s for s in systems if isinstance(s, Wgsl)), None)
+    wgsl = {cls: next((s for s in systems if type(s) is cls), None) for cls in (Wgsl, WgslWide)}
 
     meshes = [displaced_icosphere(QUICK_SUBDIVISIONS if quick else ICOSPHERE_SUBDIVISIONS),
               bunny()]
@@ -1136,16 +1153,20 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     for m in measured:
         if m.path.system == Rtfgu.name and not m.failed:
             first_calls.setdefault(m.path.precision, m.first_call)
-    peers = [s.about for s in systems if s.about and not isinstance(s, Wgsl)] + [
-        "%s not run (%s)" % kv for kv in missing.items() if kv[0] != Wgsl.name]
-    if wgsl is not None:
-        wgsl_line = ("%s; float32; the rays in dispatches of at most %d, one submit each; "
-                     "the mesh's buffers (vertices, faces, nodes) must each fit one storage "
-                     "binding (%.4g MiB on this adapter)%s" % (
-                         wgsl.about, WGSL_BATCH, wgsl.max_binding / 2 ** 20,
-                         "; only the first %d rays of a set" % WGSL_RAYS if WGSL_RAYS else ""))
-    else:
-        wgsl_line = "not run (%s)" % missing.get(Wgsl.name)
+    others = [s.about for s in systems if s.about and not isinstance(s, Wgsl)] + [
+        "%s not run (%s)" % kv for kv in missing.items() if kv[0] not in (Wgsl.name, WgslWide.name)]
+    wgsl_lines = {}
+    for cls, system in wgsl.items():
+        if system is not None:
+            # the adapter may compile the shader at the first dispatch (llvmpipe via OpenGL does)
+            first = next((m.first_call for m in measured if m.path.system == cls.name and not m.failed), math.nan)
+            wgsl_lines[cls] = ("%s; the first run of the first ray set (warm-up) %.2g s; float32; the rays "
+                               "in dispatches of at most %d, one submit each; the mesh's buffers (vertices, "
+                               "faces, nodes) must each fit one storage binding (%.4g MiB on this adapter)%s" % (
+                                   system.about, first, WGSL_BATCH, system.max_binding / 2 ** 20,
+                                   "; only the first %d rays of a set" % WGSL_RAYS if WGSL_RAYS else ""))
+        else:
+            wgsl_lines[cls] = "not run (%s)" % missing.get(cls.name)
     lines = [
         START,
         "## Meshes and the BVH",
@@ -1159,8 +1180,9 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
         "of a pinhole camera whose square view the mesh fills; %d incoherent rays (origins "
         "uniform in the mesh's bounding box, directions uniform on the sphere). float32 paths "
         "get the rays and vertices rounded to float32." % (primary, primary, incoherent),
-        "- rtfgu WGSL: %s." % wgsl_line,
-        "- Peers: %s." % "; ".join(peers),
+        "- rtfgu WGSL: %s." % wgsl_lines[Wgsl],
+        "- rtfgu WGSL wide (an experiment, not the render's traversal): %s." % wgsl_lines[WgslWide],
+        "- Peers: %s." % "; ".join(others),
         "- Time: median of %d round(s) after a warm-up run of every path (so numba's and "
         "Dr.Jit's compile, and the adapter's first dispatch, are excluded; rtfgu numba's "
         "first calls, compile included: %s); a round times every path once (round-robin). "
@@ -1218,14 +1240,27 @@ def main(argv=None):
                         help="a check that everything runs: a %d-times subdivided icosphere, "
                              "%dx%d and %d rays, 1 run" % (QUICK_SUBDIVISIONS, QUICK_PRIMARY,
                                                           QUICK_PRIMARY, QUICK_INCOHERENT))
+    parser.add_argument("--peers", help="the peers to run beside rtfgu numba, comma-separated, of: %s "
+                                        "(default: all)" % ", ".join(PEERS))
+    parser.add_argument("--wgsl-rays", type=int, help="trace only this many first rays of a set on the WGSL "
+                                                      "paths (WGSL_RAYS; default: all)")
     args = parser.parse_args(argv)
+    peers = None if args.peers is None else [p.strip() for p in args.peers.split(",") if p.strip()]
+    unknown = sorted(set(peers or ()) - set(PEERS))
+    if unknown:
+        parser.error("--peers: unknown %s (known: %s)" % (", ".join(unknown), ", ".join(PEERS)))
+    if args.wgsl_rays is not None:
+        if args.wgsl_rays < 1:
+            parser.error("--wgsl-rays: at least 1, not %d" % args.wgsl_rays)
+        global WGSL_RAYS
+        WGSL_RAYS = args.wgsl_rays
     out = Path(args.out)
     started = time.perf_counter()
 
     def log(message):
         print("[%5.0f s] %s" % (time.perf_counter() - started, message), flush=True)
 
-    section = meshes_section(out.parent / "bench_meshes.png", args.quick, log)
+    section = meshes_section(out.parent / "bench_meshes.png", args.quick, log, peers)
     print(section)
     out.write_text(replace_section(out.read_text() if out.exists() else "", section, START, END))
     log("wrote %s" % out)
