@@ -10,10 +10,10 @@ Mitsuba 3 on the 64 spheres of the first table. Writes the plot docs/bench_meshe
 
 measures this section only and replaces it in docs/bench.md (or FILE: the text between START
 and END; appended when the file has none). --peers runs only the peers named beside rtfgu
-numba (the others are named as not chosen); --wgsl-rays sets WGSL_RAYS. A script, not a test: nothing is asserted, and a peer that
-cannot be installed or run is named in the section with the reason instead of a figure
-(so is the WGSL path where wgpu has no adapter, or where a mesh's buffers exceed the
-adapter's storage binding size).
+numba (the others are named as not chosen); --wgsl-rays sets WGSL_RAYS. A script, not a
+test: nothing is asserted, and a peer that cannot be installed or run is named in the
+section with the reason instead of a figure (so is the WGSL path where wgpu has no adapter,
+or where a mesh's buffers exceed the adapter's storage binding size).
 
 This section times the traversal on given rays. What a mesh costs through ``rtfgu.render``
 (the scene compiled, its BVH built, an image traced) is benchmarks/mesh_render.py's
