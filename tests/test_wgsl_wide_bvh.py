@@ -73,7 +73,7 @@ def test_wide_gives_the_binary_face_and_t(meshes):
     as_original = np.where(face_rev >= 0, last - face_rev, -1)
     tied = np.flatnonzero(face != as_original)
     vertex_rays = slice(len(origins), len(origins) + len(through))
-    assert np.sum(face[vertex_rays] != as_original[vertex_rays]) > 100, "few ties through the vertices"
+    assert np.sum(face[vertex_rays] != as_original[vertex_rays]) > 50, "few ties through the vertices"
     # of tied faces each order keeps its lowest index: the original's lower, the reverse's higher
     assert np.all(face[tied] < as_original[tied])
 
