@@ -5,13 +5,15 @@ Mitsuba 3 on the 64 spheres of the first table. Writes the plot docs/bench_meshe
 
 ``benchmarks/bench.py`` puts ``meshes_section()`` into docs/bench.md; run alone,
 
-    python benchmarks/meshes.py [--quick]
+    python benchmarks/meshes.py [--quick] [--peers wgsl,wgsl-wide,embree,mitsuba]
+                                [--wgsl-rays N] [--out FILE]
 
-measures this section only and replaces it in docs/bench.md (the text between START and END;
-appended when the file has none). A script, not a test: nothing is asserted, and a peer that
-cannot be installed or run is named in the section with the reason instead of a figure
-(so is the WGSL path where wgpu has no adapter, or where a mesh's buffers exceed the
-adapter's storage binding size).
+measures this section only and replaces it in docs/bench.md (or FILE: the text between START
+and END; appended when the file has none). --peers runs only the peers named beside rtfgu
+numba (the others are named as not chosen); --wgsl-rays sets WGSL_RAYS. A script, not a
+test: nothing is asserted, and a peer that cannot be installed or run is named in the
+section with the reason instead of a figure (so is the WGSL path where wgpu has no adapter,
+or where a mesh's buffers exceed the adapter's storage binding size).
 
 This section times the traversal on given rays. What a mesh costs through ``rtfgu.render``
 (the scene compiled, its BVH built, an image traced) is benchmarks/mesh_render.py's
@@ -39,6 +41,11 @@ The paths (``System.paths``):
                  one submit each, into one result buffer read back at the end. The row's
                  note names the adapter; its threads are "-" (the adapter's own). WGSL_RAYS,
                  when set, limits it to the first rays of a set.
+  rtfgu WGSL wide  an experiment, not the render's traversal: the numba path's wide tree
+                 (FlatBVH.wide, its (N, 8, 8) float32 nodes uploaded as they are) traversed
+                 by benchmarks/wgsl_wide_bvh.wgsl with intersect_mesh.wgsl's face test and
+                 leaf loop (cut from that file, wgsl_cut), through the same harness, rays and
+                 timing as rtfgu WGSL (tests/test_wgsl_wide_bvh.py: the same face and t).
   Embree         embreex.rtcore_scene.EmbreeScene (robust=True) with one
                  embreex.mesh_construction.TriangleMesh; ``scene.run(origins, directions,
                  output=1)`` traces its rays one by one (rtcIntersect1) without the GIL, so
@@ -497,11 +504,12 @@ class Mitsuba(System):
 # bindings 0 .. 3, the result at 4, ``main`` with @workgroup_size(64)): one invocation per
 # ray, through intersect_mesh.wgsl's mesh_closest with no feature on (flat faces, no spheres
 # in the BVH), as intersect_scene calls it for a scene of one mesh. Rays: [o, tmin],
-# [w, tmax] per ray; result: [t (-1 on a miss), bitcast face (-1), 0, 0] per ray.
-WGSL_MAIN = """\
+# [w, tmax] per ray; result: [t (-1 on a miss), bitcast face (-1), 0, 0] per ray. $nodes and
+# $closest: the tree's binding and its traversal (wgsl_main).
+WGSL_MAIN_TEMPLATE = """\
 @group(0) @binding(0) var<storage, read> mesh_vertices: array<f32>;
 @group(0) @binding(1) var<storage, read> mesh_faces: array<vec4i>;
-@group(0) @binding(2) var<storage, read> bvh_nodes: array<BVHNode>;
+@group(0) @binding(2) var<storage, read> $nodes;
 @group(0) @binding(3) var<storage, read> rays: array<vec4f>;
 @group(0) @binding(4) var<storage, read_write> result: array<vec4f>;
 
@@ -519,22 +527,41 @@ fn main(@builtin(global_invocation_id) gid: vec3u)
     var shape = -1;
     var kind = -1;
     var row = 0u;
-    let found = mesh_closest(&r, &hit, &shape, &kind, &row, 0u);
+    let found = $closest(&r, &hit, &shape, &kind, &row, 0u);
     result[i] = vec4f(select(-1.0, hit.dist, found), bitcast<f32>(select(-1, shape, found)), 0.0, 0.0);
 }
 """
 
 
-def wgsl_next_up() -> str:
-    """intersect_scene.wgsl's next_up (mesh_closest calls it), cut from that file: the rest
-    of it needs the scene's tables."""
+def wgsl_main(nodes: str, closest: str) -> str:
+    """WGSL_MAIN_TEMPLATE with the tree's binding ``nodes`` and its traversal ``closest``."""
+    from string import Template
+    return Template(WGSL_MAIN_TEMPLATE).substitute(nodes=nodes, closest=closest)
+
+
+WGSL_MAIN = wgsl_main("bvh_nodes: array<BVHNode>", "mesh_closest")
+
+
+def wgsl_cut(piece: str, names) -> str:
+    """The declarations ``names`` (functions, structs, constants) of rtfgu/wgsl/``piece``, in
+    the file's order, cut from it: the rest of the file needs bindings the program lacks."""
     import re
 
     from rtfgu.wgsl.assemble import read_piece
-    m = re.search(r"^fn next_up\(.*?^\}\n", read_piece("intersect_scene.wgsl"), re.M | re.S)
-    if m is None:
-        raise RuntimeError("no fn next_up in rtfgu/wgsl/intersect_scene.wgsl")
-    return m.group(0)
+    text = read_piece(piece)
+    found = []
+    for name in names:
+        m = re.search(r"^(?:fn %s\(|struct %s \{).*?^\};?\n|^const %s = [^\n]*\n"
+                      % (name, name, name), text, re.M | re.S)
+        if m is None:
+            raise RuntimeError("no fn, struct or const %s in rtfgu/wgsl/%s" % (name, piece))
+        found.append(m)
+    return "\n".join(m.group(0) for m in sorted(found, key=lambda m: m.start()))
+
+
+def wgsl_next_up() -> str:
+    """intersect_scene.wgsl's next_up (mesh_closest calls it)."""
+    return wgsl_cut("intersect_scene.wgsl", ["next_up"])
 
 
 class Wgsl(System):
@@ -545,6 +572,19 @@ class Wgsl(System):
     rays (and no more than a storage binding holds); a timed run is the dispatches and the
     readback of t and the face."""
     name = "rtfgu WGSL"
+    traversal = "rtfgu's WGSL path (rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest)"
+    built = "rtfgu numba's flat_bvh.build"
+
+    @staticmethod
+    def program(batch_program):
+        return batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl", "intersect_mesh.wgsl",
+                              "mesh_bench_main.wgsl"],
+                             overrides={"next_up.wgsl": wgsl_next_up(), "mesh_bench_main.wgsl": WGSL_MAIN})
+
+    @staticmethod
+    def tree(bvh):
+        """The node table the program's binding 2 reads: the binary one (flat_bvh)."""
+        return bvh.nodes
 
     def __init__(self, threads):
         from rtfgu.wgsl.device import adapter_description, get_device
@@ -559,17 +599,12 @@ class Wgsl(System):
         self.max_groups = int(self.limits["max-compute-workgroups-per-dimension"])
         self.alignment = int(self.limits["min-storage-buffer-offset-alignment"])
         start = time.perf_counter()
-        program = batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl",
-                                 "intersect_mesh.wgsl", "mesh_bench_main.wgsl"],
-                                overrides={"next_up.wgsl": wgsl_next_up(),
-                                           "mesh_bench_main.wgsl": WGSL_MAIN})
-        self.batch = compile_batch(program)
+        self.batch = compile_batch(self.program(batch_program))
         self.layout, self.pipeline = self.batch.pipeline(4)
         self.compile_seconds = time.perf_counter() - start
         self.threads = 0  # not a thread count: the adapter's
-        self.about = ("rtfgu's WGSL path (rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest through "
-                      "rtfgu/wgsl/harness.py) with wgpu %s on %s (pipeline compile %.2g s)"
-                      % (version("wgpu"), self.adapter_name, self.compile_seconds))
+        self.about = ("%s through rtfgu/wgsl/harness.py with wgpu %s on %s (pipeline compile %.2g s)"
+                      % (self.traversal, version("wgpu"), self.adapter_name, self.compile_seconds))
         self.upload_seconds, self.buffers, self.mesh = [], None, None
 
     def build(self, mesh):
@@ -581,7 +616,7 @@ class Wgsl(System):
         start = time.perf_counter()
         bvh, faces4 = bvh_of(mesh)
         vertices = np.ascontiguousarray(mesh.vertices, dtype=np.float32)
-        arrays = (vertices, faces4, bvh.nodes)
+        arrays = (vertices, faces4, self.tree(bvh))
         self.nbytes = sum(a.nbytes for a in arrays)
         too_big = [(name, a.nbytes) for name, a in zip(("vertices", "faces", "BVH nodes"), arrays)
                    if a.nbytes > self.max_binding]
@@ -664,11 +699,61 @@ class Wgsl(System):
         return {"float32": self.nbytes / len(self.mesh.faces)}
 
     def build_note(self):
-        return "rtfgu numba's flat_bvh.build, uploaded to %s: upload %.3g s " \
-               "(median), %.1f MB" % (self.device_name,
+        return "%s, uploaded to %s: upload %.3g s " \
+               "(median), %.1f MB" % (self.built, self.device_name,
                                       statistics.median(self.upload_seconds[1:]
                                                         or self.upload_seconds),
                                       self.nbytes / 1e6)
+
+
+class WgslWide(Wgsl):
+    """An experiment, not the render's traversal: the numba path's wide tree (FlatBVH.wide,
+    (N, 8, 8) float32 nodes uploaded as they are) traversed in WGSL by
+    benchmarks/wgsl_wide_bvh.wgsl, with intersect_mesh.wgsl's face test and leaf loop cut from
+    that file; otherwise the harness, the rays and the timing of ``Wgsl``. Faces only."""
+    name = "rtfgu WGSL wide"
+    traversal = ("the wide tree's traversal in WGSL (benchmarks/wgsl_wide_bvh.wgsl's mesh_closest_wide, "
+                 "intersect_mesh.wgsl's face test)")
+    built = "rtfgu numba's flat_bvh.build and its collapse to the wide tree"
+
+    @staticmethod
+    def program(batch_program):
+        from rtfgu.accelerators.wide_bvh import LEAF_BITS, WIDTH
+        from rtfgu.kernels.wide_bvh import STACK
+        face_functions = wgsl_cut("intersect_mesh.wgsl", [
+            "CULL_WIDEN", "Shear", "ray_shear", "mesh_vertex", "intersect_face", "safe_inverse", "face_frame",
+            "mesh_normal"])
+        return batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl", "mesh_faces.wgsl", "wgsl_wide_bvh.wgsl",
+                              "mesh_bench_main.wgsl"],
+                             constants={"WIDE_WIDTH": WIDTH, "WIDE_STACK": STACK, "LEAF_BITS": LEAF_BITS},
+                             overrides={"next_up.wgsl": wgsl_next_up(), "mesh_faces.wgsl": face_functions,
+                                        "wgsl_wide_bvh.wgsl": (HERE / "wgsl_wide_bvh.wgsl").read_text(),
+                                        "mesh_bench_main.wgsl": wgsl_main("wide_nodes: array<f32>",
+                                                                          "mesh_closest_wide")})
+
+    def build(self, mesh):
+        self.faces_only(mesh)
+        return super().build(mesh)
+
+    @staticmethod
+    def faces_only(mesh):
+        if mesh.faces.ndim != 2 or mesh.faces.shape[1] != 3 or (mesh.faces < 0).any():
+            raise ValueError("%s: benchmarks/wgsl_wide_bvh.wgsl traverses faces only: mesh.faces must be "
+                             "(F, 3) vertex indices >= 0, not spheres or instances" % mesh.name)
+
+    @staticmethod
+    def tree(bvh):
+        """The wide table (FlatBVH.wide) as (N * 8 * 8) float32, its link rows as stored."""
+        wide = bvh.wide()
+        if wide.roots != (0,):
+            raise ValueError("wide BVH: one tree rooted at node 0 expected, not roots %s" % (wide.roots,))
+        return wide.nodes
+
+
+# The peers of rtfgu numba, by their key for --peers: (class, package, whether the bench extra
+# installs the package).
+PEERS = {"wgsl": (Wgsl, "wgpu", False), "wgsl-wide": (WgslWide, "wgpu", False),
+         "embree": (Embree, "embreex", True), "mitsuba": (Mitsuba, "mitsuba", True)}
 
 
 # ---- measuring --------------------------------------------------------------------------
@@ -1079,9 +1164,10 @@ def plot(measured, title, path):
     plt.close(fig)
 
 
-def meshes_section(plot_path=None, quick=False, log=print) -> str:
+def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
     """Measure, write the plot at ``plot_path`` (None: no plot), and return the markdown
-    section (from START to END) for a file in ``plot_path``'s folder."""
+    section (from START to END) for a file in ``plot_path``'s folder. ``peers``: the keys of
+    PEERS to run beside rtfgu numba (None: all); the others are named as not chosen."""
     import numba
     started = time.perf_counter()
     load_start = os.getloadavg()
@@ -1094,8 +1180,11 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     systems, missing = [Rtfgu(threads)], {}
     bench_extra = " (`make bench` installs the bench extra)"
     # the WGSL path's reason (rtfgu.wgsl.device.NoAdapterError) names what to install
-    for cls, package, hint in ((Wgsl, "wgpu", ""), (Embree, "embreex", bench_extra),
-                               (Mitsuba, "mitsuba", bench_extra)):
+    for key, (cls, package, hint) in PEERS.items():
+        if peers is not None and key not in peers:
+            missing[cls.name] = "not chosen (--peers)"
+            continue
+        hint = bench_extra if hint else ""
         try:
             systems.append(cls(threads))
             if cls is Embree:
@@ -1105,7 +1194,7 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
                 package, str(error).splitlines()[0] if str(error) else repr(error), hint)
             log("%s: not run: %s" % (cls.name, missing[cls.name]))
     mitsuba = next((s for s in systems if isinstance(s, Mitsuba)), None)
-    wgsl = next((s for s in systems if isinstance(s, Wgsl)), None)
+    wgsl = {cls: next((s for s in systems if type(s) is cls), None) for cls in (Wgsl, WgslWide)}
 
     meshes = [displaced_icosphere(QUICK_SUBDIVISIONS if quick else ICOSPHERE_SUBDIVISIONS),
               bunny()]
@@ -1143,16 +1232,20 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
     for m in measured:
         if m.path.system == Rtfgu.name and not m.failed:
             first_calls.setdefault(m.path.precision, m.first_call)
-    peers = [s.about for s in systems if s.about and not isinstance(s, Wgsl)] + [
-        "%s not run (%s)" % kv for kv in missing.items() if kv[0] != Wgsl.name]
-    if wgsl is not None:
-        wgsl_line = ("%s; float32; the rays in dispatches of at most %d, one submit each; "
-                     "the mesh's buffers (vertices, faces, nodes) must each fit one storage "
-                     "binding (%.4g MiB on this adapter)%s" % (
-                         wgsl.about, WGSL_BATCH, wgsl.max_binding / 2 ** 20,
-                         "; only the first %d rays of a set" % WGSL_RAYS if WGSL_RAYS else ""))
-    else:
-        wgsl_line = "not run (%s)" % missing.get(Wgsl.name)
+    others = [s.about for s in systems if s.about and not isinstance(s, Wgsl)] + [
+        "%s not run (%s)" % kv for kv in missing.items() if kv[0] not in (Wgsl.name, WgslWide.name)]
+    wgsl_lines = {}
+    for cls, system in wgsl.items():
+        if system is not None:
+            # the adapter may compile the shader at the first dispatch (llvmpipe via OpenGL does)
+            first = next((m.first_call for m in measured if m.path.system == cls.name and not m.failed), math.nan)
+            wgsl_lines[cls] = ("%s; the first run of the first ray set (warm-up) %.2g s; float32; the rays "
+                               "in dispatches of at most %d, one submit each; the mesh's buffers (vertices, "
+                               "faces, nodes) must each fit one storage binding (%.4g MiB on this adapter)%s" % (
+                                   system.about, first, WGSL_BATCH, system.max_binding / 2 ** 20,
+                                   "; only the first %d rays of a set" % WGSL_RAYS if WGSL_RAYS else ""))
+        else:
+            wgsl_lines[cls] = "not run (%s)" % missing.get(cls.name)
     lines = [
         START,
         "## Meshes and the BVH",
@@ -1166,8 +1259,9 @@ def meshes_section(plot_path=None, quick=False, log=print) -> str:
         "of a pinhole camera whose square view the mesh fills; %d incoherent rays (origins "
         "uniform in the mesh's bounding box, directions uniform on the sphere). float32 paths "
         "get the rays and vertices rounded to float32." % (primary, primary, incoherent),
-        "- rtfgu WGSL: %s." % wgsl_line,
-        "- Peers: %s." % "; ".join(peers),
+        "- rtfgu WGSL: %s." % wgsl_lines[Wgsl],
+        "- rtfgu WGSL wide (an experiment, not the render's traversal): %s." % wgsl_lines[WgslWide],
+        "- Peers: %s." % "; ".join(others),
         "- Time: median of %d round(s) after a warm-up run of every path (so numba's and "
         "Dr.Jit's compile, and the adapter's first dispatch, are excluded; rtfgu numba's "
         "first calls, compile included: %s); a round times every path once (round-robin). "
@@ -1242,14 +1336,27 @@ def main(argv=None):
                         help="a check that everything runs: a %d-times subdivided icosphere, "
                              "%dx%d and %d rays, 1 run" % (QUICK_SUBDIVISIONS, QUICK_PRIMARY,
                                                           QUICK_PRIMARY, QUICK_INCOHERENT))
+    parser.add_argument("--peers", help="the peers to run beside rtfgu numba, comma-separated, of: %s "
+                                        "(default: all)" % ", ".join(PEERS))
+    parser.add_argument("--wgsl-rays", type=int, help="trace only this many first rays of a set on the WGSL "
+                                                      "paths (WGSL_RAYS; default: all)")
     args = parser.parse_args(argv)
+    peers = None if args.peers is None else [p.strip() for p in args.peers.split(",") if p.strip()]
+    unknown = sorted(set(peers or ()) - set(PEERS))
+    if unknown:
+        parser.error("--peers: unknown %s (known: %s)" % (", ".join(unknown), ", ".join(PEERS)))
+    if args.wgsl_rays is not None:
+        if args.wgsl_rays < 1:
+            parser.error("--wgsl-rays: at least 1, not %d" % args.wgsl_rays)
+        global WGSL_RAYS
+        WGSL_RAYS = args.wgsl_rays
     out = Path(args.out)
     started = time.perf_counter()
 
     def log(message):
         print("[%5.0f s] %s" % (time.perf_counter() - started, message), flush=True)
 
-    section = meshes_section(out.parent / "bench_meshes.png", args.quick, log)
+    section = meshes_section(out.parent / "bench_meshes.png", args.quick, log, peers)
     print(section)
     out.write_text(replace_section(out.read_text() if out.exists() else "", section, START, END))
     log("wrote %s" % out)
