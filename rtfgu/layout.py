@@ -746,7 +746,9 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
 
     blocks = {}     # (id(mesh), smooth) -> first vertex: a mesh's vertices are laid out once
     vertex_parts, normal_parts, uv_parts = [], [], []
-    face_parts, loose = [], []      # loose: the rows of MeshTriangles not yet in face_parts
+    # The rows in order: an int32 array, or a Mesh's as (its faces, first vertex, first index),
+    # made only when the BVH is built (rows_of). loose: MeshTriangles' rows not yet in a part.
+    face_parts, loose = [], []
 
     def first_vertex(mesh, smooth: bool) -> int:
         key = (id(mesh), smooth)
@@ -757,36 +759,28 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             uv_parts.append(mesh.uvs)
         return blocks[key]
 
+    def rows_of(part) -> np.ndarray:
+        if not isinstance(part, tuple):
+            return part
+        faces, first, index = part
+        rows = np.empty((len(faces), 4), dtype=np.int32)
+        rows[:, :3] = faces + first
+        rows[:, 3] = np.arange(index, index + len(faces))
+        return rows
+
     for i, shape in mesh_faces:
         if isinstance(shape, Mesh):
             if loose:
                 face_parts.append(np.array(loose, dtype=np.int32).reshape(-1, 4))
                 loose = []
-            first = first_vertex(shape, shape.normals is not None)
-            part = np.empty((shape.num_triangles, 4), dtype=np.int32)
-            part[:, :3] = shape.faces + first
-            part[:, 3] = np.arange(i, i + shape.num_triangles)
-            face_parts.append(part)
+            face_parts.append((shape.faces, first_vertex(shape, shape.normals is not None), i))
         else:
             first = first_vertex(shape.mesh, isinstance(shape, SmoothMeshTriangle))
             loose.append((shape.index0 + first, shape.index1 + first, shape.index2 + first, i))
     if loose:
         face_parts.append(np.array(loose, dtype=np.int32).reshape(-1, 4))
-    faces = np.concatenate(face_parts) if face_parts else np.zeros((0, 4), dtype=np.int32)
-    object_faces = []
-    for mesh in instanced:
-        part = np.empty((mesh.num_triangles, 4), dtype=np.int32)
-        part[:, :3] = mesh.faces + first_vertex(mesh, mesh.normals is not None)
-        part[:, 3] = np.arange(mesh.num_triangles)
-        object_faces.append(part)
-    vertices = np.concatenate(vertex_parts) if vertex_parts else np.zeros((0, 3))
-    smooth_any = any(n is not None for n in normal_parts)
-    normals = np.concatenate([np.zeros_like(v) if n is None else n for v, n in zip(vertex_parts, normal_parts)]) \
-        if smooth_any else None
-    uvs = np.concatenate([np.zeros_like(v) if t is None else np.column_stack([t, np.ones(len(t))])
-                          for v, t in zip(vertex_parts, uv_parts)]) \
-        if any(t is not None for t in uv_parts) else None
-    num_triangles = len(faces)
+    object_parts = [(mesh.faces, first_vertex(mesh, mesh.normals is not None), 0) for mesh in instanced]
+    num_triangles = sum(len(p[0]) if isinstance(p, tuple) else len(p) for p in face_parts)
     if spheres is not None:
         # A sphere's row: [-1, its row in the sphere table, 0, its place in Scene.shapes];
         # its box is centre +- radius grown as BBox.padded grows it (by 2^-20 in float32,
@@ -796,8 +790,8 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
         radius = table[:, SPHERE_RADIUS].astype(np.float64)
         pad = PAD if dtype == np.float64 else 2.0 ** -20
         reach = radius + pad * (np.abs(center).max(axis=1) + radius)
-        faces = np.concatenate([faces, np.stack([np.full(len(table), SPHERE_ROW), np.arange(len(table)),
-                                                 np.zeros(len(table)), index], axis=1).astype(np.int32)])
+        face_parts.append(np.stack([np.full(len(table), SPHERE_ROW), np.arange(len(table)),
+                                    np.zeros(len(table)), index], axis=1).astype(np.int32))
         bound_lo, bound_hi = center - reach[:, None], center + reach[:, None]
     else:
         bound_lo = bound_hi = np.zeros((0, 3))
@@ -811,20 +805,26 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             pad = 2.0 ** -16 * (np.abs(np.concatenate([box_lo, box_hi], axis=1)).max(axis=1)
                                 + (box_hi - box_lo).max(axis=1))
             box_lo, box_hi = box_lo - pad[:, None], box_hi + pad[:, None]
-        faces = np.concatenate([faces, np.stack([np.full(len(index), INSTANCE_ROW), np.arange(len(index)),
-                                                 np.zeros(len(index)), index], axis=1).astype(np.int32)])
+        face_parts.append(np.stack([np.full(len(index), INSTANCE_ROW), np.arange(len(index)),
+                                    np.zeros(len(index)), index], axis=1).astype(np.int32))
         bound_lo, bound_hi = np.concatenate([bound_lo, box_lo]), np.concatenate([bound_hi, box_hi])
-    # What the BVH and the arrays depend on: the vertices, the rows, the spheres' boxes and
-    # the normals and uvs (_cached compares them with those of the last compile).
+    num_rows = num_triangles + len(bound_lo)
 
     def make():
+        vertices = np.concatenate(vertex_parts) if vertex_parts else np.zeros((0, 3))
+        normals = np.concatenate([np.zeros_like(v) if n is None else n for v, n in zip(vertex_parts, normal_parts)]) \
+            if any(n is not None for n in normal_parts) else None
+        uvs = np.concatenate([np.zeros_like(v) if t is None else np.column_stack([t, np.ones(len(t))])
+                              for v, t in zip(vertex_parts, uv_parts)]) \
+            if any(t is not None for t in uv_parts) else None
         trees, rows, roots = [], [], []
-        if len(faces):
+        if num_rows:
+            faces = _joined([rows_of(p) for p in face_parts])
             lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
             bvh = flat_bvh.build(_joined([lo, bound_lo]), _joined([hi, bound_hi]))
             trees.append(bvh)
             rows.append(faces[bvh.order])
-        for part in object_faces:
+        for part in map(rows_of, object_parts):
             bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, part))
             roots.append(sum(t.num_nodes for t in trees))
             trees.append(flat_bvh.offset(bvh, roots[-1], sum(len(r) for r in rows)))
@@ -836,10 +836,18 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
                         normals=None if normals is None else normals.astype(dtype),
                         uvs=None if uvs is None else uvs.astype(dtype),
                         bvh=bvh, build_seconds=bvh.build_seconds, spheres=spheres is not None,
-                        roots=tuple(roots), scene_tree=len(faces) > 0, instances=instances is not None)
+                        roots=tuple(roots), scene_tree=num_rows > 0, instances=instances is not None)
 
-    inputs = (vertices, faces, bound_lo, bound_hi, np.zeros(0) if normals is None else normals,
-              np.zeros(0) if uvs is None else uvs, *object_faces)
+    # What the BVH and the arrays depend on, compared with those of the last compile
+    # (_cached): the meshes' own arrays (not the rows made from them: a second render makes
+    # nothing per face), where each part starts, the other rows and the spheres' boxes.
+    def source(part) -> tuple:
+        return (part[0], np.array(part[1:])) if isinstance(part, tuple) else (part,)
+
+    none = np.zeros(0)
+    inputs = tuple(a for v, n, t in zip(vertex_parts, normal_parts, uv_parts)
+                   for a in (v, none if n is None else n, none if t is None else t))
+    inputs += tuple(a for part in face_parts + object_parts for a in source(part)) + (bound_lo, bound_hi)
     mesh, reused = _cached(scene, ("mesh", np.dtype(dtype).name), inputs, make)
     return dataclasses.replace(mesh, build_seconds=0.0) if reused else mesh
 
