@@ -42,7 +42,7 @@ The paths (``System.paths``):
                  note names the adapter; its threads are "-" (the adapter's own). WGSL_RAYS,
                  when set, limits it to the first rays of a set.
   rtfgu WGSL wide  an experiment, not the render's traversal: the numba path's wide tree
-                 (FlatBVH.wide, its (N, 8, 8) float32 nodes uploaded as they are) traversed
+                 (FlatBVH.wide, its (N, 7, 8) float32 nodes uploaded as they are) traversed
                  by benchmarks/wgsl_wide_bvh.wgsl with intersect_mesh.wgsl's face test and
                  leaf loop (cut from that file, wgsl_cut), through the same harness, rays and
                  timing as rtfgu WGSL (tests/test_wgsl_wide_bvh.py: the same face and t).
@@ -708,7 +708,7 @@ class Wgsl(System):
 
 class WgslWide(Wgsl):
     """An experiment, not the render's traversal: the numba path's wide tree (FlatBVH.wide,
-    (N, 8, 8) float32 nodes uploaded as they are) traversed in WGSL by
+    (N, 7, 8) float32 nodes uploaded as they are) traversed in WGSL by
     benchmarks/wgsl_wide_bvh.wgsl, with intersect_mesh.wgsl's face test and leaf loop cut from
     that file; otherwise the harness, the rays and the timing of ``Wgsl``. Faces only."""
     name = "rtfgu WGSL wide"
@@ -718,14 +718,15 @@ class WgslWide(Wgsl):
 
     @staticmethod
     def program(batch_program):
-        from rtfgu.accelerators.wide_bvh import LEAF_BITS, WIDTH
+        from rtfgu.accelerators.wide_bvh import CODE_ROW, LEAF_BITS, ROWS, WIDTH
         from rtfgu.kernels.wide_bvh import STACK
         face_functions = wgsl_cut("intersect_mesh.wgsl", [
             "CULL_WIDEN", "Shear", "ray_shear", "mesh_vertex", "intersect_face", "safe_inverse", "face_frame",
             "mesh_normal"])
         return batch_program(["ray.wgsl", "hitinfo.wgsl", "next_up.wgsl", "mesh_faces.wgsl", "wgsl_wide_bvh.wgsl",
                               "mesh_bench_main.wgsl"],
-                             constants={"WIDE_WIDTH": WIDTH, "WIDE_STACK": STACK, "LEAF_BITS": LEAF_BITS},
+                             constants={"WIDE_WIDTH": WIDTH, "WIDE_ROWS": ROWS, "WIDE_CODE_ROW": CODE_ROW,
+                                        "WIDE_STACK": STACK, "LEAF_BITS": LEAF_BITS},
                              overrides={"next_up.wgsl": wgsl_next_up(), "mesh_faces.wgsl": face_functions,
                                         "wgsl_wide_bvh.wgsl": (HERE / "wgsl_wide_bvh.wgsl").read_text(),
                                         "mesh_bench_main.wgsl": wgsl_main("wide_nodes: array<f32>",

@@ -5,10 +5,11 @@
 // the BVH) is refused before upload (benchmarks/meshes.py, WgslWide.faces_only).
 //
 // Needs, from the program around it: wide_nodes (array<f32>: WideBVH.nodes as stored, node n
-// at n * 8 * WIDE_WIDTH, row r of child j at r * WIDE_WIDTH + j; rows 6 and 7 are int32 bits,
-// read through bitcast<i32>), mesh_faces, and intersect_mesh.wgsl's Shear, ray_shear,
-// intersect_face, safe_inverse and mesh_normal with CULL_WIDEN; the constants WIDE_WIDTH,
-// WIDE_STACK (rtfgu.kernels.wide_bvh.STACK) and LEAF_BITS (rtfgu.accelerators.wide_bvh).
+// at n * WIDE_ROWS * WIDE_WIDTH, row r of child j at r * WIDE_WIDTH + j; row WIDE_CODE_ROW
+// holds the children's codes as int32 bits, read through bitcast<i32>), mesh_faces, and
+// intersect_mesh.wgsl's Shear, ray_shear, intersect_face, safe_inverse and mesh_normal with
+// CULL_WIDEN; the constants WIDE_WIDTH, WIDE_ROWS, WIDE_CODE_ROW, LEAF_BITS
+// (rtfgu.accelerators.wide_bvh) and WIDE_STACK (rtfgu.kernels.wide_bvh.STACK).
 
 // The t at which the ray enters child j's box of the wide node at base within [tmin, reach],
 // or -1: intersect_mesh.wgsl's box_entry (the same operations in the same order), except that
@@ -50,8 +51,8 @@ fn wide_child_entry(base: u32, j: u32, o: vec3f, d: vec3f, inv: vec3f, tmin: f32
 
 // mesh_closest (intersect_mesh.wgsl) on the wide tree, faces only: every child of a node that
 // the ray enters within the best t times CULL_WIDEN goes on the stack, sorted by its entry t
-// so that the nearest is popped first (rtfgu.kernels.wide_bvh.enter_node); a leaf child as
-// ~(first << LEAF_BITS | count - 1). An entry popped beyond the best t times CULL_WIDEN is
+// so that the nearest is popped first (rtfgu.kernels.wide_bvh.enter_node), as its code (an
+// inner child's node, a leaf's ~(first << LEAF_BITS | count - 1)). An entry popped beyond the best t times CULL_WIDEN is
 // dropped. The leaf loop and the tie rule (of equal ts the face earlier in Scene.shapes wins)
 // are mesh_closest's. root: the wide node of the tree (WideBVH.roots).
 fn mesh_closest_wide(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: ptr<function, i32>,
@@ -69,7 +70,7 @@ fn mesh_closest_wide(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: 
     var live = true;
     while (live) {
         if (code >= 0) {
-            let base = u32(code) * 8u * WIDE_WIDTH;
+            let base = u32(code) * WIDE_ROWS * WIDE_WIDTH;
             let reach = (*r).tmax * CULL_WIDEN;
             let bottom = sp;
             for (var j = 0u; j < WIDE_WIDTH; j++) {
@@ -77,12 +78,7 @@ fn mesh_closest_wide(r: ptr<function, Ray>, hit: ptr<function, HitInfo>, shape: 
                 if (t < 0.0) {
                     continue;
                 }
-                let link = bitcast<i32>(wide_nodes[base + 6u * WIDE_WIDTH + j]);
-                let count = bitcast<i32>(wide_nodes[base + 7u * WIDE_WIDTH + j]);
-                var child = link;
-                if (count > 0) {
-                    child = ~((link << LEAF_BITS) | (count - 1));
-                }
+                let child = bitcast<i32>(wide_nodes[base + WIDE_CODE_ROW * WIDE_WIDTH + j]);
                 var k = sp;
                 while (k > bottom && entry_stack[k - 1u] < t) {
                     code_stack[k] = code_stack[k - 1u];

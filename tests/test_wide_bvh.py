@@ -51,12 +51,16 @@ def leaves_of_wide(wide, root=0):
         nodes += 1
         for j in range(wide_bvh.WIDTH):
             box = tuple(wide.nodes[n, :6, j])
-            if links[n, 7, j] > 0:
-                out.append((int(links[n, 6, j]), int(links[n, 7, j]), box))
-            elif np.isfinite(box).all():
-                stack.append(links[n, 6, j])
-            else:     # an empty column: the empty box, which no ray enters
+            code = int(links[n, wide_bvh.CODE_ROW, j])
+            if not np.isfinite(box).all():     # an empty column: the empty box, which no ray enters
                 assert box == (math.inf,) * 3 + (-math.inf,) * 3
+            elif code < 0:
+                leaf = ~code
+                first, count = leaf >> wide_bvh.LEAF_BITS, (leaf & (2 ** wide_bvh.LEAF_BITS - 1)) + 1
+                assert wide_bvh.leaf_code(first, count) == code
+                out.append((first, count, box))
+            else:
+                stack.append(code)
     return sorted(out), nodes
 
 
@@ -223,7 +227,7 @@ def test_the_vector_box_test_is_the_scalar_one_lane_by_lane(dtype):
             hi[3] = lo[3]                                          # flat boxes
         nodes8 = np.zeros((8, 8), dtype=np.float32)
         nodes8[:, 0:3], nodes8[:, 4:7] = lo, hi
-        wide = np.zeros((1, 8, 8), dtype=np.float32)
+        wide = np.zeros((1, wide_bvh.ROWS, 8), dtype=np.float32)
         wide[0, 0:3, :], wide[0, 3:6, :] = lo.T, hi.T
         origin = rng.uniform(-2, 2, 3)
         if trial % 3 == 0:

@@ -4,12 +4,14 @@ coordinate's plane of all eight (Embree's BVH8, Wald et al. 2014, "Embree: A Ker
 Framework for Efficient CPU Ray Tracing", section 4.1; the collapse of Wald, Benthin and
 Boulos 2008, "Getting Rid of Packets").
 
-A node is an (8, WIDTH) float32 block, 256 bytes, one row per field and one column per child:
+A node is a (ROWS, WIDTH) = (7, 8) float32 block, 224 bytes, one row per field and one
+column per child:
 
     rows 0-2  lo.x, lo.y, lo.z  of each child's box
     rows 3-5  hi.x, hi.y, hi.z
-    row 6     int32 bits: an inner child's node, or a leaf child's first primitive
-    row 7     int32 bits: a leaf child's primitive count (>= 1), 0 for an inner child
+    row 6     int32 bits: the child's code, what the traversal pushes: an inner child's node
+              (>= 0), or a leaf child's ~(first << LEAF_BITS | count - 1) (< 0), its first
+              primitive and its count (leaf_code)
 
 A column no child fills has the empty box (lo = +inf, hi = -inf), which no ray enters. The
 boxes are the binary tree's own (rounded outward to float32), so a ray enters a wide child
@@ -30,14 +32,22 @@ import numpy as np
 from .flat_bvh import FlatBVH, njit
 
 WIDTH = 8
-# A leaf on the traversal's stack is ~(first << LEAF_BITS | count - 1): LEAF_SIZE <= 2^LEAF_BITS.
+# A leaf's code is ~(first << LEAF_BITS | count - 1): LEAF_SIZE <= 2^LEAF_BITS.
 LEAF_BITS = 3
 MAX_FIRST = 2 ** (31 - LEAF_BITS)
+# A node's rows: six of box planes and the children's codes (CODE_ROW).
+ROWS = 7
+CODE_ROW = 6
+
+
+def leaf_code(first: int, count: int) -> int:
+    """The code of a leaf of ``count`` primitives from ``first`` (module docstring)."""
+    return ~(first << LEAF_BITS | (count - 1))
 
 
 @dataclass
 class WideBVH:
-    nodes: np.ndarray          # (N, 8, WIDTH) float32 (module docstring)
+    nodes: np.ndarray          # (N, ROWS, WIDTH) float32 (module docstring)
     roots: tuple               # the wide node of each root of the binary table, in order
     build_seconds: float
 
@@ -59,8 +69,8 @@ def _area(nodes, n):
 
 
 @njit(cache=True)
-def _collapse(nodes, links, roots, out, out_links, wide_roots, width):
-    """Fill out (M, 8, width) from the binary table; returns M. A work list of (binary node,
+def _collapse(nodes, links, roots, out, out_links, wide_roots, width, leaf_bits):
+    """Fill out (M, ROWS, width) from the binary table; returns M. A work list of (binary node,
     wide node) pairs; each wide node's children are chosen as the module docstring says."""
     work = np.empty((len(nodes) + len(roots), 2), dtype=np.int64)
     kids = np.empty(width, dtype=np.int64)
@@ -99,18 +109,15 @@ def _collapse(nodes, links, roots, out, out_links, wide_roots, width):
                         out[w, a, j] = np.inf
                         out[w, 3 + a, j] = -np.inf
                     out_links[w, 6, j] = 0
-                    out_links[w, 7, j] = 0
                     continue
                 c = kids[j]
                 for a in range(3):
                     out[w, a, j] = nodes[c, a]
                     out[w, 3 + a, j] = nodes[c, 4 + a]
                 if links[c, 7] > 0:
-                    out_links[w, 6, j] = links[c, 3]
-                    out_links[w, 7, j] = links[c, 7]
+                    out_links[w, 6, j] = ~(links[c, 3] << leaf_bits | (links[c, 7] - 1))
                 else:
                     out_links[w, 6, j] = done
-                    out_links[w, 7, j] = 0
                     work[top, 0], work[top, 1] = c, done
                     top += 1
                     done += 1
@@ -125,8 +132,9 @@ def collapse(bvh: FlatBVH, roots=(0,)) -> WideBVH:
     if leaves.any() and (links[leaves, 7].max() > 2 ** LEAF_BITS or links[leaves, 3].max() >= MAX_FIRST):
         raise ValueError("wide BVH: a leaf holds more than %d primitives or starts past %d"
                          % (2 ** LEAF_BITS, MAX_FIRST))
-    out = np.empty((len(bvh.nodes) + len(roots), 8, WIDTH), dtype=np.float32)
+    out = np.empty((len(bvh.nodes) + len(roots), ROWS, WIDTH), dtype=np.float32)
     wide_roots = np.zeros(len(roots), dtype=np.int64)
-    n = _collapse(bvh.nodes, links, np.asarray(roots, dtype=np.int64), out, out.view(np.int32), wide_roots, WIDTH)
+    n = _collapse(bvh.nodes, links, np.asarray(roots, dtype=np.int64), out, out.view(np.int32), wide_roots, WIDTH,
+                  LEAF_BITS)
     nodes = np.ascontiguousarray(out[:n])
     return WideBVH(nodes, tuple(int(r) for r in wide_roots), time.perf_counter() - start)

@@ -271,7 +271,7 @@ def _wide_start(origin, direction, tmin):
 
 
 def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
-    """mesh_closest on the wide table (N, 8, WIDTH): rtfgu.kernels.wide_bvh's box8 and stack.
+    """mesh_closest on the wide table (N, ROWS, WIDTH): rtfgu.kernels.wide_bvh's box8 and stack.
     ``bound``: the best hit so far (mesh_closest's ``hit``)."""
     state = bound
     frame, inv, widen, stack, entry_stack, entry = _wide_start(origin, direction, tmin)
@@ -298,7 +298,7 @@ def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmi
 
 
 def _by_tree(binary, wide):
-    """A traversal that runs ``wide`` on a wide table ((N, 8, WIDTH) nodes) and ``binary`` on
+    """A traversal that runs ``wide`` on a wide table ((N, ROWS, WIDTH) nodes) and ``binary`` on
     a binary one ((N, 8)): numba picks one by the nodes' dimensions when it compiles the
     caller, and inlines it there."""
     def traverse(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
@@ -317,7 +317,7 @@ _traverse_closest = _by_tree(_binary_closest, _wide_closest)
 # mesh_closest and mesh_any are called, not inlined: compiled once per precision and tree kind
 # and cached, they are shared by every render kernel (each scene's kinds compile a kernel of
 # their own). ``nodes`` is the binary table (flat_bvh, (N, 8)) or the wide one (wide_bvh,
-# (N, 8, WIDTH)): its number of dimensions picks the traversal when numba compiles it.
+# (N, ROWS, WIDTH)): its number of dimensions picks the traversal when numba compiles it.
 @njit(cache=True, error_model="numpy")
 def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root=0,
                  instances=(None, None, None)):

@@ -12,8 +12,8 @@ operations in the same order, so a lane enters a box exactly where box_entry doe
 
 The stack: a node's children that the ray enters are pushed sorted, the farthest deepest, so
 the nearest is popped first (Embree's sorting network does the same for its hits); an entry
-popped beyond the nearest hit so far is dropped. A leaf child goes on the stack as
-~(first << LEAF_BITS | count - 1), an inner one as its node.
+popped beyond the nearest hit so far is dropped. A child goes on the stack as its code, the
+node's row CODE_ROW: an inner child's node, a leaf's ~(first << LEAF_BITS | count - 1).
 """
 from __future__ import annotations
 
@@ -25,7 +25,7 @@ from numba.core import cgutils
 from numba.extending import intrinsic
 
 from ..accelerators.flat_bvh import MAX_DEPTH
-from ..accelerators.wide_bvh import LEAF_BITS, WIDTH
+from ..accelerators.wide_bvh import CODE_ROW, LEAF_BITS, ROWS, WIDTH
 
 # A traversal pushes at most WIDTH - 1 entries per level it descends.
 STACK = MAX_DEPTH * WIDTH
@@ -74,7 +74,7 @@ lanes_of = on_the_stack(WIDTH, "box8's entry ts: WIDTH elements.")
 
 @intrinsic
 def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
-    """The slab test of node ``n``'s WIDTH child boxes (nodes (N, 8, WIDTH) float32): a bit
+    """The slab test of node ``n``'s WIDTH child boxes (nodes (N, ROWS, WIDTH) float32): a bit
     mask of the children the ray enters within [tmin, tmax], and at ``entry`` (a pointer to
     WIDTH floats of tmin's type) the t at which it enters each (inf where it does not).
     ``inv`` = 1 / direction (inf for a zero component): the near plane of an axis is hi
@@ -97,7 +97,7 @@ def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
         i32 = ir.IntType(32)
         array = context.make_array(nodes_t)(context, builder, nodes_v)
         n64 = context.cast(builder, n_v, n_t, types.int64)
-        base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, 8 * WIDTH))])
+        base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, ROWS * WIDTH))])
 
         def scalar(value, typ):
             return context.cast(builder, value, typ, real)
@@ -139,14 +139,13 @@ def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
 def enter_node(nodes, links, node, origin, inv, tmin, reach, widen, entry, stack, entry_stack, sp):
     """box8 on ``node`` within [tmin, reach], and the children the ray enters pushed sorted
     by their entry t, the nearest on top (``entry``: box8's lanes); returns the new stack
-    size. A leaf child goes on as ~(first << LEAF_BITS | count - 1)."""
+    size. Each goes on as its code (rtfgu.accelerators.wide_bvh)."""
     mask = box8(nodes, node, origin, inv, tmin, reach, widen, entry)
     base = sp
     for j in range(WIDTH):
         if mask >> j & 1:
             t = entry[j]
-            count = links[node, 7, j]
-            child = links[node, 6, j] if count == 0 else ~(links[node, 6, j] << LEAF_BITS | (count - 1))
+            child = links[node, CODE_ROW, j]
             k = sp
             while k > base and entry_stack[k - 1] < t:
                 stack[k] = stack[k - 1]
