@@ -43,7 +43,6 @@ except ImportError:
     intersect_triangle_watertight = None
 
 from ..float3 import Float3, normalize
-from ..jit import njit
 from ..materials.material import Material
 from ..ray import Ray
 from .shape import Shape
@@ -333,22 +332,24 @@ def _per_face_materials(material, m: int) -> tuple:
 
 def zero_area_faces(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     """The numbers of the faces whose n = (v1 - v0) x (v2 - v0) has n . n == 0, the test
-    ``Triangle`` refuses a triangle by (the same products in the same order, so both agree)."""
-    zero = np.zeros(len(faces), dtype=np.bool_)
-    _zero_area(np.ascontiguousarray(vertices, dtype=np.float64), np.ascontiguousarray(faces), zero)
-    return np.flatnonzero(zero)
+    ``Triangle`` refuses a triangle by (the same products in the same order, so both agree).
+    numpy, in blocks of ZERO_AREA_BLOCK faces: the lecture layer imports no numba, and a
+    block's temporaries stay small enough to be reused, not fresh memory for every face."""
+    out = []
+    for start in range(0, len(faces), ZERO_AREA_BLOCK):
+        block = faces[start:start + ZERO_AREA_BLOCK]
+        v0 = vertices[block[:, 0]]
+        e0 = vertices[block[:, 1]] - v0
+        e1 = vertices[block[:, 2]] - v0
+        nx = e0[:, 1] * e1[:, 2] - e0[:, 2] * e1[:, 1]
+        ny = e0[:, 2] * e1[:, 0] - e0[:, 0] * e1[:, 2]
+        nz = e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]
+        out.append(start + np.flatnonzero(nx * nx + ny * ny + nz * nz == 0.0))
+    return np.concatenate(out) if out else np.zeros(0, dtype=np.int64)
 
 
-@njit(cache=True)
-def _zero_area(vertices, faces, zero):
-    for f in range(faces.shape[0]):
-        a, b, c = faces[f, 0], faces[f, 1], faces[f, 2]
-        e0x, e0y, e0z = vertices[b, 0] - vertices[a, 0], vertices[b, 1] - vertices[a, 1], vertices[b, 2] - vertices[a, 2]
-        e1x, e1y, e1z = vertices[c, 0] - vertices[a, 0], vertices[c, 1] - vertices[a, 1], vertices[c, 2] - vertices[a, 2]
-        nx = e0y * e1z - e0z * e1y
-        ny = e0z * e1x - e0x * e1z
-        nz = e0x * e1y - e0y * e1x
-        zero[f] = nx * nx + ny * ny + nz * nz == 0.0
+# Faces per block of zero_area_faces.
+ZERO_AREA_BLOCK = 1 << 14
 
 
 def _refuse_zero_area(vertices: np.ndarray, faces: np.ndarray) -> None:
