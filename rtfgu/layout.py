@@ -831,7 +831,7 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             rows.append(part[bvh.order])
         bvh = trees[0] if len(trees) == 1 else flat_bvh.FlatBVH(
             np.concatenate([t.nodes for t in trees]), np.concatenate([t.order for t in trees]),
-            sum(t.build_seconds for t in trees))
+            sum(t.build_seconds for t in trees), np.concatenate([t.boxes for t in trees]))
         return FlatMesh(vertices=vertices.astype(dtype), faces=_joined(rows),
                         normals=None if normals is None else normals.astype(dtype),
                         uvs=None if uvs is None else uvs.astype(dtype),

@@ -64,6 +64,29 @@ def leaves_of_wide(wide, root=0):
     return sorted(out), nodes
 
 
+def opened_leaves_closed(wide_leaves, bvh, root=0):
+    """The wide tree's leaves with the leaves the collapse opened (a column per primitive)
+    put back together, each checked: a primitive's column holds its own box (FlatBVH.boxes),
+    inside its leaf's, and a leaf is opened whole or not at all."""
+    binary = {first: (count, box) for first, count, box in leaves_of_binary(bvh, root)}
+    out, singles = [], {}
+    for first, count, box in wide_leaves:
+        if first in binary and binary[first] == (count, box):
+            out.append((first, count, box))
+            continue
+        assert count == 1, "a wide leaf of several primitives is a binary leaf"
+        assert box == tuple(bvh.boxes[first])
+        leaf = max(f for f in binary if f <= first)
+        assert first < leaf + binary[leaf][0]
+        lo, hi = np.array(binary[leaf][1][:3]), np.array(binary[leaf][1][3:])
+        assert (np.array(box[:3]) >= lo).all() and (np.array(box[3:]) <= hi).all()
+        singles.setdefault(leaf, []).append(first)
+    for leaf, primitives in singles.items():
+        assert sorted(primitives) == list(range(leaf, leaf + binary[leaf][0]))
+        out.append((leaf,) + binary[leaf])
+    return sorted(out), len(singles)
+
+
 def soup(count, seed, spread=1.0, size=0.3):
     rng = np.random.default_rng(seed)
     centers = rng.uniform(-spread, spread, (count, 1, 3))
@@ -155,6 +178,35 @@ def traced(vertices, faces, nodes, origins, directions, dtype):
     return hits, shadows
 
 
+# --- the build ----------------------------------------------------------------------------
+
+def open_box():
+    """The five walls of a unit box open at the front, two triangles a wall (as the Cornell
+    box's), with the quads' diagonals alternating."""
+    corners = np.array([[x, y, z] for x in (0.0, 1.0) for y in (0.0, 1.0) for z in (0.0, 1.0)])
+    at = {tuple(c): i for i, c in enumerate(corners)}
+    quads = [((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)), ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),
+             ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)), ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1)),
+             ((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1))]
+    faces = []
+    for k, q in enumerate(quads):
+        a, b, c, d = (at[p] for p in q)
+        faces += [(a, b, c), (a, c, d)] if k % 2 else [(a, b, d), (b, c, d)]
+    return corners, np.array(faces, dtype=np.int32)
+
+
+def test_a_node_too_big_for_a_leaf_splits_at_its_cheapest_plane():
+    # Ten faces on five walls: no plane splits them for less than a leaf of all ten costs,
+    # but ten is too many for a leaf. Split at the cheapest plane (PBRT-v4), every wall
+    # ends in a leaf of its own; split at the median of the widest axis, leaves mixed walls,
+    # boxes as big as the box, which every ray inside enters.
+    vertices, faces = open_box()
+    bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, faces))
+    for first, count, box in leaves_of_binary(bvh):
+        extent = np.array(box[3:]) - np.array(box[:3])
+        assert extent.min() == 0.0, "a leaf's faces lie on one wall"
+
+
 # --- the collapse -------------------------------------------------------------------------
 
 @pytest.mark.parametrize("count", [1, 2, 7, 9, 300, 5000])
@@ -162,9 +214,12 @@ def test_the_collapse_keeps_every_leaf_and_box_of_the_binary_tree(count):
     bvh, wide, _ = tree_of(*soup(count, seed=count))
     binary_leaves = leaves_of_binary(bvh)
     wide_leaves, reached = leaves_of_wide(wide)
-    assert wide_leaves == binary_leaves
+    closed, opened = opened_leaves_closed(wide_leaves, bvh)
+    assert closed == binary_leaves
     assert reached == len(wide.nodes)                      # no node is unreachable
     assert sum(c for _, c, _ in wide_leaves) == count       # every primitive once
+    if count >= 300:
+        assert opened > 0          # nodes with columns left over open their leaves
     if count >= 300:
         # fewer levels: the depth of a leaf is about log8 rather than log2 of the count
         assert len(wide.nodes) * 4 < bvh.num_nodes
@@ -187,11 +242,13 @@ def test_the_roots_of_several_trees_in_one_table_are_collapsed_each():
     b_vertices, b_faces = soup(90, seed=6)
     a = flat_bvh.build(*flat_bvh.triangle_bounds(a_vertices, a_faces))
     b = flat_bvh.offset(flat_bvh.build(*flat_bvh.triangle_bounds(b_vertices, b_faces)), a.num_nodes, len(a_faces))
-    table = flat_bvh.FlatBVH(np.concatenate([a.nodes, b.nodes]), np.concatenate([a.order, b.order]), 0.0)
+    table = flat_bvh.FlatBVH(np.concatenate([a.nodes, b.nodes]), np.concatenate([a.order, b.order]), 0.0,
+                             np.concatenate([a.boxes, b.boxes]))
     wide = table.wide((0, a.num_nodes))
     assert wide.roots[0] == 0
-    assert leaves_of_wide(wide, wide.roots[0])[0] == leaves_of_binary(table, 0)
-    assert leaves_of_wide(wide, wide.roots[1])[0] == leaves_of_binary(table, a.num_nodes)
+    for root, binary_root in zip(wide.roots, (0, a.num_nodes)):
+        leaves = opened_leaves_closed(leaves_of_wide(wide, root)[0], table, binary_root)[0]
+        assert leaves == leaves_of_binary(table, binary_root)
     assert table.wide((0, a.num_nodes)) is wide                # kept with the table
 
 
@@ -200,7 +257,7 @@ def test_a_leaf_too_big_for_the_stack_code_is_refused():
     links = bvh.nodes.view(np.int32)
     links[0, 3], links[0, 7] = 0, 2 ** wide_bvh.LEAF_BITS + 1
     with pytest.raises(ValueError, match="leaf holds more than"):
-        wide_bvh.collapse(flat_bvh.FlatBVH(bvh.nodes[:1].copy(), bvh.order, 0.0))
+        wide_bvh.collapse(flat_bvh.FlatBVH(bvh.nodes[:1].copy(), bvh.order, 0.0, bvh.boxes))
 
 
 # --- the vector box test ------------------------------------------------------------------

@@ -46,6 +46,7 @@ class FlatBVH:
     nodes: np.ndarray          # (N, 8) float32 (module docstring)
     order: np.ndarray          # (P,) int32
     build_seconds: float
+    boxes: np.ndarray          # (P, 6) float32: each primitive's box in leaf order, rounded out
     _wide: tuple = field(default=None, repr=False, compare=False)
 
     @property
@@ -120,7 +121,9 @@ def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, 
         # The binned SAH (rtfgu.accelerators.bvh.BVH._best_split): the cheapest plane. One
         # pass over the primitives bins them along all three axes at once.
         area = _surface_area(b0, b1, b2, b3, b4, b5)
-        best_cost = c_intersect * count
+        # A node small enough to be a leaf is split only where a plane costs less than the
+        # leaf; a bigger one at its cheapest plane, whatever it costs (PBRT-v4 section 7.3.4).
+        best_cost = c_intersect * count if count <= leaf_size else np.inf
         best_axis = -1
         best_plane = 0.0
         clo = (c0, c1, c2)
@@ -245,6 +248,22 @@ def _round_out(box, nodes):
             nodes[i, 4 + axis] = hi
 
 
+@njit(cache=True)
+def _primitive_boxes(lo, hi, order, boxes):
+    """boxes[k] = the box of primitive order[k], [lo, hi] rounded outward to float32."""
+    for k in range(order.shape[0]):
+        p = order[k]
+        for axis in range(3):
+            low = np.float32(lo[p, axis])
+            if np.float64(low) > lo[p, axis]:
+                low = np.nextafter(low, np.float32(-np.inf))
+            high = np.float32(hi[p, axis])
+            if np.float64(high) < hi[p, axis]:
+                high = np.nextafter(high, np.float32(np.inf))
+            boxes[k, axis] = low
+            boxes[k, 3 + axis] = high
+
+
 def build(lo, hi) -> FlatBVH:
     """The BVH over primitives with boxes lo (P, 3), hi (P, 3) (float64, finite, lo <= hi)."""
     lo = np.ascontiguousarray(lo, dtype=np.float64)
@@ -266,7 +285,9 @@ def build(lo, hi) -> FlatBVH:
     ints = nodes.view(np.int32)
     ints[:, 3] = links[:n, 0]
     ints[:, 7] = links[:n, 1]
-    return FlatBVH(nodes, order, time.perf_counter() - start)
+    boxes = np.empty((len(order), 6), dtype=np.float32)
+    _primitive_boxes(lo, hi, order, boxes)
+    return FlatBVH(nodes, order, time.perf_counter() - start, boxes)
 
 
 def offset(bvh: FlatBVH, first_node: int, first_primitive: int) -> FlatBVH:
@@ -276,7 +297,7 @@ def offset(bvh: FlatBVH, first_node: int, first_primitive: int) -> FlatBVH:
     links = nodes.view(np.int32)
     leaf = links[:, 7] > 0
     links[:, 3] += np.where(leaf, first_primitive, first_node).astype(np.int32)
-    return FlatBVH(nodes, bvh.order + np.int32(first_primitive), bvh.build_seconds)
+    return FlatBVH(nodes, bvh.order + np.int32(first_primitive), bvh.build_seconds, bvh.boxes)
 
 
 def triangle_bounds(vertices: np.ndarray, faces: np.ndarray):

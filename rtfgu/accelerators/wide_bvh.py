@@ -14,13 +14,18 @@ column per child:
               primitive and its count (leaf_code)
 
 A column no child fills has the empty box (lo = +inf, hi = -inf), which no ray enters. The
-boxes are the binary tree's own (rounded outward to float32), so a ray enters a wide child
-wherever it enters that binary node; the wide tree tests fewer boxes on the way down, never
-other ones, and finds the same face and t with the one tie rule (docs/bvh.md).
+boxes are the binary tree's own or its primitives' (FlatBVH.boxes), rounded outward to
+float32, so a ray enters a wide child wherever it enters that binary node or hits that
+primitive; the wide tree tests fewer boxes on the way down, never other ones, and finds the
+same face and t with the one tie rule (docs/bvh.md).
 
 The collapse: a node starts with the two children of a binary node and opens the inner child
 of the largest surface area into its two children until it has WIDTH children or only
-leaves. The leaves (and the primitives in leaf order) are the binary tree's.
+leaves. Columns still free then take the primitives of its leaves, one a column with its own
+box, the leaf of the largest area first, where all of a leaf's primitives fit: the box test
+tests the eight columns at once, so a free column costs as much as a full one, and a ray then
+tests only the primitives whose boxes it enters (the Cornell box's two triangles of a wall,
+each boxing half of it). The primitives stay in the binary tree's leaf order.
 """
 from __future__ import annotations
 
@@ -61,19 +66,27 @@ class WideBVH:
 
 
 @njit(cache=True)
-def _area(nodes, n):
-    dx = np.float64(nodes[n, 4]) - nodes[n, 0]
-    dy = np.float64(nodes[n, 5]) - nodes[n, 1]
-    dz = np.float64(nodes[n, 6]) - nodes[n, 2]
-    return dx * dy + dy * dz + dz * dx
+def _place(nodes, boxes, c, kids, kbox, k):
+    """Make ``c`` child k: a binary node c >= 0, or the primitive ~c of ``boxes``
+    (FlatBVH.boxes); kbox[k] = its box [lo, hi] and kbox[k, 6] its surface area / 2."""
+    kids[k] = c
+    for a in range(3):
+        kbox[k, a] = nodes[c, a] if c >= 0 else boxes[~c, a]
+        kbox[k, 3 + a] = nodes[c, 4 + a] if c >= 0 else boxes[~c, 3 + a]
+    dx = np.float64(kbox[k, 3]) - kbox[k, 0]
+    dy = np.float64(kbox[k, 4]) - kbox[k, 1]
+    dz = np.float64(kbox[k, 5]) - kbox[k, 2]
+    kbox[k, 6] = dx * dy + dy * dz + dz * dx
 
 
 @njit(cache=True)
-def _collapse(nodes, links, roots, out, out_links, wide_roots, width, leaf_bits):
+def _collapse(nodes, links, boxes, roots, out, out_links, wide_roots, width, leaf_bits):
     """Fill out (M, ROWS, width) from the binary table; returns M. A work list of (binary node,
-    wide node) pairs; each wide node's children are chosen as the module docstring says."""
+    wide node) pairs; each wide node's children are chosen as the module docstring says: a
+    child is a binary node (>= 0) or, once a leaf is opened, one primitive p (~p)."""
     work = np.empty((len(nodes) + len(roots), 2), dtype=np.int64)
     kids = np.empty(width, dtype=np.int64)
+    kbox = np.empty((width, 7))
     done = 0
     for r in range(len(roots)):
         wide_roots[r] = done
@@ -84,24 +97,38 @@ def _collapse(nodes, links, roots, out, out_links, wide_roots, width, leaf_bits)
             top -= 1
             b, w = work[top, 0], work[top, 1]
             if links[b, 7] > 0:        # a tree that is a single leaf
-                kids[0] = b
+                _place(nodes, boxes, b, kids, kbox, 0)
                 count = 1
             else:
-                kids[0], kids[1] = links[b, 3], links[b, 3] + 1
+                _place(nodes, boxes, links[b, 3], kids, kbox, 0)
+                _place(nodes, boxes, links[b, 3] + 1, kids, kbox, 1)
                 count = 2
                 while count < width:
                     widest = -1
-                    widest_area = -1.0
                     for k in range(count):
-                        if links[kids[k], 7] == 0:
-                            a = _area(nodes, kids[k])
-                            if a > widest_area:
-                                widest, widest_area = k, a
+                        if links[kids[k], 7] == 0 and (widest < 0 or kbox[k, 6] > kbox[widest, 6]):
+                            widest = k
                     if widest < 0:
                         break
                     left = links[kids[widest], 3]
-                    kids[widest] = left
-                    kids[count] = left + 1
+                    _place(nodes, boxes, left, kids, kbox, widest)
+                    _place(nodes, boxes, left + 1, kids, kbox, count)
+                    count += 1
+            # Columns left over: the widest leaf whose primitives all fit opened into one
+            # child per primitive, each with its own box, until none fits.
+            while count < width:
+                widest = -1
+                for k in range(count):
+                    c = kids[k]
+                    if c >= 0 and links[c, 7] > 1 and count + links[c, 7] - 1 <= width \
+                            and (widest < 0 or kbox[k, 6] > kbox[widest, 6]):
+                        widest = k
+                if widest < 0:
+                    break
+                first, n = links[kids[widest], 3], links[kids[widest], 7]
+                _place(nodes, boxes, ~first, kids, kbox, widest)
+                for i in range(1, n):
+                    _place(nodes, boxes, ~(first + i), kids, kbox, count)
                     count += 1
             for j in range(width):
                 if j >= count:
@@ -111,10 +138,11 @@ def _collapse(nodes, links, roots, out, out_links, wide_roots, width, leaf_bits)
                     out_links[w, 6, j] = 0
                     continue
                 c = kids[j]
-                for a in range(3):
-                    out[w, a, j] = nodes[c, a]
-                    out[w, 3 + a, j] = nodes[c, 4 + a]
-                if links[c, 7] > 0:
+                for a in range(6):
+                    out[w, a, j] = kbox[j, a]
+                if c < 0:
+                    out_links[w, 6, j] = ~(~c << leaf_bits)
+                elif links[c, 7] > 0:
                     out_links[w, 6, j] = ~(links[c, 3] << leaf_bits | (links[c, 7] - 1))
                 else:
                     out_links[w, 6, j] = done
@@ -134,7 +162,7 @@ def collapse(bvh: FlatBVH, roots=(0,)) -> WideBVH:
                          % (2 ** LEAF_BITS, MAX_FIRST))
     out = np.empty((len(bvh.nodes) + len(roots), ROWS, WIDTH), dtype=np.float32)
     wide_roots = np.zeros(len(roots), dtype=np.int64)
-    n = _collapse(bvh.nodes, links, np.asarray(roots, dtype=np.int64), out, out.view(np.int32), wide_roots, WIDTH,
-                  LEAF_BITS)
+    n = _collapse(bvh.nodes, links, bvh.boxes, np.asarray(roots, dtype=np.int64), out, out.view(np.int32),
+                  wide_roots, WIDTH, LEAF_BITS)
     nodes = np.ascontiguousarray(out[:n])
     return WideBVH(nodes, tuple(int(r) for r in wide_roots), time.perf_counter() - start)
