@@ -11,7 +11,10 @@ one with the least expected cost
 
 wins (A a box's surface area, N its number of shapes: the chance that a ray through the node
 also passes through a child is the ratio of their areas). A node stays a leaf when no plane
-costs less than intersecting all its shapes, C_INTERSECT N, and it is small enough.
+costs less than intersecting all its shapes, C_INTERSECT N, and it is small enough. A node too
+big for a leaf is split at its cheapest plane whatever it costs (PBRT-v4 section 7.3.4), so
+that the shapes of one wall of a box stay together (a median split would cut them apart),
+and at the median only where no plane parts its shapes.
 
 Traversal. Nodes are visited nearest box first, and a node whose box the ray enters beyond
 the nearest hit so far is skipped. The closest hit is the same as the scene's loop over all
@@ -95,10 +98,10 @@ class BVH:
 
     def _best_split(self, node: BVHNode):
         """(axis, plane) of the binned SAH's cheapest split, or None if no split costs less
-        than a leaf."""
+        than a leaf (for a node too big for a leaf, only if no plane parts its shapes)."""
         members = self.order[node.first:node.first + node.count]
         centroids = BBox.of_points(self.centroids[i] for i in members)
-        best, best_cost = None, C_INTERSECT * node.count
+        best, best_cost = None, C_INTERSECT * node.count if node.count <= LEAF_SIZE else math.inf
         area = node.bbox.surface_area()
         for axis in range(3):
             lo, hi = centroids.p0[axis], centroids.p1[axis]
