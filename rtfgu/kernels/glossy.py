@@ -13,8 +13,12 @@ from .sampling import hemisphere_map
 
 @njit(cache=True, error_model="numpy")
 def glossy_lobe(specular, shininess, normal, w_o, w_i, cos_theta):
-    """rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s with w_r = 2 (n . w_i) n - w_i."""
+    """rho_s (s + 2) / (2 pi) max(w_o . w_r, 0)^s with w_r = 2 (n . w_i) n - w_i: zero
+    without a power where rho_s is (a Matte's lobe: rho_s times a finite factor, the same
+    zeros)."""
     zero = lit(0.0, cos_theta)
+    if specular[0] == zero and specular[1] == zero and specular[2] == zero:
+        return (zero, zero, zero)
     two = lit(2.0, zero)
     w_r = sub(scale(normal, two * cos_theta), w_i)
     cos_r = dot(w_o, w_r)

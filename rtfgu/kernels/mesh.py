@@ -381,12 +381,12 @@ def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin,
 def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
     """mesh_any on the wide table: every child the ray enters on the stack, in any order.
     ``bound``: mesh_any's ``tmax``."""
-    frame, inv, widen, stack, entry_stack, entry = _wide_start(origin, direction, tmin)
+    frame, inv, widen, stack, _, entry = _wide_start(origin, direction, tmin)
     sp = 0
     code = root
     while True:
         if code >= 0:
-            sp = wide_bvh.enter_node(nodes, links, code, origin, inv, tmin, bound, widen, entry, stack, entry_stack, sp)
+            sp = wide_bvh.enter_node_any(nodes, links, code, origin, inv, tmin, bound, widen, entry, stack, sp)
         else:
             first, count = wide_bvh.leaf_span(code)
             if _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, bound,

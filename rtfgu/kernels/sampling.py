@@ -4,7 +4,7 @@ operation as rtfgu/sampling/ (random.py, sampler.py, maps.py).
 
 Unsigned 32-bit arithmetic is done in int64 and masked: numba widens uint32 products, and
 every product here (a 32-bit value times a constant below 2^30) fits in 63 bits; Sobol's
-scramble multiplies by larger constants, in two halves (mul32).
+scramble multiplies by larger constants, in uint64, whose products wrap (mul32).
 
 A scene's sampler reaches the kernels as ``sampler`` = (samples (num_sets * n, 2) in the
 render's float type, shuffled int32 (num_sets * n), n, num_sets), or None for one sample
@@ -50,8 +50,9 @@ def random_float(pixel, index, dimension, seed, like):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def mul32(a, b):
-    """a * b mod 2^32 for a, b below 2^32, in two halves so that no product passes 2^48."""
-    return (a * (b & 0xFFFF) + (((a * (b >> 16)) & 0xFFFF) << 16)) & MASK
+    """a * b mod 2^32 for a, b below 2^32: one uint64 product (it wraps mod 2^64, whose low
+    32 bits are the product's), masked."""
+    return np.int64((np.uint64(a) * np.uint64(b)) & np.uint64(MASK))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -101,7 +102,9 @@ def sobol_pair_u32(pixel, index, dimension, seed):
     """rtfgu.sampling.sobol.sobol_pair_u32: Burley's shuffled, scrambled Sobol pair."""
     key = pcg((seed + pcg((dimension + pcg(pixel & MASK)) & MASK)) & MASK)
     shuffled = nested_uniform_scramble(index & MASK, key)
-    return (nested_uniform_scramble(reverse_bits(shuffled), pcg((key + 1) & MASK)),
+    # The first: nested_uniform_scramble(reverse_bits(shuffled)), whose two bit reversals
+    # in a row cancel.
+    return (reverse_bits(laine_karras_permutation(shuffled, pcg((key + 1) & MASK))),
             nested_uniform_scramble(sobol_1(shuffled), pcg((key + 2) & MASK)))
 
 

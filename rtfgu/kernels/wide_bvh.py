@@ -158,6 +158,18 @@ def enter_node(nodes, links, node, origin, inv, tmin, reach, widen, entry, stack
 
 
 @njit(cache=True, error_model="numpy", inline="always")
+def enter_node_any(nodes, links, node, origin, inv, tmin, reach, widen, entry, stack, sp):
+    """enter_node for a shadow ray, which stops at any hit: the children it enters pushed in
+    column order, unsorted (Embree's any-hit traversal does not sort either)."""
+    mask = box8(nodes, node, origin, inv, tmin, reach, widen, entry)
+    for j in range(WIDTH):
+        if mask >> j & 1:
+            stack[sp] = links[node, CODE_ROW, j]
+            sp += 1
+    return sp
+
+
+@njit(cache=True, error_model="numpy", inline="always")
 def leaf_span(code):
     """(first, count) of a leaf's stack entry."""
     leaf = ~code
