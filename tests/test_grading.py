@@ -712,7 +712,7 @@ def test_under_the_user_fallback_a_result_folder_is_closed_to_the_sandbox_users(
     # student's code may run (grade-all); the folder is the grader's alone.
     import tempfile
 
-    from rtfgu.grading.sandbox import SANDBOX_UID
+    from rtfgu.grading.sandbox import sandbox_uid
 
     if os.geteuid() != 0:
         pytest.skip("the unprivileged-user fallback needs the grader to run as root")
@@ -725,10 +725,15 @@ def test_under_the_user_fallback_a_result_folder_is_closed_to_the_sandbox_users(
         diff = next((shared / "alice" / "diffs").glob("*.png"))
         read = "import sys\ntry:\n    open(sys.argv[1], 'rb').read()\n    print('read')\nexcept OSError:\n    print('denied')"
 
+        # The sandbox user this process claimed, the one its students' code runs as: a grader
+        # on another worker kills every process of its own user after each test, so a probe
+        # as that user could be killed before it prints.
+        uid = sandbox_uid()
+
         def as_sandbox_user():
             os.setgroups([])
-            os.setgid(SANDBOX_UID + 1)
-            os.setuid(SANDBOX_UID + 1)
+            os.setgid(uid)
+            os.setuid(uid)
         done = subprocess.run(["/usr/bin/python3", "-c", read, str(diff)], preexec_fn=as_sandbox_user,
                               capture_output=True, text=True, cwd="/")
         assert done.stdout.strip() == "denied", done.stdout + done.stderr
