@@ -7,8 +7,9 @@ a peer per pixel.
 The scene is the box of rtfgu.scenes.meshes.cornell_box_area_light() (cornell_box_blocks()
 with path-traced surfaces: kd 1, the albedo each face's colour) lit by its emissive ceiling
 quad only: every light but an AreaLight is removed (a point light standing in for the quad,
-in rtfgu versions without area lights). The quad's two triangles face down (-y) and become
-one Mitsuba ``area`` emitter (benchmarks/mitsuba_scene.py converts the scene). The
+in rtfgu versions without area lights). The quad's two triangles face down (-y); they are
+one Rectangle and its AreaLight (ceiling_lamp: the same surface), and one Mitsuba ``area``
+emitter (benchmarks/mitsuba_scene.py converts the scene). The
 integrator is Mitsuba's ``path`` with max_depth -1 (unbounded, Russian roulette from depth
 5), the film a box-filtered S x S hdrfilm.
 
@@ -46,11 +47,47 @@ MAX_DEPTH = -1
 
 def cornell_scene():
     """The Cornell box with its blocks, every face a path-traced Matte (kd 1: its albedo is
-    its colour), lit by its emissive quad only: cornell_box_area_light()'s box."""
+    its colour), lit by its emissive quad only: cornell_box_area_light()'s box, its lamp one
+    Rectangle (ceiling_lamp)."""
     from rtfgu.scenes.meshes import cornell_box_area_light
     scene = cornell_box_area_light()
     scene.lights = [light for light in scene.lights if type(light).__name__ == "AreaLight"]
     scene.sampler = None            # an rtfgu render of it takes render's spp (rtfgu.options.pixel_sampler)
+    return ceiling_lamp(scene)
+
+
+def ceiling_lamp(scene):
+    """``scene`` with the two emitting triangles of its ceiling quad (each an AreaLight) made
+    one Rectangle and its one AreaLight: the same surface, emission and material, as the book
+    builds its Cornell box's lamp (Suffern ch. 18.6, "Rectangular lights"). A light is sampled
+    once at every vertex, so the quad then costs one shadow ray a vertex instead of two, as
+    Mitsuba's one emitter of the quad's faces does (benchmarks/mitsuba_scene.py). Refused
+    unless the two triangles tile an axis-aligned rectangle."""
+    from rtfgu.float3 import Float3, cross
+    from rtfgu.lights import AreaLight
+    from rtfgu.shapes import Rectangle
+
+    lamps = [light.shape for light in scene.lights if isinstance(light, AreaLight)]
+    if len(lamps) != 2 or len(scene.lights) != 2:
+        raise ValueError("ceiling_lamp: the scene's lights must be the two AreaLights of the quad, got %r"
+                         % (scene.lights,))
+    corners = {}
+    for shape in lamps:
+        t = shape.triangle
+        for v in (t.v0, t.v0 + t.e0, t.v0 + t.e1):
+            corners[(v.x, v.y, v.z)] = v
+    xs, ys, zs = (sorted({c[k] for c in corners}) for k in range(3))
+    area = sum(shape.triangle.area for shape in lamps)
+    if len(corners) != 4 or len(ys) != 1 or len(xs) != 2 or len(zs) != 2 or \
+            abs(area - (xs[1] - xs[0]) * (zs[1] - zs[0])) > 1e-12 * area:
+        raise ValueError("ceiling_lamp: the AreaLights' triangles do not tile one axis-aligned horizontal "
+                         "rectangle: corners %s" % sorted(corners))
+    a, b = Float3(xs[1] - xs[0], 0.0, 0.0), Float3(0.0, 0.0, zs[1] - zs[0])
+    if cross(a, b).y * lamps[0].triangle.get_normal().y < 0.0:      # face where the triangles face
+        a, b = b, a
+    lamp = Rectangle(Float3(xs[0], ys[0], zs[0]), a, b, lamps[0].color, lamps[0].material)
+    scene.shapes = [shape for shape in scene.shapes if shape not in lamps] + [lamp]
+    scene.lights = [AreaLight(lamp)]
     return scene
 
 

@@ -30,6 +30,7 @@ The mapping (Mitsuba 3 plugin reference, https://mitsuba.readthedocs.io/en/stabl
                   them, flat otherwise). Face winding is kept: Mitsuba's geometric normal
                   is (v1 - v0) x (v2 - v0), rtfgu's too.
   Triangle        a one-face mi.Mesh.   Sphere  ``sphere`` (center, radius).
+  Rectangle       a two-face mi.Mesh over p0, p0 + a, p0 + a + b, p0 + b, facing a x b.
   Disk            ``disk`` with to_world = frame of the normal scaled by the radius.
   Plane           a square mi.Mesh of half side PLANE_EXTENT x the scene's radius, centred at
                   the scene's centre projected onto the plane, facing the plane's normal.
@@ -166,7 +167,7 @@ def _frame(normal) -> tuple:
 
 def _scene_sphere(scene) -> tuple:
     """(centre, radius) of the box around the camera and every bounded shape."""
-    from rtfgu.shapes import Disk, Sphere
+    from rtfgu.shapes import Disk, Rectangle, Sphere
     from rtfgu.shapes.mesh import MeshTriangle
     from rtfgu.shapes.triangle import Triangle
     points = [_xyz(scene.camera.eye), _xyz(scene.camera.lookat)]
@@ -178,9 +179,17 @@ def _scene_sphere(scene) -> tuple:
             points += list(shape.mesh.vertices[[shape.index0, shape.index1, shape.index2]])
         elif isinstance(shape, Triangle):
             points += [_xyz(shape.v0), _xyz(shape.v1), _xyz(shape.v2)]
+        elif isinstance(shape, Rectangle):
+            points += _rectangle_corners(shape)
     points = np.array(points, dtype=np.float64)
     lo, hi = points.min(axis=0), points.max(axis=0)
     return (lo + hi) / 2, max(float(np.linalg.norm(hi - lo)) / 2, 1e-3)
+
+
+def _rectangle_corners(shape) -> list:
+    """p0, p0 + a, p0 + a + b, p0 + b: the rectangle's corners, counterclockwise about a x b."""
+    p0, a, b = (np.array(_xyz(v)) for v in (shape.p0, shape.a, shape.b))
+    return [p0, p0 + a, p0 + a + b, p0 + b]
 
 
 def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_depth=None) -> dict:
@@ -192,7 +201,7 @@ def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_dept
     no counterpart (see the module docstring) is a ValueError naming it."""
     from rtfgu.cameras import PinholeCamera
     from rtfgu.lights import AreaLight, PointLight
-    from rtfgu.shapes import Disk, Plane, Sphere
+    from rtfgu.shapes import Disk, Plane, Rectangle, Sphere
     from rtfgu.shapes.mesh import MeshTriangle
     from rtfgu.shapes.triangle import Triangle
 
@@ -262,6 +271,9 @@ def to_mitsuba(scene, width: int, height: int, spp: int, seed: int = 0, max_dept
         elif isinstance(shape, Triangle):
             entry = _mesh(mi, "triangle_%d" % i, [_xyz(shape.v0), _xyz(shape.v1), _xyz(shape.v2)],
                           [[0, 1, 2]], None, bsdf, emitter)
+        elif isinstance(shape, Rectangle):
+            entry = _mesh(mi, "rectangle_%d" % i, _rectangle_corners(shape), [[0, 1, 2], [0, 2, 3]], None,
+                          bsdf, emitter)
         elif isinstance(shape, Plane):
             n, t1, t2 = _frame(shape.normal)
             p = np.array(_xyz(shape.point))

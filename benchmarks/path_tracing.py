@@ -12,8 +12,8 @@ appended when the file has none). A script, not a test: nothing is asserted, and
 cannot run is named in the section with the reason instead of a figure.
 
 Scene: the Cornell box with its blocks, every face a path-traced Matte (kd 1: the albedo is
-its colour; rtfgu.scenes.meshes.cornell_box_area_light()'s box), lit by its ceiling quad (two
-AreaLights) with ``scene.tracer = PathTrace()`` (max_depth 64, Russian roulette), the scene
+its colour; rtfgu.scenes.meshes.cornell_box_area_light()'s box), lit by its ceiling quad (one
+Rectangle and its AreaLight: cornell_reference.ceiling_lamp) with ``scene.tracer = PathTrace()`` (max_depth 64, Russian roulette), the scene
 of benchmarks/cornell_reference.py; Mitsuba gets it through benchmarks/mitsuba_scene.py
 (``path`` integrator, max_depth -1: unbounded, Russian roulette from depth 5).
 
@@ -681,8 +681,9 @@ def path_tracing_section(plot_path=None, quick=False, with_wgpu=True, log=print,
         "hand." % (" --quick" if quick else ""),
         "",
         "- Scene: the Cornell box with its blocks (rtfgu.scenes.meshes.cornell_box_area_light()'s: "
-        "every face a Matte of kd 1) lit by its ceiling quad (two "
-        "AreaLights), `scene.tracer = PathTrace()`; Mitsuba 3 gets it through "
+        "every face a Matte of kd 1) lit by its ceiling quad (its two triangles one Rectangle and "
+        "its AreaLight, benchmarks/cornell_reference.py's `ceiling_lamp`: one shadow ray a vertex, "
+        "as Mitsuba's one emitter), `scene.tracer = PathTrace()`; Mitsuba 3 gets it through "
         "benchmarks/mitsuba_scene.py (`path` integrator, max_depth -1). %dx%d, every peer the "
         "same image." % (SIZE, SIZE),
         "- Reference: tests/data/cornell_mitsuba.npz (%s). Its RMS standard error is %.5f = "

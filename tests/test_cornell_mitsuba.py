@@ -38,10 +38,23 @@ def cornell():
     return scene
 
 
-def z_scores(path, bias=1.0):
+def benchmark_scene():
+    """benchmarks/cornell_reference.py's scene (a script folder, not a package): the box of
+    cornell(), its lamp's two triangles one Rectangle (ceiling_lamp)."""
+    import importlib.util
+    path = Path(__file__).resolve().parent.parent / "benchmarks" / "cornell_reference.py"
+    spec = importlib.util.spec_from_file_location("rtfgu_cornell_reference", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    scene = module.cornell_scene()
+    scene.tracer = PathTrace()
+    return scene, module
+
+
+def z_scores(path, bias=1.0, scene=cornell):
     peer = np.load(DATA)
     size = int(peer["width"])
-    images = np.array([render(cornell(), size, size, backend=path.backend, precision=path.precision,
+    images = np.array([render(scene(), size, size, backend=path.backend, precision=path.precision,
                               spp=SPP[path.backend], seed=1000 + seed) for seed in range(SEEDS)])
     mean = images.mean(axis=0) * bias
     stderr = images.std(axis=0, ddof=1) * bias / np.sqrt(SEEDS)
@@ -82,3 +95,28 @@ def test_a_one_percent_bias_is_caught(bias):
         backend, precision = "numba", "float32"
     z, ratio = z_scores(Numba(), bias)
     assert agrees(z, ratio), "a %+.0f %% bias passed the comparison" % (100 * (bias - 1))
+
+
+def test_the_benchmarks_rectangle_lamp_agrees_with_mitsuba():
+    """The path-tracing benchmark's scene lights the box with one Rectangle where the quad's
+    two triangles were (one shadow ray a vertex instead of two): the same light, so the
+    same image as the reference, which Mitsuba made from the triangles."""
+    class Numba:
+        backend, precision = "numba", "float32"
+    scene, _ = benchmark_scene()
+    lamps = [light.shape for light in scene.lights]
+    assert [type(shape).__name__ for shape in lamps] == ["Rectangle"]
+    assert lamps[0].normal.y == -1.0                     # facing down, into the box, as the triangles
+    assert not any(type(s).__name__ == "MeshTriangle" and s.material is lamps[0].material for s in scene.shapes)
+    z, ratio = z_scores(Numba(), scene=lambda: benchmark_scene()[0])
+    failed = agrees(z, ratio)
+    assert not failed, "the rectangle lamp against Mitsuba 3: %s" % "; ".join(failed)
+
+
+def test_the_rectangle_lamp_is_refused_for_other_lights():
+    from rtfgu.lights import PointLight
+    from rtfgu.float3 import Float3
+    scene, module = benchmark_scene()
+    scene.lights.append(PointLight(Float3(0.3, 0.5, 0.3), Float3(1.0)))
+    with pytest.raises(ValueError, match="ceiling_lamp: the scene's lights"):
+        module.ceiling_lamp(scene)
