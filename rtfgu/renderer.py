@@ -112,7 +112,7 @@ def render_passes(scene, width: int, height: int, backend: str = "reference",
             image = sums / samples[1]
             check_finite_image(image, backend)
         else:
-            image = accumulate(samples, rows)   # float64, refused where not finite
+            image = accumulate(samples, rows, last=k + 1 == passes)   # float64, refused where not finite
         yield samples[1], image
 
 

@@ -47,6 +47,32 @@ def test_passes_sum_to_one_render_bit_for_bit(backend):
     assert not np.array_equal(steps[0][1], whole)  # the first pass is a coarser estimate
 
 
+@pytest.mark.parametrize("precision", ["float64", "float32"])
+def test_the_numba_sums_start_at_the_first_sample_whatever_they_held(precision):
+    """The accumulator's sums are not zeroed: a range from sample 0 writes them, a first
+    range past 0 zeroes them; its last pass hands float64 sums over as the image."""
+    from rtfgu.kernels import NumbaAccumulator
+    from rtfgu.renderer import pixel_sampler
+    whole = render(dof_scene(), W, H, "numba", precision, spp=9)
+
+    def accumulator():
+        accumulate = NumbaAccumulator(dof_scene(), W, H, precision, sampler=pixel_sampler(dof_scene(), 9))
+        accumulate.sums[...] = np.nan                       # what a fresh np.empty may hold
+        return accumulate
+    accumulate = accumulator()
+    accumulate((0, 4))
+    assert np.array_equal(accumulate((4, 9), last=True), whole)
+    if precision == "float64":
+        assert accumulate.sums is None
+        with pytest.raises(ValueError, match="last pass"):
+            accumulate((0, 9))
+    again = accumulator()
+    again((0, 9))
+    assert np.array_equal(again((0, 9)), whole)             # from sample 0 again: written over
+    later = accumulator()
+    assert np.isfinite(later((4, 9))).all()                 # samples 4..8 alone: zeroed first
+
+
 def test_the_seed_decides_the_image(backend):
     name, precision = backend
     a = render(dof_scene(), W, H, name, precision, seed=5)

@@ -120,11 +120,21 @@ class NumbaAccumulator:
         self.size = (width, height)
         self.formula = formula
         self.seed = seed
-        self.sums = np.zeros((height, width, 3), dtype=self.flat.dtype)
+        # Not zeroed: the kernel writes the sums of a range that starts at sample 0.
+        self.sums = np.empty((height, width, 3), dtype=self.flat.dtype)
+        self.started = False
         self.counts = np.zeros(3, dtype=np.int64)
 
-    def __call__(self, samples, progress=None) -> np.ndarray:
-        """The float64 image so far, refused (check_finite_image) where not finite."""
+    def __call__(self, samples, progress=None, last=False) -> np.ndarray:
+        """The float64 image so far, refused (check_finite_image) where not finite. With
+        ``last`` (no pass follows), float64 sums become the image, divided in place: a render
+        then holds one image-sized array, not two, and the accumulator none (a call after it
+        is refused)."""
+        if self.sums is None:
+            raise ValueError("NumbaAccumulator: its last pass has given its sums away as the image")
+        if samples[0] > 0 and not self.started:
+            self.sums[...] = 0
+        self.started = True
         width, height = self.size
         args, tiles = kernel_arguments(self.flat, width, height, self.formula, self.sampler,
                                        self.seed, samples)
@@ -133,8 +143,12 @@ class NumbaAccumulator:
         self.counts += counts.sum(axis=0)
         if progress is not None:
             progress(height, height)
-        image = np.empty(self.sums.shape)
-        if mean_image(self.sums, self.flat.dtype(samples[1]), image):
+        sums = self.sums
+        if last and sums.dtype == np.float64:
+            image, self.sums = sums, None
+        else:
+            image = np.empty(sums.shape)
+        if mean_image(sums, self.flat.dtype(samples[1]), image):
             check_finite_image(image, "numba")
         return image
 
@@ -152,7 +166,7 @@ def render_numba(scene, width: int, height: int, precision: str = "float64",
     DEFAULT_SPHERE_FORMULA. ``spp``, ``seed``: as rtfgu.render."""
     sampler = pixel_sampler(scene, spp)
     accumulate = NumbaAccumulator(scene, width, height, precision, formula, sampler, seed)
-    image = accumulate((0, 1 if sampler is None else sampler.num_samples))
+    image = accumulate((0, 1 if sampler is None else sampler.num_samples), last=True)
     if with_counts:
         return image, accumulate.ray_counts
     return image

@@ -352,6 +352,10 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     n_secondary = 0
     n_primary = 0
     one = lit(1, camera_row[0])
+    if first == 0:
+        # A render's first samples start its sums (0 + v is v, bit for bit): the image need
+        # not be zeroed before.
+        image[height - y1:height - y0, x0:x1, :] = lit(0, one)
     for iy in range(y0, y1):
         for ix in range(x0, x1):
             pixel = (height - 1 - iy) * width + ix
@@ -393,7 +397,8 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
 def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sampler, tile_stride,
                   image, counts):
     """Add the samples settings[4] <= s < settings[5] of every pixel to ``image`` (height,
-    width, 3), row 0 at the top, and fill ``counts`` (tiles, 3); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
+    width, 3), row 0 at the top (samples from 0 are written over what it held), and fill
+    ``counts`` (tiles, 3); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
     holds its per-frame terms and culling cones, so each tile tests only the rows its
     primary rays can hit; otherwise it is None."""
     width, height = size

@@ -235,8 +235,9 @@ class WGPUAccumulator:
         self.seed = seed
         self.tile = tile
 
-    def __call__(self, samples, progress=None) -> np.ndarray:
-        """The float64 image so far, refused (check_finite_image) where not finite."""
+    def __call__(self, samples, progress=None, last=False) -> np.ndarray:
+        """The float64 image so far, refused (check_finite_image) where not finite; a new
+        array on every call, ``last`` or not (rtfgu.kernels.NumbaAccumulator's ``last``)."""
         width, height = self.size
         sums = self.compiled.render(width, height, self.tile, progress, self.seed, samples)
         image = (sums / np.float32(samples[1])).astype(np.float64)
