@@ -13,9 +13,10 @@ cannot run is named in the section with the reason instead of a figure.
 
 Scene: the Cornell box with its blocks, every face a path-traced Matte (kd 1: the albedo is
 its colour; rtfgu.scenes.meshes.cornell_box_area_light()'s box), lit by its ceiling quad (one
-Rectangle and its AreaLight: cornell_reference.ceiling_lamp) with ``scene.tracer = PathTrace()`` (max_depth 64, Russian roulette), the scene
-of benchmarks/cornell_reference.py; Mitsuba gets it through benchmarks/mitsuba_scene.py
-(``path`` integrator, max_depth -1: unbounded, Russian roulette from depth 5).
+Rectangle and its AreaLight: cornell_reference.ceiling_lamp) with ``scene.tracer =
+PathTrace()`` (max_depth 64, Russian roulette), the scene of benchmarks/cornell_reference.py;
+Mitsuba gets it through benchmarks/mitsuba_scene.py (``path`` integrator, max_depth -1:
+unbounded, Russian roulette from depth 5).
 
 Reference: tests/data/cornell_mitsuba.npz, SIZE x SIZE, Mitsuba 3 at 65,536 samples per
 pixel (seeds 0..63, one per pass). Its own error is the root mean square of its per-pixel

@@ -20,6 +20,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from benchmark_scripts import benchmark_script
 from rtfgu import PathTrace, render
 from rtfgu.scenes.meshes import cornell_box_area_light
 
@@ -39,16 +40,11 @@ def cornell():
 
 
 def benchmark_scene():
-    """benchmarks/cornell_reference.py's scene (a script folder, not a package): the box of
-    cornell(), its lamp's two triangles one Rectangle (ceiling_lamp)."""
-    import importlib.util
-    path = Path(__file__).resolve().parent.parent / "benchmarks" / "cornell_reference.py"
-    spec = importlib.util.spec_from_file_location("rtfgu_cornell_reference", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    scene = module.cornell_scene()
+    """benchmarks/cornell_reference.py's scene: the box of cornell(), its lamp's two
+    triangles one Rectangle (ceiling_lamp)."""
+    scene = benchmark_script("cornell_reference").cornell_scene()
     scene.tracer = PathTrace()
-    return scene, module
+    return scene
 
 
 def z_scores(path, bias=1.0, scene=cornell):
@@ -103,12 +99,12 @@ def test_the_benchmarks_rectangle_lamp_agrees_with_mitsuba():
     same image as the reference, which Mitsuba made from the triangles."""
     class Numba:
         backend, precision = "numba", "float32"
-    scene, _ = benchmark_scene()
+    scene = benchmark_scene()
     lamps = [light.shape for light in scene.lights]
     assert [type(shape).__name__ for shape in lamps] == ["Rectangle"]
     assert lamps[0].normal.y == -1.0                     # facing down, into the box, as the triangles
     assert not any(type(s).__name__ == "MeshTriangle" and s.material is lamps[0].material for s in scene.shapes)
-    z, ratio = z_scores(Numba(), scene=lambda: benchmark_scene()[0])
+    z, ratio = z_scores(Numba(), scene=benchmark_scene)
     failed = agrees(z, ratio)
     assert not failed, "the rectangle lamp against Mitsuba 3: %s" % "; ".join(failed)
 
@@ -116,7 +112,7 @@ def test_the_benchmarks_rectangle_lamp_agrees_with_mitsuba():
 def test_the_rectangle_lamp_is_refused_for_other_lights():
     from rtfgu.lights import PointLight
     from rtfgu.float3 import Float3
-    scene, module = benchmark_scene()
+    scene = benchmark_scene()
     scene.lights.append(PointLight(Float3(0.3, 0.5, 0.3), Float3(1.0)))
     with pytest.raises(ValueError, match="ceiling_lamp: the scene's lights"):
-        module.ceiling_lamp(scene)
+        benchmark_script("cornell_reference").ceiling_lamp(scene)

@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from benchmark_scripts import benchmark_script
 from rtfgu.image import to_8bit
 from rtfgu.renderer import lens_sample, pixel_sampler, render, trace
 from rtfgu.sampling import concentric_map
@@ -188,14 +189,8 @@ def test_float32_runs_in_float32():
 
 
 def _benchmark_scene(name):
-    """A scene of benchmarks/scenes.py (a script folder, not a package)."""
-    import importlib.util
-    from pathlib import Path
-    path = Path(__file__).resolve().parent.parent / "benchmarks" / "scenes.py"
-    spec = importlib.util.spec_from_file_location("rtfgu_benchmark_scenes", path)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return getattr(module, name)()
+    """A scene of benchmarks/scenes.py."""
+    return getattr(benchmark_script("scenes"), name)()
 
 
 def test_tile_culling_loses_no_sphere():
