@@ -111,6 +111,7 @@ from rtfgu.accelerators import flat_bvh  # noqa: E402
 from rtfgu.kernels.camera import gen_ray  # noqa: E402
 from rtfgu.kernels.float3 import lit  # noqa: E402
 from rtfgu.kernels.mesh import mesh_closest  # noqa: E402
+from rtfgu.kernels.packet import PACKET, mesh_closest_packet  # noqa: E402
 
 from bench import cpu_model, replace_section  # noqa: E402
 
@@ -181,6 +182,7 @@ class Rays:
     name: str
     origins: np.ndarray     # (n, 3) float64
     directions: np.ndarray  # (n, 3) float64, unit
+    grid: int = 0           # a camera's grid x grid rays, row by row; 0: not a camera's
     origins32: np.ndarray = field(init=False)
     directions32: np.ndarray = field(init=False)
 
@@ -217,7 +219,7 @@ def primary_rays(vertices: np.ndarray, size: int, view=(0.35, -0.3, -1.0)) -> Ra
     sx, sy = np.meshgrid(s, -s)
     directions = normalized(sx[..., None] * u + sy[..., None] * v + w).reshape(-1, 3)
     return Rays("%dx%d primary" % (size, size), np.broadcast_to(eye, directions.shape).copy(),
-                directions)
+                directions, size)
 
 
 def incoherent_rays(vertices: np.ndarray, count: int, seed: int = RAY_SEED) -> Rays:
@@ -292,6 +294,52 @@ def closest_hits(vertices, faces4, nodes, links, origins, directions, t_out, fac
         face_out[i] = hit[1]
 
 
+# A packet: TILE_W x TILE_H neighbouring rays of a camera's grid (PACKET of them).
+TILE_W = TILE_H = 4
+assert TILE_W * TILE_H == PACKET
+
+
+@njit(parallel=True, error_model="numpy")
+def closest_hits_packets(vertices, faces4, nodes, links, origins, directions, size, t_out, face_out):
+    """closest_hits for a camera's size x size rays (row by row) on the wide tree, traced as
+    packets of the TILE_W x TILE_H rays of a tile (rtfgu.kernels.packet): each tile's rays
+    are copied into a packet, traced, and their t and face copied back. A thread takes a
+    block of rows of tiles and its packet buffers once."""
+    tiles_x = (size + TILE_W - 1) // TILE_W
+    tiles_y = (size + TILE_H - 1) // TILE_H
+    blocks = min(tiles_y, 64)
+    tmin = lit(0, origins[0, 0])
+    for b in prange(blocks):
+        o = np.empty((PACKET, 3), dtype=origins.dtype)
+        d = np.empty((PACKET, 3), dtype=origins.dtype)
+        t = np.empty(PACKET, dtype=origins.dtype)
+        best = np.empty(PACKET, dtype=np.int64)
+        kind = np.empty(PACKET, dtype=np.int64)
+        row = np.empty(PACKET, dtype=np.int64)
+        for ty in range(b * tiles_y // blocks, (b + 1) * tiles_y // blocks):
+            for tx in range(tiles_x):
+                count = 0
+                for y in range(ty * TILE_H, min(ty * TILE_H + TILE_H, size)):
+                    for x in range(tx * TILE_W, min(tx * TILE_W + TILE_W, size)):
+                        r = y * size + x
+                        for a in range(3):
+                            o[count, a] = origins[r, a]
+                            d[count, a] = directions[r, a]
+                        t[count] = math.inf
+                        best[count] = -1
+                        kind[count] = -1
+                        row[count] = -1
+                        count += 1
+                # no spheres in the BVH (None), formula 0 (used by spheres only)
+                mesh_closest_packet(vertices, faces4, nodes, links, None, o, d, count, tmin, t, best, kind, row, 0)
+                count = 0
+                for y in range(ty * TILE_H, min(ty * TILE_H + TILE_H, size)):
+                    for x in range(tx * TILE_W, min(tx * TILE_W + TILE_W, size)):
+                        t_out[y * size + x] = t[count]
+                        face_out[y * size + x] = best[count]
+                        count += 1
+
+
 def bvh_of(mesh: MeshArrays):
     """rtfgu's BVH over the mesh's faces and the (F, 4) faces in its leaf order, each with
     its index in the mesh's face list (what rtfgu.layout.compile_scene makes of a mesh)."""
@@ -333,8 +381,20 @@ class Rtfgu(System):
                              t, face)
                 return t, face
             return Path_(self.name, precision, self.threads, run, note=note)
+        def packets(precision):
+            def run(rays):
+                if not rays.grid:
+                    raise ValueError("packets are a camera's tiles; these rays are not a camera's")
+                origins, directions = rays.of(precision)
+                t = np.empty(len(origins), dtype=origins.dtype)
+                face = np.empty(len(origins), dtype=np.int64)
+                closest_hits_packets(self.vertices[precision], self.faces4, self.wide.nodes, self.wide.links,
+                                     origins, directions, rays.grid, t, face)
+                return t, face
+            return Path_(self.name + " packets", precision, self.threads, run,
+                         note="the wide tree, packets of %dx%d rays (rtfgu.kernels.packet)" % (TILE_W, TILE_H))
         binary = "the binary tree (the render's where the CPU has no AVX)"
-        return [path("float64", self.wide.nodes), path("float32", self.wide.nodes),
+        return [path("float64", self.wide.nodes), path("float32", self.wide.nodes), packets("float32"),
                 path("float64", self.bvh.nodes, binary), path("float32", self.bvh.nodes, binary)]
 
     def bytes_per_triangle(self):
@@ -1134,7 +1194,8 @@ def plot(measured, title, path):
     import matplotlib.ticker
 
     def label_of(p):
-        return "%s %s, %s" % (p.system, p.precision,
+        return "%s%s %s, %s" % (p.system, " (binary tree)" if p.note.startswith("the binary tree") else "",
+                                p.precision,
                               p.device if p.device else "%d thr." % p.threads)
 
     groups = list(dict.fromkeys((m.mesh, m.rays) for m in measured))

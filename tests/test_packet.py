@@ -1,0 +1,209 @@
+"""Packets of rays through the wide BVH (rtfgu.kernels.packet): box_rays is box8 ray by ray
+(the same lanes entered, the same nearest entry), and a packet gives every ray the face, t
+and tie of mesh_closest alone, and of the loop over all faces, in both precisions: on a
+camera's tiles (coherent, the packet path down to the leaves) and on scattered rays (the
+packet drops to single rays), with a bound given on entry, for partial packets, and with no
+leak from inside a closed mesh."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from numba import njit, prange
+
+from rtfgu.kernels.float3 import lit, lit_per_precision
+from rtfgu.kernels.mesh import WIDEN32, WIDEN64, _inverse, mesh_closest
+from rtfgu.kernels.packet import OX, PACKET, REACH, RAY_ROWS, box_rays, mesh_closest_packet, _rays_of
+from rtfgu.kernels.wide_bvh import box8, lanes_of
+
+from test_wide_bvh import PRECISIONS, closed_mesh, hard_rays, looped, soup, tree_of
+
+
+@njit(error_model="numpy")
+def _both(nodes, n, origins, directions, count, reach, masks, nears, single):
+    tmin = lit(0, origins[0, 0])
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    rays = _rays_of(tmin)
+    entry = lanes_of(tmin)
+    for i in range(count):
+        inv = _inverse((directions[i, 0], directions[i, 1], directions[i, 2]))[0]
+        for a in range(3):
+            rays[(OX + a) * PACKET + i] = origins[i, a]
+            rays[(OX + 3 + a) * PACKET + i] = inv[a]
+        rays[REACH * PACKET + i] = reach[i]
+        single[i] = box8(nodes, n, (origins[i, 0], origins[i, 1], origins[i, 2]), inv, tmin, reach[i], widen, entry)
+        for j in range(8):
+            nears[j, 1 + i] = entry[j]
+    live = (np.int64(1) << count) - 1
+    for j in range(8):
+        masks[j], nears[j, 0] = box_rays(nodes, n, j, rays, live, tmin, widen)
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_box_rays_is_box8_ray_by_ray(dtype):
+    vertices, faces = soup(400, seed=2)
+    _, wide, _ = tree_of(vertices, faces)
+    rng = np.random.default_rng(5)
+    assert RAY_ROWS == 7
+    mismatches, entered = [], 0
+    for trial in range(300):
+        count = int(rng.integers(1, PACKET + 1))
+        origins, directions = hard_rays(vertices, count, seed=trial)
+        reach = rng.choice([math.inf, 0.5, 2.0], count).astype(dtype)
+        n = int(rng.integers(0, len(wide.nodes)))
+        masks = np.empty(8, dtype=np.int64)
+        nears = np.empty((8, 1 + count), dtype=dtype)
+        single = np.empty(count, dtype=np.int64)
+        _both(wide.nodes, n, origins.astype(dtype), directions.astype(dtype), count, reach, masks, nears, single)
+        for j in range(8):
+            expected = sum(1 << i for i in range(count) if single[i] >> j & 1)
+            lanes = [nears[j, 1 + i] for i in range(count) if single[i] >> j & 1]
+            nearest = dtype(min(lanes)) if lanes else dtype(math.inf)
+            entered += bool(expected)
+            if masks[j] != expected or nears[j, 0].tobytes() != nearest.tobytes():
+                mismatches.append((trial, j, masks[j], expected, nears[j, 0], nearest))
+    assert entered > 100                      # the rays do enter boxes
+    assert not mismatches, mismatches[:3]
+
+
+@njit(parallel=True, error_model="numpy")
+def _packets(vertices, faces, nodes, links, origins, directions, bound, hits):
+    """Every PACKET consecutive rays as one packet (the last one partial), each starting
+    from its ``bound`` (t, index)."""
+    n = origins.shape[0]
+    for g in prange((n + PACKET - 1) // PACKET):
+        first = g * PACKET
+        count = min(PACKET, n - first)
+        o = origins[first:first + count]
+        d = directions[first:first + count]
+        t = bound[first:first + count, 0].astype(origins.dtype)
+        best = bound[first:first + count, 1].astype(np.int64)
+        kind = np.full(count, -1, dtype=np.int64)
+        row = np.full(count, -1, dtype=np.int64)
+        mesh_closest_packet(vertices, faces, nodes, links, None, o, d, count, lit(0, origins[0, 0]), t, best, kind,
+                            row, 0)
+        for i in range(count):
+            hits[first + i, 0] = t[i]
+            hits[first + i, 1] = best[i]
+            hits[first + i, 2] = row[i]
+
+
+@njit(parallel=True, error_model="numpy")
+def _singles(vertices, faces, nodes, links, origins, directions, bound, hits):
+    for i in prange(origins.shape[0]):
+        tmin = lit(0, origins[i, 0])
+        t, best, _, row = mesh_closest(vertices, faces, nodes, links, None,
+                                       (origins[i, 0], origins[i, 1], origins[i, 2]),
+                                       (directions[i, 0], directions[i, 1], directions[i, 2]), tmin,
+                                       (lit(bound[i, 0], tmin), np.int64(bound[i, 1]), -1, -1), 0)
+        hits[i, 0] = t
+        hits[i, 1] = best
+        hits[i, 2] = row
+
+
+def run(kernel, vertices, rows, wide, origins, directions, dtype, bound=None):
+    if bound is None:
+        bound = np.tile([math.inf, -1.0], (len(origins), 1))
+    hits = np.empty((len(origins), 3), dtype=np.float64)
+    kernel(vertices.astype(dtype), rows, wide.nodes, wide.links, origins.astype(dtype), directions.astype(dtype),
+           bound, hits)
+    return hits
+
+
+def camera_tiles(vertices, size):
+    """A pinhole's size x size rays at the mesh, ordered a 4 x 4 tile after another (each
+    tile one packet), from a corner so that rays graze it."""
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    eye = hi + (hi - lo) * 1.5
+    w = (lo + hi) / 2 - eye
+    w /= np.linalg.norm(w)
+    u = np.cross(w, (0.0, 1.0, 0.0))
+    u /= np.linalg.norm(u)
+    v = np.cross(u, w)
+    s = (2 * (np.arange(size) + 0.5) / size - 1) * 0.25
+    sx, sy = np.meshgrid(s, -s)
+    directions = (sx[..., None] * u + sy[..., None] * v + w).reshape(size // 4, 4, size // 4, 4, 3)
+    directions = directions.transpose(0, 2, 1, 3, 4).reshape(-1, 3)
+    return np.broadcast_to(eye, directions.shape).copy(), directions
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+@pytest.mark.parametrize("mesh", ["soup", "icosphere", "coincident"])
+@pytest.mark.parametrize("rays", ["tiles", "scattered"])
+def test_a_packet_finds_every_rays_face_and_t_of_mesh_closest(rays, mesh, dtype):
+    if mesh == "soup":
+        vertices, faces = soup(3000, seed=4)
+    elif mesh == "icosphere":
+        vertices, faces = closed_mesh(4)
+    else:
+        # each face twice, at the same place: every hit is a tie, the earlier copy wins
+        vertices, faces = soup(500, seed=8)
+        faces = np.concatenate([faces, faces])[np.random.default_rng(0).permutation(1000)]
+    _, wide, rows = tree_of(vertices, faces)
+    if rays == "tiles":
+        origins, directions = camera_tiles(vertices, 64)
+    else:
+        origins, directions = hard_rays(vertices, 20003, seed=9)     # the last packet partial
+    packed = run(_packets, vertices, rows, wide, origins, directions, dtype)
+    single = run(_singles, vertices, rows, wide, origins, directions, dtype)
+    truth = looped(vertices, rows, origins, directions, dtype)
+    assert (truth[:, 1] >= 0).mean() > 0.2 and (truth[:, 1] < 0).any()     # rays hit, and miss
+    assert single.tobytes() == truth.tobytes()
+    assert packed.tobytes() == truth.tobytes()
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_a_packet_keeps_each_rays_bound_and_tie_rule(dtype):
+    # The bound on entry is the nearest hit so far of shapes outside the tree (their scene
+    # index): a face beyond it is not taken, one at its t is taken only if its index is lower.
+    vertices, faces = soup(2000, seed=3)
+    _, wide, rows = tree_of(vertices, faces)
+    origins, directions = camera_tiles(vertices, 48)
+    free = run(_singles, vertices, rows, wide, origins, directions, dtype)
+    hit = free[:, 1] >= 0
+    rng = np.random.default_rng(1)
+    bound = np.tile([math.inf, -1.0], (len(origins), 1))
+    pick = rng.integers(0, 4, len(origins))
+    bound[pick == 0, 0] = 0.5 * np.where(hit, free[:, 0], 1.0)[pick == 0]       # a nearer hit outside
+    bound[pick == 1, 0] = np.where(hit, free[:, 0], 1.0)[pick == 1]             # a tie at the face's t
+    bound[pick == 1, 1] = rng.integers(0, len(faces), (pick == 1).sum())
+    bound[pick == 2, 0] = 2.0 * np.where(hit, free[:, 0], 1.0)[pick == 2]       # a farther one
+    bound[pick == 2, 1] = len(faces) + 1
+    packed = run(_packets, vertices, rows, wide, origins, directions, dtype, bound)
+    single = run(_singles, vertices, rows, wide, origins, directions, dtype, bound)
+    assert packed.tobytes() == single.tobytes()
+    # the bound held: no ray of pick 0 took a face, and some of pick 1 kept the outside index
+    assert (packed[(pick == 0) & hit, 2] == -1).all()
+    tie = (pick == 1) & hit
+    assert ((packed[tie, 1] == bound[tie, 1]) & (packed[tie, 2] == -1)).any()
+    assert (packed[(pick == 3) & hit, 2] >= 0).all()
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_no_ray_of_a_packet_from_inside_a_closed_mesh_leaks(dtype):
+    vertices, faces = closed_mesh(3)
+    _, wide, rows = tree_of(vertices, faces)
+    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in faces for a in range(3)}
+    targets = np.concatenate([vertices, [(vertices[i] + vertices[j]) * 0.5 for i, j in sorted(edges)]])
+    for origin in ((0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)):
+        origins = np.tile(origin, (len(targets), 1))
+        hits = run(_packets, vertices, rows, wide, origins, targets - origins, dtype)
+        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(targets))
+
+
+@njit(error_model="numpy")
+def _one_packet(vertices, faces, nodes, origins, directions, count):
+    t = np.full(PACKET + 1, math.inf)
+    best = np.full(PACKET + 1, -1, dtype=np.int64)
+    mesh_closest_packet(vertices, faces, nodes, nodes.view(np.int32), None, origins, directions, count, 0.0, t, best,
+                        best.copy(), best.copy(), 0)
+
+
+@pytest.mark.parametrize("count", [0, PACKET + 1])
+def test_a_packet_of_no_rays_or_too_many_is_refused(count):
+    vertices, faces = soup(10, seed=1)
+    _, wide, rows = tree_of(vertices, faces)
+    rays = np.ones((PACKET + 1, 3))
+    with pytest.raises(ValueError, match="1 to PACKET rays"):
+        _one_packet(vertices, rows, wide.nodes, rays, rays, count)
