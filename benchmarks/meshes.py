@@ -32,6 +32,11 @@ The paths (``System.paths``):
   rtfgu numba    rtfgu.accelerators.flat_bvh.build over the faces' boxes, the faces permuted
                  into leaf order, and rtfgu.kernels.mesh.mesh_closest called per ray by a
                  prange kernel (closest_hits); float64 and float32 on the one node table.
+  rtfgu numba packets  the same wide tree and faces, a camera's rays traced 4 x 4 neighbours
+                 at a time (closest_hits_packets, rtfgu.kernels.packet.mesh_closest_packet),
+                 float32; on the primary rays only (incoherent rays are not a camera's
+                 tiles: the row says so). Each tile's rays are copied into a packet and
+                 their t and face back, within the timed call.
   rtfgu WGSL     the same build's node table, faces and float32 vertices in storage buffers
                  and rtfgu/wgsl/intersect_mesh.wgsl's mesh_closest (the render's traversal)
                  called per ray by a small entry point (WGSL_MAIN), assembled and compiled
