@@ -336,7 +336,7 @@ def closest_hits_packets(vertices, faces4, nodes, links, origins, directions, si
                         row[count] = -1
                         count += 1
                 # no spheres in the BVH (None), formula 0 (used by spheres only)
-                mesh_closest_packet(vertices, faces4, nodes, links, None, o, d, count, tmin, t, best, kind, row, 0)
+                mesh_closest_packet(vertices, faces4, nodes, links, None, (o, d, count, tmin), (t, best, kind, row), 0)
                 count = 0
                 for y in range(ty * TILE_H, min(ty * TILE_H + TILE_H, size)):
                     for x in range(tx * TILE_W, min(tx * TILE_W + TILE_W, size)):

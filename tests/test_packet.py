@@ -17,7 +17,7 @@ from rtfgu.kernels.mesh import WIDEN32, WIDEN64, _inverse, mesh_closest
 from rtfgu.kernels.packet import OX, PACKET, REACH, RAY_ROWS, box_rays, mesh_closest_packet, _rays_of
 from rtfgu.kernels.wide_bvh import box8, lanes_of
 
-from test_wide_bvh import PRECISIONS, closed_mesh, hard_rays, looped, soup, tree_of
+from test_wide_bvh import PRECISIONS, closed_mesh, hard_rays, looped, soup, traversal_mesh, tree_of
 
 
 @njit(error_model="numpy")
@@ -81,8 +81,8 @@ def _packets(vertices, faces, nodes, links, origins, directions, bound, hits):
         best = bound[first:first + count, 1].astype(np.int64)
         kind = np.full(count, -1, dtype=np.int64)
         row = np.full(count, -1, dtype=np.int64)
-        mesh_closest_packet(vertices, faces, nodes, links, None, o, d, count, lit(0, origins[0, 0]), t, best, kind,
-                            row, 0)
+        mesh_closest_packet(vertices, faces, nodes, links, None, (o, d, count, lit(0, origins[0, 0])),
+                            (t, best, kind, row), 0)
         for i in range(count):
             hits[first + i, 0] = t[i]
             hits[first + i, 1] = best[i]
@@ -132,14 +132,7 @@ def camera_tiles(vertices, size):
 @pytest.mark.parametrize("mesh", ["soup", "icosphere", "coincident"])
 @pytest.mark.parametrize("rays", ["tiles", "scattered"])
 def test_a_packet_finds_every_rays_face_and_t_of_mesh_closest(rays, mesh, dtype):
-    if mesh == "soup":
-        vertices, faces = soup(3000, seed=4)
-    elif mesh == "icosphere":
-        vertices, faces = closed_mesh(4)
-    else:
-        # each face twice, at the same place: every hit is a tie, the earlier copy wins
-        vertices, faces = soup(500, seed=8)
-        faces = np.concatenate([faces, faces])[np.random.default_rng(0).permutation(1000)]
+    vertices, faces = traversal_mesh(mesh)
     _, wide, rows = tree_of(vertices, faces)
     if rays == "tiles":
         origins, directions = camera_tiles(vertices, 64)
@@ -196,8 +189,8 @@ def test_no_ray_of_a_packet_from_inside_a_closed_mesh_leaks(dtype):
 def _one_packet(vertices, faces, nodes, origins, directions, count):
     t = np.full(PACKET + 1, math.inf)
     best = np.full(PACKET + 1, -1, dtype=np.int64)
-    mesh_closest_packet(vertices, faces, nodes, nodes.view(np.int32), None, origins, directions, count, 0.0, t, best,
-                        best.copy(), best.copy(), 0)
+    mesh_closest_packet(vertices, faces, nodes, nodes.view(np.int32), None, (origins, directions, count, 0.0),
+                        (t, best, best.copy(), best.copy()), 0)
 
 
 @pytest.mark.parametrize("count", [0, PACKET + 1])

@@ -94,6 +94,17 @@ def soup(count, seed, spread=1.0, size=0.3):
     return vertices, np.arange(3 * count).reshape(count, 3)
 
 
+def traversal_mesh(name):
+    """The traversal tests' meshes: "soup", "icosphere" (closed), or "coincident": each face
+    twice at the same place, so every hit is a tie that the earlier copy wins."""
+    if name == "soup":
+        return soup(3000, seed=4)
+    if name == "icosphere":
+        return closed_mesh(4)
+    vertices, faces = soup(500, seed=8)
+    return vertices, np.concatenate([faces, faces])[np.random.default_rng(0).permutation(1000)]
+
+
 def closed_mesh(subdivisions=3):
     sphere = trimesh.creation.icosphere(subdivisions=subdivisions)
     return np.asarray(sphere.vertices, dtype=np.float64), np.asarray(sphere.faces, dtype=np.int64)
@@ -308,14 +319,7 @@ def test_the_vector_box_test_is_the_scalar_one_lane_by_lane(dtype):
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 @pytest.mark.parametrize("mesh", ["soup", "icosphere", "coincident"])
 def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dtype):
-    if mesh == "soup":
-        vertices, faces = soup(3000, seed=4)
-    elif mesh == "icosphere":
-        vertices, faces = closed_mesh(4)
-    else:
-        # each face twice, at the same place: every hit is a tie, the earlier copy wins
-        vertices, faces = soup(500, seed=8)
-        faces = np.concatenate([faces, faces])[np.random.default_rng(0).permutation(1000)]
+    vertices, faces = traversal_mesh(mesh)
     bvh, wide, rows = tree_of(vertices, faces)
     origins, directions = hard_rays(vertices, 20000, seed=9)
     binary = traced(vertices, rows, bvh.nodes, origins, directions, dtype)

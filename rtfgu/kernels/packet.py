@@ -152,12 +152,15 @@ def rays_within(typingctx, rays, mask, near):
 
 
 @njit(cache=True, error_model="numpy")
-def mesh_closest_packet(vertices, faces, nodes, links, spheres, origins, directions, count, tmin, t, best, kind,
-                        row, formula, root=0, instances=(None, None, None)):
-    """mesh_closest for the rays 0 <= r < count (count <= PACKET) of ``origins`` and
-    ``directions`` (at least count rows of 3) in one traversal of the wide tree ``nodes``,
-    in [tmin, ...): each ray's nearest hit so far is (t[i], best[i], kind[i], row[i]) on
-    entry (mesh_closest's ``hit``) and its nearest hit on return."""
+def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, formula, root=0,
+                        instances=(None, None, None)):
+    """mesh_closest for the rays 0 <= r < count (count <= PACKET) of ``packet`` = (origins,
+    directions, count, tmin), origins and directions at least count rows of 3, in one
+    traversal of the wide tree ``nodes``, in [tmin, ...): with ``hits`` = (t, best, kind,
+    row), each ray's nearest hit so far is (t[i], best[i], kind[i], row[i]) on entry
+    (mesh_closest's ``hit``) and its nearest hit on return."""
+    origins, directions, count, tmin = packet
+    t, best, kind, row = hits
     if count < 1 or count > PACKET:
         raise ValueError("mesh_closest_packet: a packet holds 1 to PACKET rays")
     widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
