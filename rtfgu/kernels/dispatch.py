@@ -34,6 +34,7 @@ from pathlib import Path
 
 from .. import layout
 from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_IDS, SHAPES, TEXTURES
+from .inline_typing import cache_inline_typing
 
 # The texels' place in the kernels' ``scene`` tuple; a table per texture kind follows.
 TEXELS = 3
@@ -686,6 +687,7 @@ def load():
 
 
 use_versioned_cache()
+cache_inline_typing()
 _quiet_inlined_loops()
 _generated = load()
 intersect_scene = _generated.intersect_scene
