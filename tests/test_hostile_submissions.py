@@ -727,16 +727,18 @@ def test_the_gradebook_error_column_names_why_tests_could_not_judge_the_code(tmp
     for student, changed in variants.items():
         write_files(dict(solved, **changed), tmp_path / "class" / student)
     line = solved["materials/matte.py"].splitlines().index("    def ambient(self, sr, wo) -> Float3:") + 1
-    path = grade_all("a04", tmp_path / "class", tmp_path / "out", processes=2, time_limit=1)
+    # An honest test takes well under a second alone; the limit leaves room for a loaded
+    # machine (the suite's other worker compiling kernels), where 1 s timed honest tests out.
+    path = grade_all("a04", tmp_path / "class", tmp_path / "out", processes=2, time_limit=5)
     errors = {r["student"]: r["error"] for r in csv.DictReader(open(path))}
     assert errors["alice"] == ""
     assert errors["dave"].startswith("SyntaxError in materials/matte.py, line %d" % line), errors["dave"]
     # The loop's line (from the traceback dumped before the limit); the later tests that call
     # the stopped function fail at once, naming the test that found it.
     loop = solved["brdfs/lambertian.py"].splitlines().index(rho.rstrip("\n")) + 1
-    # Under load a test may run out of its second before it reaches the loop: it is counted
+    # Under load a test may run out of its time before it reaches the loop: it is counted
     # without a line, before the one that names the loop.
-    assert re.match(r"(time limit \(1 s\) \(\d+ tests?\); )?time limit \(1 s\) at brdfs/lambertian.py:(%d|%d) "
+    assert re.match(r"(time limit \(5 s\) \(\d+ tests?\); )?time limit \(5 s\) at brdfs/lambertian.py:(%d|%d) "
                     r"\(1 test\); time limit in test 4\.\d+ \(\d+ tests?\)" % (loop, loop + 1),
                     errors["erin"]), errors["erin"]
     assert "exception: RuntimeError: boom" in errors["fred"], errors["fred"]
