@@ -2,7 +2,7 @@
 
 The kernels pick a kind's code at compile time through overloads with ``inline="always"``
 (rtfgu.kernels.dispatch ``_overloaded``): the body for a kind the scene has, another for a
-kind it lacks. numba 0.5x-0.6x types such an overload's body again at every call of its
+kind it lacks. numba (0.68.1, the version read) types such an overload's body again at every call of its
 template (``_OverloadFunctionTemplate.generic``, numba/core/typing/templates.py): once per
 call site and once more at every round of type propagation that revisits the call, with
 the same argument types each time. In a render kernel the light loop was typed 7 times and
