@@ -315,8 +315,8 @@ def closest_hits_packets(vertices, faces4, nodes, links, origins, directions, si
     blocks = min(tiles_y, 64)
     tmin = lit(0, origins[0, 0])
     for b in prange(blocks):
-        o = np.empty((PACKET, 3), dtype=origins.dtype)
-        d = np.empty((PACKET, 3), dtype=origins.dtype)
+        o = np.empty(3 * PACKET, dtype=origins.dtype)
+        d = np.empty(3 * PACKET, dtype=origins.dtype)
         t = np.empty(PACKET, dtype=origins.dtype)
         best = np.empty(PACKET, dtype=np.int64)
         kind = np.empty(PACKET, dtype=np.int64)
@@ -328,8 +328,8 @@ def closest_hits_packets(vertices, faces4, nodes, links, origins, directions, si
                     for x in range(tx * TILE_W, min(tx * TILE_W + TILE_W, size)):
                         r = y * size + x
                         for a in range(3):
-                            o[count, a] = origins[r, a]
-                            d[count, a] = directions[r, a]
+                            o[3 * count + a] = origins[r, a]
+                            d[3 * count + a] = directions[r, a]
                         t[count] = math.inf
                         best[count] = -1
                         kind[count] = -1

@@ -75,8 +75,8 @@ def _packets(vertices, faces, nodes, links, origins, directions, bound, hits):
     for g in prange((n + PACKET - 1) // PACKET):
         first = g * PACKET
         count = min(PACKET, n - first)
-        o = origins[first:first + count]
-        d = directions[first:first + count]
+        o = origins[first:first + count].ravel()
+        d = directions[first:first + count].ravel()
         t = bound[first:first + count, 0].astype(origins.dtype)
         best = bound[first:first + count, 1].astype(np.int64)
         kind = np.full(count, -1, dtype=np.int64)
@@ -189,8 +189,8 @@ def test_no_ray_of_a_packet_from_inside_a_closed_mesh_leaks(dtype):
 def _one_packet(vertices, faces, nodes, origins, directions, count):
     t = np.full(PACKET + 1, math.inf)
     best = np.full(PACKET + 1, -1, dtype=np.int64)
-    mesh_closest_packet(vertices, faces, nodes, nodes.view(np.int32), None, (origins, directions, count, 0.0),
-                        (t, best, best.copy(), best.copy()), 0)
+    mesh_closest_packet(vertices, faces, nodes, nodes.view(np.int32), None,
+                        (origins.ravel(), directions.ravel(), count, 0.0), (t, best, best.copy(), best.copy()), 0)
 
 
 @pytest.mark.parametrize("count", [0, PACKET + 1])
@@ -200,3 +200,69 @@ def test_a_packet_of_no_rays_or_too_many_is_refused(count):
     rays = np.ones((PACKET + 1, 3))
     with pytest.raises(ValueError, match="1 to PACKET rays"):
         _one_packet(vertices, rows, wide.nodes, rays, rays, count)
+
+
+# --- through the render -------------------------------------------------------------------
+
+def _both_renders(scene, width, height, sampler=None):
+    """The float32 kernel's sums and ray counts with the pinhole's primary rays in packets and
+    without (the same arguments, only ``packets`` changed)."""
+    from rtfgu.kernels import kernel_arguments, render_kernel
+    from rtfgu.layout import compile_sampler, compile_scene
+
+    flat = compile_scene(scene, "float32")
+    args, tiles = kernel_arguments(flat, width, height, sampler=compile_sampler(sampler, "float32"),
+                                   samples=(0, 1 if sampler is None else sampler.num_samples))
+    out = {}
+    for packets in (None, 1):
+        run = list(args)
+        run[7] = args[7][:2] + (packets,)
+        sums = np.full((height, width, 3), np.nan, dtype=np.float32)
+        counts = np.zeros((tiles, 3), dtype=np.int64)
+        render_kernel(*run, sums, counts)
+        out[packets] = (sums, counts.sum(axis=0))
+    return args[7][2], out[None], out[1]
+
+
+def _vector_cpu() -> bool:
+    from rtfgu.kernels.wide_bvh import vector_cpu
+    return vector_cpu()
+
+
+@pytest.mark.parametrize("name", ["cornell_box_spheres", "suffern_18_area_lighting"])
+def test_the_render_gives_the_same_image_with_packets_as_without(name):
+    # Spheres the tree holds, with a mirror and a Transparent (a tile's stack of second
+    # rays); area lights sampled, several samples a pixel: the pixels are traced in another
+    # order, the sums must be the same bits.
+    from rtfgu.options import pixel_sampler
+    from rtfgu.scenes import SCENES
+
+    scene = SCENES[name]()
+    chosen, single, packed = _both_renders(scene, 37, 29, pixel_sampler(scene, None))   # blocks cut by the edges
+    assert chosen == (1 if _vector_cpu() else None)     # packets where the numba path has the wide tree
+    if not _vector_cpu():
+        pytest.skip("this CPU has no AVX: the numba path traverses the binary tree, which has no packets")
+    assert np.isfinite(single[0]).all() and single[0].std() > 0
+    assert single[0].tobytes() == packed[0].tobytes()
+    assert np.array_equal(single[1], packed[1])
+
+
+def test_a_packets_hit_is_weighed_against_a_plane_outside_the_tree_as_the_traversal_is():
+    # A mesh square lying in a plane: at every pixel the plane (outside the BVH) and a face
+    # of the tree meet at ts a rounding apart, or equal, where the shape earlier in
+    # Scene.shapes wins: the pixels mix the two colours, and packets must mix them alike.
+    import rtfgu
+    from rtfgu.float3 import Float3
+
+    square = rtfgu.Mesh(np.array([[-1.0, -1.0, 0.0], [1.0, -1.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 1.0, 0.0]]),
+                        np.array([[0, 1, 2], [0, 2, 3]]), (1.0, 0.0, 0.0))
+    plane = rtfgu.Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0), (0.0, 0.0, 1.0))
+    for first in (square, plane):
+        scene = rtfgu.Scene(rtfgu.PinholeCamera(Float3(0.3, 0.2, 3.0), Float3(0.0), Float3(0, 1, 0), 1.0))
+        scene.shapes += [first, plane if first is square else square]
+        chosen, single, packed = _both_renders(scene, 24, 24)
+        if chosen is None:
+            pytest.skip("this CPU has no AVX: no wide tree, no packets")
+        assert single[0].tobytes() == packed[0].tobytes()
+        centre = packed[0][8:16, 8:16].reshape(-1, 3)
+        assert (centre[:, 0] > 0).any() and (centre[:, 2] > 0).any()      # both shapes won pixels

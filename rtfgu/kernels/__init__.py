@@ -23,7 +23,8 @@ from ..tracers.whitted import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, render_kernel, scene_tuple, shape_arrays
+from .render import (PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, mesh_arrays, render_kernel,
+                     scene_tuple, shape_arrays)
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -97,6 +98,11 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     cast, path = (MAX_DEPTH if continues else None, flat.area_lighting, stacks), None
     if flat.max_depth:
         cast, path = None, (flat.max_depth, flat.lights_at_every_vertex)
+    # A pinhole's primary rays through the scene's wide BVH in packets (render_packet_tile),
+    # for the ray-cast tracer in float32 (float64 packets measured no faster: docs/bvh.md).
+    packets = 1 if (cast is not None and flat.camera_kind == PINHOLE and not flat.show_ray_direction
+                    and flat.dtype == np.float32 and flat.mesh is not None and flat.mesh.scene_tree
+                    and mesh_arrays(flat)[3].ndim == 3) else None
     scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
                 int(samples[1]))
@@ -105,7 +111,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     elif sampler is not None:
         sampler = (sampler.samples, sampler.shuffled, sampler.num_samples, sampler.num_sets)
     return ((width, height), (flat.camera_kind, camera, camera64), shapes, lights, scene, eye,
-            settings, (cast, path), sampler, _coprime_stride(tiles)), tiles
+            settings, (cast, path, packets), sampler, _coprime_stride(tiles)), tiles
 
 
 class NumbaAccumulator:

@@ -90,6 +90,19 @@ def _mesh_parts(k: int, kind, at: int) -> list:
     ]
 
 
+def _given_or_scan(name: str) -> str:
+    """given_or_scan_ of a mesh kind: scan_ (the BVH's traversal), or, where intersect_scene
+    is given the BVH's hit already (a packet's: rtfgu.kernels.packet) and told to take it, that
+    hit kept if nearer than ``hit`` by the tie rule: every hit is kept by the smaller (t, scene
+    index), so this is the hit the traversal would give."""
+    params = "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, hit, formula"
+    scan = "scan_%s(%s)" % (name, params)
+    return _overloaded("given_or_scan_" + name, "given, " + params, scan,
+                       "    if given[1]:\n        return nearer_hit(hit, given[0])\n    return " + scan,
+                       "The nearest hit among what the BVH holds, given the nearest so far, or the BVH's hit "
+                       "given")
+
+
 def _object_switch(name: str, params: str, call: str, mesh_call: str, default: str, doc: str) -> str:
     """``name(objects, kind, row, <params>)``: ``call`` (a format of the object kind's name,
     its instanced table in the tuple ``objects`` and ``params``) for the object's kind,
@@ -464,6 +477,7 @@ def source() -> str:
              "from rtfgu.kernels.lights import %s" % ", ".join(
                  ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),
              "from rtfgu.kernels.sampling import sampler_point, sampler_sets",
+             "from rtfgu.kernels.packet import mesh_closest_packet, nearer_hit",
              "from rtfgu.kernels.glossy import glossy_lobe",
              "from rtfgu.sampling.random import LIGHT_U",
              "from rtfgu.kernels.shaders import ends, surface, %s" % ", ".join(sorted(shader_names)),
@@ -495,9 +509,19 @@ def source() -> str:
             instance = at["instance"]
             mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d], shapes[%d], (shapes[%d], shapes[%d], %s)" % (
                 a, a + 1, a + 3, a + 4, at["sphere"], instance, instance + 1, _objects(instance))
-            calls.append("    hit = scan_%s(%s, origin, direction, tmin, hit, formula)" % (kind.name, mesh))
+            calls.append("    hit = given_or_scan_%s(given, %s, origin, direction, tmin, hit, formula)" % (kind.name, mesh))
             shadow_calls.append("    if any_hit_%s(%s, position, w_i, tmin, tmax, formula):\n        return True"
                                 % (kind.name, mesh))
+            parts.append(_given_or_scan(kind.name))
+            parts.append("\n".join([
+                "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+                "def trace_packet(shapes, origins, directions, count, tmin, t, best, kind, row, formula):",
+                '    """The nearest hits among what the scene\'s BVH holds of a packet of rays, as',
+                '    rtfgu.kernels.packet.mesh_closest_packet takes them (its wide tree: rtfgu.kernels.render',
+                '    packs a pinhole\'s rays only where the scene has one)."""',
+                "    mesh_closest_packet(shapes[%d], shapes[%d], shapes[%d], shapes[%d], shapes[%d], (origins, directions, "
+                "count, tmin), (t, best, kind, row), formula, 0, (shapes[%d], shapes[%d], %s))"
+                % (a, a + 1, a + 3, a + 4, at["sphere"], instance, instance + 1, _objects(instance))]))
             continue
         eye_args = "terms, candidates, n_candidates, " if kind.from_eye else ""
         if kind.instance:
@@ -509,8 +533,11 @@ def source() -> str:
                             % (kind.name, a, a + 1, shadow_args))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula):",
-        '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss."""',
+        "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula, "
+        "given=None):",
+        '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss.',
+        "    ``given``: None, or (the hit of what the BVH holds, found before: a packet's; whether to",
+        '    take it instead of traversing the BVH)."""',
         "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
@@ -697,3 +724,4 @@ shade = _generated.shade
 surface_color = _generated.surface_color
 direct_path = _generated.direct_path
 instance_t = _generated.instance_t
+trace_packet = _generated.trace_packet

@@ -52,6 +52,17 @@ RAY_ROWS = 7
 
 _rays_of = wide_bvh.on_the_stack(RAY_ROWS * PACKET, "A packet's rays, RAY_ROWS rows of PACKET lanes.")
 _per_ray = wide_bvh.on_the_stack(3 * PACKET, "Three values per ray of a packet.")
+lanes_of = wide_bvh.on_the_stack(PACKET, "A value per ray of a packet.")
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def nearer_hit(hit, other):
+    """The nearer of two hits (t, scene index, kind, row) by the tie rule: the smaller t, of
+    equal ts the smaller index (as mesh_closest keeps a face); ``other`` a miss (index -1)
+    never wins."""
+    if other[1] >= 0 and (other[0] < hit[0] or (other[0] == hit[0] and other[1] < hit[1])):
+        return other
+    return hit
 
 
 @intrinsic
@@ -155,10 +166,11 @@ def rays_within(typingctx, rays, mask, near):
 def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, formula, root=0,
                         instances=(None, None, None)):
     """mesh_closest for the rays 0 <= r < count (count <= PACKET) of ``packet`` = (origins,
-    directions, count, tmin), origins and directions at least count rows of 3, in one
-    traversal of the wide tree ``nodes``, in [tmin, ...): with ``hits`` = (t, best, kind,
-    row), each ray's nearest hit so far is (t[i], best[i], kind[i], row[i]) on entry
-    (mesh_closest's ``hit``) and its nearest hit on return."""
+    directions, count, tmin) in one traversal of the wide tree ``nodes``, in [tmin, ...): ray
+    r starts at origins[3r:3r + 3] in direction directions[3r:3r + 3] (flat arrays, or
+    pointers into a caller's frame: render_tile's packets); with ``hits`` = (t, best, kind,
+    row), its nearest hit so far is (t[r], best[r], kind[r], row[r]) on entry (mesh_closest's
+    ``hit``) and its nearest hit on return."""
     origins, directions, count, tmin = packet
     t, best, kind, row = hits
     if count < 1 or count > PACKET:
@@ -170,8 +182,8 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
     shear = _per_ray(tmin)
     o_k = _per_ray(tmin)
     for i in range(count):
-        origin = (origins[i, 0], origins[i, 1], origins[i, 2])
-        direction = (directions[i, 0], directions[i, 1], directions[i, 2])
+        origin = (origins[3 * i], origins[3 * i + 1], origins[3 * i + 2])
+        direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
         (kx, ky, kz, sx, sy, sz), (ox, oy, oz) = ray_frame(origin, direction)
         inv = _inverse(direction)[0]
         for a in range(3):
@@ -200,7 +212,7 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
                 i = trailing_zeros(live)
                 live &= live - 1
                 origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
-                direction = (directions[i, 0], directions[i, 1], directions[i, 2])
+                direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
                 if code >= 0:
                     hit = mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin,
                                        (t[i], best[i], kind[i], row[i]), formula, code, instances)

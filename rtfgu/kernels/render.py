@@ -15,12 +15,14 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
               (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
-    tracer    (cast, path), exactly one of them None: ``cast`` the ray-cast loop's
+    tracer    (cast, path, packets), cast or path None: ``cast`` the ray-cast loop's
               (bounces, sampled, stacks), bounces None when no shader continues a path (that
               code then compiles to nothing), else MAX_DEPTH; sampled: AreaLighting's area
               lights; stacks: (tiles, MAX_DEPTH, STACK_FIELDS) rays waiting, a stack per tile,
-              or None where no material sends a second ray (trace); ``path`` PathTrace's (max_depth, lights at every vertex: False for GlobalTrace)
-              (rtfgu.kernels.path_trace)
+              or None where no material sends a second ray (trace); ``path`` PathTrace's
+              (max_depth, lights at every vertex: False for GlobalTrace)
+              (rtfgu.kernels.path_trace); ``packets`` 1 where a pinhole's primary rays go
+              through the scene's wide BVH in packets (render_packet_tile), else None
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
 
@@ -39,23 +41,28 @@ import numpy as np
 from numba import njit, prange, types
 from numba.extending import overload
 
-from ..layout import MESH_KIND, THIN_LENS, offset
+from ..accelerators.flat_bvh import NODE_WIDTH
+from ..accelerators.wide_bvh import ROWS, WIDTH
+from ..layout import MESH_KIND, PINHOLE, THIN_LENS, offset
 from ..materials.material import BASE_COLOR
 from ..registry import INSTANCED, SHAPE_IDS, SHAPES, TEXTURES
 from ..sampling.random import LENS_SET, PIXEL_SET, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
-from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, slots, surface_color
+from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, slots, surface_color, trace_packet
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, mul, scale
 from .environment import ENVIRONMENT, MATERIAL_OF, background_radiance
 from .path_trace import trace_path
-from .wide_bvh import WIDE
+from .wide_bvh import WIDE, on_the_stack
+from .packet import PACKET, lanes_of as packet_lanes
 from .sampling import concentric_map, pixel_sample
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
 TILE = 16
+
+packet_rays = on_the_stack(3 * PACKET, "A packet's origins or directions, three values a ray.")
 
 # counts columns: rays cast per tile, by kind.
 PRIMARY = 0
@@ -70,13 +77,15 @@ RECORD_FIELDS = 16
 def shape_arrays(flat, empty: bool = False) -> tuple:
     """The kernels' ``shapes``: table, index per row kind, the FlatMesh's arrays and the BVH
     (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks.
-    With ``empty``, a row kind the scene lacks is its empty table and index instead (a mesh
-    kind stays None: a BVH has at least one node)."""
+    With ``empty`` (the pixel debugger's one kernel for many scenes), a row kind the scene
+    lacks is its empty table and index instead, and a tree the scene lacks (its own, or that
+    of the meshes instances hold) is empty_mesh_arrays: what a kind lacks then changes no
+    type, so scenes of different kinds share a compiled kernel."""
     shapes = ()
     for kind in SHAPES:
         if kind.bvh:   # the scene's own tree; None where its meshes are all instances'
             shapes += mesh_arrays(flat) if flat.mesh is not None and flat.mesh.scene_tree \
-                else (None,) * len(MESH_SLOTS)
+                else empty_mesh_arrays(flat) if empty else (None,) * len(MESH_SLOTS)
         elif kind.instance and (flat.count(kind.name) or empty):
             # The instance table and index, then the instanced table of each kind an instance
             # may hold (None for a kind none holds), then the mesh arrays with the trees of
@@ -85,7 +94,9 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
             in_bvh = flat.mesh is not None and flat.mesh.instances
             shapes += (instance_table(flat, kind.name), None if in_bvh else flat.index(kind.name)) + tuple(
                 flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
-                + (mesh_arrays(flat) if "instanced_mesh" in flat.features else (None,) * len(MESH_SLOTS))
+                + (mesh_arrays(flat) if "instanced_mesh" in flat.features
+                   else (mesh_arrays(flat) if flat.mesh is not None else empty_mesh_arrays(flat)) if empty
+                   else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
             shapes += ((flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)) \
                 + (None,) * (slots(kind) - 2)
@@ -107,6 +118,20 @@ def mesh_arrays(flat) -> tuple:
     return mesh.vertices, mesh.faces, mesh.normals, nodes, nodes.view(np.int32), mesh.uvs
 
 
+def empty_mesh_arrays(flat) -> tuple:
+    """mesh_arrays of a mesh of no face: no vertex, no face, and a tree of one node whose
+    boxes are all empty (lo = +inf, hi = -inf: rtfgu.accelerators.wide_bvh), which no ray
+    enters; flat normals and no (u, v) (None, as a FlatMesh without them has)."""
+    if WIDE:
+        nodes = np.zeros((1, ROWS, WIDTH), dtype=np.float32)
+        nodes[0, 0:3], nodes[0, 3:6] = np.inf, -np.inf
+    else:
+        nodes = np.zeros((1, NODE_WIDTH), dtype=np.float32)
+        nodes[0, 0:3], nodes[0, 4:7] = np.inf, -np.inf
+    return (np.zeros((0, 3), dtype=flat.dtype), np.zeros((0, 4), dtype=np.int32), None, nodes, nodes.view(np.int32),
+            None)
+
+
 def instance_table(flat, kind: str) -> np.ndarray:
     """The instance table as the numba path reads it: an instance of a Mesh names its mesh's
     root in the tree that mesh_arrays gives (the layout names the binary table's)."""
@@ -122,11 +147,14 @@ def instance_table(flat, kind: str) -> np.ndarray:
     return table
 
 
-def scene_tuple(flat) -> tuple:
+def scene_tuple(flat, empty: bool = False) -> tuple:
     """The kernels' ``scene``: materials, shaders, background, then the texels and a table
     per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture, the
-    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF)."""
-    if "textures" not in flat.features:
+    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF).
+    With ``empty`` (shape_arrays), every texture kind's table, empty where the scene lacks it."""
+    if empty:
+        textures = (flat.texels,) + tuple(flat.textures[k.name] for k in TEXTURES)
+    elif "textures" not in flat.features:
         textures = (None,) * (1 + len(TEXTURES))
     else:
         textures = (flat.texels,) + tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None
@@ -181,6 +209,19 @@ def _typed_record_bounce(record, i, ray, hit, shader, normal, color):
         row[10], row[11], row[12] = normal
         row[13], row[14], row[15] = color
     return write
+
+
+def given_at(primary, first):
+    """intersect_scene's ``given``: None without a packet's hit (typed by the overload
+    below), else (the hit, whether this is the primary ray, ``first``)."""
+    return as_python(_typed_given_at, primary, first)
+
+
+@overload(given_at, inline="always")
+def _typed_given_at(primary, first):
+    if isinstance(primary, types.NoneType):
+        return lambda primary, first: None
+    return lambda primary, first: (primary, first)
 
 
 # A row of a tile's stack of rays (push_ray): origin (3), direction (3), weight (3), depth.
@@ -256,7 +297,7 @@ def _typed_row_of(stacks, k):
 
 @njit(cache=True, error_model="numpy", inline="always")
 def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, stream, stack=None,
-          record=None):
+          record=None, primary=None):
     """The 02562 path loop (rtfgu.renderer.trace) as Whitted's tracer (Suffern ch. 24):
     shade each hit until a shader ends the path or the ray leaves the scene (background), at
     most ``bounces`` (MAX_DEPTH) rays deep, each hit's radiance weighted by the product of
@@ -269,8 +310,10 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     with its per-frame ``terms`` (n_candidates -1: no such eye). ``record``: None, or an
     array that receives every bounce of the first path (record_bounce). ``stream``: (pixel,
     sample, seed, whether area lights are sampled: AreaLighting), the numbers a ray at depth
-    i draws being the stream's path_dimension(i, k). Returns (radiance, shadow rays,
-    secondary rays)."""
+    i draws being the stream's path_dimension(i, k). ``primary``: None, or the primary ray's
+    nearest hit among what the scene's BVH holds, found by a packet (render_packet_tile),
+    which intersect_scene then takes instead of traversing the BVH. Returns (radiance,
+    shadow rays, secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
@@ -288,7 +331,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
             if i > 0:
                 n_secondary += 1
             t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if i == 0 else -1,
-                                                origin, direction, tmin, tmax, formula)
+                                                origin, direction, tmin, tmax, formula, given_at(primary, i == 0))
             if idx < 0:
                 seen = background_radiance(scene[ENVIRONMENT], background, direction)
                 result = add(result, mul(weight, seen))
@@ -330,8 +373,17 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     return result, n_shadow, n_secondary
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def screen_point(sampler, pixel, s, seed, ix, iy, width, height, one):
+    """Sample ``s`` of pixel (ix, iy) (``pixel`` its index, row 0 at the top) on the view
+    plane: (sx, sy) in [-1, 1]^2, the sampler's point in the pixel (the centre without one)."""
+    spx, spy = pixel_sample(sampler, pixel, s, PIXEL_SET, seed, one)
+    return (lit(2, one) * (lit(ix, one) + spx) / lit(width, one) - one,
+            lit(2, one) * (lit(iy, one) + spy) / lit(height, one) - one)
+
+
 @njit(cache=True, error_model="numpy", _nrt=False)
-def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, sampler,
+def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler,
                 stack, image):
     """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
     y1, width, height)) to the image (the lecture's render loop,
@@ -340,6 +392,8 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     candidates, n_candidates): ``candidates[:n_candidates]`` are the from-eye kind's rows
     the tile's primary rays can hit, with their per-frame ``terms`` (None and -1 without a
     pinhole eye). ``stack``: the tile's rays waiting (trace), None where none can.
+    ``packets``: None, or 1 where a pinhole's primary rays go through the scene's wide BVH in
+    packets (render_packet_tile; rtfgu.kernels.kernel_arguments decides).
 
     Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
@@ -356,40 +410,110 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
         # A render's first samples start its sums (0 + v is v, bit for bit): the image need
         # not be zeroed before.
         image[height - y1:height - y0, x0:x1, :] = lit(0, one)
-    for iy in range(y0, y1):
-        for ix in range(x0, x1):
-            pixel = (height - 1 - iy) * width + ix
-            out = image[height - 1 - iy, ix]
-            total = (out[0], out[1], out[2])
+    if packets is not None:
+        n_primary, n_shadow, n_secondary = render_packet_tile(tile, camera_row, shapes, lights, scene, eye_rows,
+                                                              settings, cast, sampler, stack, image)
+    else:
+        for iy in range(y0, y1):
+            for ix in range(x0, x1):
+                pixel = (height - 1 - iy) * width + ix
+                out = image[height - 1 - iy, ix]
+                total = (out[0], out[1], out[2])
+                for s in range(first, end):
+                    sx, sy = screen_point(sampler, pixel, s, seed, ix, iy, width, height, one)
+                    if camera_kind == THIN_LENS:
+                        lens = concentric_map(*pixel_sample(sampler, pixel, s, LENS_SET, seed, one))
+                        ray = thin_lens_ray(camera_row, sx, sy, lens)
+                    else:
+                        ray = gen_ray(camera_kind, camera_row, sx, sy)
+                    n_primary += 1
+                    if show_ray_direction:
+                        half = lit(0.5, one)
+                        color = add(scale(ray[1], half), (half, half, half))
+                    else:
+                        # Exactly one of these stays in a compiled kernel (the module docstring).
+                        if cast is not None:
+                            color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
+                                                                       candidates, n_candidates, settings,
+                                                                       cast[0], (pixel, s, settings[3], cast[1]), stack)
+                        if path is not None:
+                            color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
+                                                                            terms, candidates, n_candidates,
+                                                                            settings, path, pixel, s)
+                        n_shadow += shadow_rays
+                        n_secondary += secondary_rays
+                    total = add(total, color)
+                out[0] = total[0]
+                out[1] = total[1]
+                out[2] = total[2]
+    return n_primary, n_shadow, n_secondary
+
+
+# A packet: the PACKET_SIDE x PACKET_SIDE pixels of a block of a tile (rtfgu.kernels.packet).
+PACKET_SIDE = 4
+assert PACKET_SIDE * PACKET_SIDE == PACKET and TILE % PACKET_SIDE == 0
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def render_packet_tile(tile, camera_row, shapes, lights, scene, eye_rows, settings, cast, sampler, stack, image):
+    """render_tile for a pinhole camera whose primary rays go through the scene's wide BVH as
+    packets: each PACKET_SIDE x PACKET_SIDE block of the tile, one sample after another,
+    makes its pixels' primary rays as render_tile does, finds their nearest hits among what
+    the BVH holds as one packet (trace_packet), then traces each ray on with its hit given
+    (trace's ``primary``; the shapes outside the BVH still tested). Every pixel adds its
+    samples in the same order, and every ray gets the hit its own traversal gives
+    (rtfgu.kernels.packet), so the image is render_tile's, bit for bit."""
+    x0, x1, y0, y1, width, height = tile
+    terms, candidates, n_candidates = eye_rows
+    seed, first, end, formula = settings[3], settings[4], settings[5], settings[2]
+    one = lit(1, camera_row[0])
+    zero = lit(0, one)
+    inf = lit(math.inf, one)
+    origins = packet_rays(one)
+    directions = packet_rays(one)
+    t = packet_lanes(one)
+    best = packet_lanes(np.int64)
+    kind = packet_lanes(np.int64)
+    row = packet_lanes(np.int64)
+    n_shadow = 0
+    n_secondary = 0
+    n_primary = 0
+    for by in range(y0, y1, PACKET_SIDE):
+        for bx in range(x0, x1, PACKET_SIDE):
             for s in range(first, end):
-                spx, spy = pixel_sample(sampler, pixel, s, PIXEL_SET, seed, one)
-                sx = lit(2, one) * (lit(ix, one) + spx) / lit(width, one) - one
-                sy = lit(2, one) * (lit(iy, one) + spy) / lit(height, one) - one
-                if camera_kind == THIN_LENS:
-                    lens = concentric_map(*pixel_sample(sampler, pixel, s, LENS_SET, seed, one))
-                    ray = thin_lens_ray(camera_row, sx, sy, lens)
-                else:
-                    ray = gen_ray(camera_kind, camera_row, sx, sy)
-                n_primary += 1
-                if show_ray_direction:
-                    half = lit(0.5, one)
-                    color = add(scale(ray[1], half), (half, half, half))
-                else:
-                    # Exactly one of these stays in a compiled kernel (the module docstring).
-                    if cast is not None:
-                        color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
-                                                                   candidates, n_candidates, settings,
-                                                                   cast[0], (pixel, s, settings[3], cast[1]), stack)
-                    if path is not None:
-                        color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
-                                                                        terms, candidates, n_candidates,
-                                                                        settings, path, pixel, s)
-                    n_shadow += shadow_rays
-                    n_secondary += secondary_rays
-                total = add(total, color)
-            out[0] = total[0]
-            out[1] = total[1]
-            out[2] = total[2]
+                count = 0
+                for iy in range(by, min(by + PACKET_SIDE, y1)):
+                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
+                        pixel = (height - 1 - iy) * width + ix
+                        sx, sy = screen_point(sampler, pixel, s, seed, ix, iy, width, height, one)
+                        origin, direction, _, _ = gen_ray(PINHOLE, camera_row, sx, sy)
+                        for a in range(3):
+                            origins[3 * count + a] = origin[a]
+                            directions[3 * count + a] = direction[a]
+                        t[count] = inf
+                        best[count] = -1
+                        kind[count] = -1
+                        row[count] = -1
+                        count += 1
+                trace_packet(shapes, origins, directions, count, zero, t, best, kind, row, formula)
+                count = 0
+                for iy in range(by, min(by + PACKET_SIDE, y1)):
+                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
+                        pixel = (height - 1 - iy) * width + ix
+                        ray = ((origins[3 * count], origins[3 * count + 1], origins[3 * count + 2]),
+                               (directions[3 * count], directions[3 * count + 1], directions[3 * count + 2]),
+                               zero, inf)
+                        color, shadow_rays, secondary_rays = trace(
+                            ray, shapes, lights, scene, terms, candidates, n_candidates, settings, cast[0],
+                            (pixel, s, seed, cast[1]), stack, None, (t[count], best[count], kind[count], row[count]))
+                        out = image[height - 1 - iy, ix]
+                        out[0] += color[0]
+                        out[1] += color[1]
+                        out[2] += color[2]
+                        n_primary += 1
+                        n_shadow += shadow_rays
+                        n_secondary += secondary_rays
+                        count += 1
     return n_primary, n_shadow, n_secondary
 
 
@@ -407,7 +531,7 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
     n_tiles = tiles_x * tiles_y
     candidates = np.empty((n_tiles, from_eye_rows(eye)), dtype=np.int64)
     terms = eye_terms(eye)
-    cast, path = tracer
+    cast, path, packets = tracer
     for k in prange(n_tiles):
         # prange hands each thread a contiguous block of k; the stride (coprime with
         # n_tiles) spreads every block over the whole image, so the threads share the work.
@@ -418,7 +542,8 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
         n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene,
                                                        (terms, candidates[tile], n_candidates),
-                                                       settings, cast, path, sampler, tile_stack(cast, tile), image)
+                                                       settings, cast, path, packets, sampler, tile_stack(cast, tile),
+                                                       image)
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
