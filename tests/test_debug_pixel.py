@@ -183,3 +183,59 @@ def test_a_pixel_the_camera_sees_nothing_through_is_one_miss(path, name, x, y):
     v = scene.camera.v
     assert np.allclose(bounces[0].direction, (v.x, v.y, v.z), atol=1e-7), path
     assert np.allclose(bounces[0].color, (0.1, 0.3, 0.6), atol=1e-7), path
+
+
+def _debugger_types(name):
+    """The numba types of the pixel debugger's shapes, lights and scene for a homework scene."""
+    import numba
+
+    from rtfgu.kernels import own_sets
+    from rtfgu.kernels.render import scene_tuple, shape_arrays
+    from rtfgu.layout import compile_scene
+    from rtfgu.registry import LIGHTS
+
+    scene = get_scene(name)
+    flat = compile_scene(scene() if callable(scene) else scene)
+    lights = tuple(flat.lights[kind.name] for kind in LIGHTS) + own_sets(flat)
+    return tuple(str(numba.typeof(v)) for v in (shape_arrays(flat, empty=True), lights,
+                                                scene_tuple(flat, empty=True)))
+
+
+def test_scenes_lacking_different_kinds_share_the_debuggers_kernel():
+    """A scene without a mesh, one with a mesh and one with textures hand the debugger's
+    kernel the same types (an absent mesh is an empty tree, an absent texture kind its empty
+    table), so one compiled kernel serves all three; a BVH that holds the spheres changes
+    the type (the sphere kind then has no loop of its own)."""
+    plain = _debugger_types("default_lambertian_shadows")
+    assert _debugger_types("teapot") == plain
+    assert _debugger_types("suffern_checker") == plain
+    assert _debugger_types("suffern_19_objects") == plain
+    assert _debugger_types("cornell_box_spheres") != plain
+
+
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+def test_no_ray_enters_the_empty_tree(precision):
+    """The tree the debugger hands a scene without a mesh: mesh_closest and mesh_any return
+    the hit given and False for rays from inside, along the axes, with signed zeros and
+    through the origin."""
+    import math
+
+    import numpy as np
+
+    from rtfgu.kernels.mesh import mesh_any, mesh_closest
+    from rtfgu.kernels.render import empty_mesh_arrays
+
+    class Flat:
+        dtype = np.dtype(precision)
+
+    vertices, faces, _, nodes, links, _ = empty_mesh_arrays(Flat)
+    assert len(vertices) == 0 and len(faces) == 0 and len(nodes) == 1
+    f = np.dtype(precision).type
+    directions = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -0.0, -1), (0.0, 0.0, 1), (1, 1, 1), (-0.0, 1e-30, -1)]
+    origins = [(0, 0, 0), (1e30, -1e30, 0), (-0.0, 0.0, -0.0)]
+    for o in origins:
+        for d in directions:
+            origin, direction = tuple(f(x) for x in o), tuple(f(x) for x in d)
+            bound = (f(math.inf), -1, -1, -1)
+            assert mesh_closest(vertices, faces, nodes, links, None, origin, direction, f(0), bound, 0) == bound
+            assert not mesh_any(vertices, faces, nodes, links, None, origin, direction, f(0), f(math.inf), 0)
