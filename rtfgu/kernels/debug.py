@@ -54,7 +54,7 @@ def trace_records(camera, pixel, rays, shapes, lights, scene, settings, records)
             color = add(scale(ray[1], half), (half, half, half))
             record_bounce(records[k], 0, ray, (ray[3], -1, -1), -1, ray[1], color)
         else:
-            trace(ray, shapes, lights, scene, None, no_candidates, -1, settings, MAX_DEPTH, (0, 0, 0, False),
+            trace(ray, shapes, lights, scene, (None, no_candidates, -1), settings, MAX_DEPTH, (0, 0, 0, False),
                   None, records[k])
 
 

@@ -296,8 +296,7 @@ def _typed_row_of(stacks, k):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings, bounces, stream, stack=None,
-          record=None, primary=None):
+def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, stack=None, record=None, primary=None):
     """The 02562 path loop (rtfgu.renderer.trace) as Whitted's tracer (Suffern ch. 24):
     shade each hit until a shader ends the path or the ray leaves the scene (background), at
     most ``bounces`` (MAX_DEPTH) rays deep, each hit's radiance weighted by the product of
@@ -307,7 +306,8 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     scene without one) and is followed when the first path ends: the lecture layer's
     recursion in another order, so a scene with weights other than 1 equals it to rounding.
     Primary rays from a pinhole eye test the from-eye kind's ``candidates[:n_candidates]``
-    with its per-frame ``terms`` (n_candidates -1: no such eye). ``record``: None, or an
+    with its per-frame ``terms``, ``eye_rows`` = (terms, candidates, n_candidates)
+    (n_candidates -1: no such eye). ``record``: None, or an
     array that receives every bounce of the first path (record_bounce). ``stream``: (pixel,
     sample, seed, whether area lights are sampled: AreaLighting), the numbers a ray at depth
     i draws being the stream's path_dimension(i, k). ``primary``: None, or the primary ray's
@@ -315,6 +315,7 @@ def trace(ray, shapes, lights, scene, terms, candidates, n_candidates, settings,
     which intersect_scene then takes instead of traversing the BVH. Returns (radiance,
     shadow rays, secondary rays)."""
     origin, direction, tmin, tmax = ray
+    terms, candidates, n_candidates = eye_rows
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
     zero = lit(0, tmin)
@@ -383,15 +384,15 @@ def screen_point(sampler, pixel, s, seed, ix, iy, width, height, one):
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler,
-                stack, image):
+def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler, buffers):
     """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
     y1, width, height)) to the image (the lecture's render loop,
     rtfgu.renderer.render_reference), each traced by the ray-cast ``trace`` (``cast``) or
     by PathTrace (``path``): (primary, shadow, secondary) rays cast. ``eye_rows`` is (terms,
     candidates, n_candidates): ``candidates[:n_candidates]`` are the from-eye kind's rows
     the tile's primary rays can hit, with their per-frame ``terms`` (None and -1 without a
-    pinhole eye). ``stack``: the tile's rays waiting (trace), None where none can.
+    pinhole eye). ``buffers`` = (stack, image): the tile's rays waiting (trace), None where
+    none can, and the image.
     ``packets``: None, or 1 where a pinhole's primary rays go through the scene's wide BVH in
     packets (render_packet_tile; rtfgu.kernels.kernel_arguments decides).
 
@@ -399,7 +400,7 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
     cost an atomic increment and decrement each per pixel, twice the time of the pixel."""
     x0, x1, y0, y1, width, height = tile
-    terms, candidates, n_candidates = eye_rows
+    stack, image = buffers
     camera_kind, camera_row = camera[0], camera[1]
     show_ray_direction, seed, first, end = settings[1], settings[3], settings[4], settings[5]
     n_shadow = 0
@@ -433,12 +434,12 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
                     else:
                         # Exactly one of these stays in a compiled kernel (the module docstring).
                         if cast is not None:
-                            color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, terms,
-                                                                       candidates, n_candidates, settings,
-                                                                       cast[0], (pixel, s, settings[3], cast[1]), stack)
+                            color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, eye_rows,
+                                                                       settings, cast[0],
+                                                                       (pixel, s, settings[3], cast[1]), stack)
                         if path is not None:
                             color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
-                                                                            terms, candidates, n_candidates,
+                                                                            eye_rows[0], eye_rows[1], eye_rows[2],
                                                                             settings, path, pixel, s)
                         n_shadow += shadow_rays
                         n_secondary += secondary_rays
@@ -464,7 +465,6 @@ def render_packet_tile(tile, camera_row, shapes, lights, scene, eye_rows, settin
     samples in the same order, and every ray gets the hit its own traversal gives
     (rtfgu.kernels.packet), so the image is render_tile's, bit for bit."""
     x0, x1, y0, y1, width, height = tile
-    terms, candidates, n_candidates = eye_rows
     seed, first, end, formula = settings[3], settings[4], settings[5], settings[2]
     one = lit(1, camera_row[0])
     zero = lit(0, one)
@@ -504,7 +504,7 @@ def render_packet_tile(tile, camera_row, shapes, lights, scene, eye_rows, settin
                                (directions[3 * count], directions[3 * count + 1], directions[3 * count + 2]),
                                zero, inf)
                         color, shadow_rays, secondary_rays = trace(
-                            ray, shapes, lights, scene, terms, candidates, n_candidates, settings, cast[0],
+                            ray, shapes, lights, scene, eye_rows, settings, cast[0],
                             (pixel, s, seed, cast[1]), stack, None, (t[count], best[count], kind[count], row[count]))
                         out = image[height - 1 - iy, ix]
                         out[0] += color[0]
@@ -542,8 +542,8 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
         n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene,
                                                        (terms, candidates[tile], n_candidates),
-                                                       settings, cast, path, packets, sampler, tile_stack(cast, tile),
-                                                       image)
+                                                       settings, cast, path, packets, sampler,
+                                                       (tile_stack(cast, tile), image))
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
