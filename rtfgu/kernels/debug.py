@@ -7,13 +7,12 @@ rtfgu.kernels.dispatch), every bounce written to a record (render.record_bounce)
 the ray left the scene (the colour is then the background); the normal is not computed
 for base_color, whose shader reads none.
 
-Every row shape kind, light kind and texture kind reaches the kernel as an array (empty for
-a kind the scene lacks), a mesh the scene lacks as a tree no ray enters (render.shape_arrays
-and render.scene_tuple with ``empty``), and the path loop is always on, so one compiled
-kernel per precision serves every scene (and one more where the BVH holds the spheres or the
-instances, a mesh has vertex normals or (u, v), or the scene an environment, which change
-the render's kernel as they change this one): an empty table tests nothing, and a shader
-that ends the path ends it after one bounce as in a render. Primary rays test every sphere with intersect_sphere
+Every row shape kind and light kind reaches the kernel as an array (empty for a kind the
+scene lacks: render.shape_arrays with ``empty``) and the path loop is always on, so one
+compiled kernel per precision serves every scene (and one more with textures, with a mesh,
+with spheres in its BVH, with an environment, which change the render's kernel as they
+change this one): an empty table tests nothing, and a shader that ends the path ends it
+after one bounce as in a render. Primary rays test every sphere with intersect_sphere
 rather than the render's per-frame eye terms and culled candidates: the terms are the same
 operations on the same numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling
 drops only spheres the ray cannot hit.
@@ -65,7 +64,7 @@ def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:
     shapes = shape_arrays(flat, empty=True)
     lights = tuple(flat.lights[kind.name] for kind in LIGHTS) + own_sets(flat)
     camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
-    scene = scene_tuple(flat, empty=True)
+    scene = scene_tuple(flat)
     settings = (flat.shadows, flat.show_ray_direction, sphere_formula_id(formula))
     if pixel is None:
         rays = np.ascontiguousarray(rays, dtype=flat.dtype).reshape(-1, 8)

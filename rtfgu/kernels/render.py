@@ -41,8 +41,6 @@ import numpy as np
 from numba import njit, prange, types
 from numba.extending import overload
 
-from ..accelerators.flat_bvh import NODE_WIDTH
-from ..accelerators.wide_bvh import ROWS, WIDTH
 from ..layout import MESH_KIND, PINHOLE, THIN_LENS, offset
 from ..materials.material import BASE_COLOR
 from ..registry import INSTANCED, SHAPE_IDS, SHAPES, TEXTURES
@@ -77,15 +75,13 @@ RECORD_FIELDS = 16
 def shape_arrays(flat, empty: bool = False) -> tuple:
     """The kernels' ``shapes``: table, index per row kind, the FlatMesh's arrays and the BVH
     (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks.
-    With ``empty`` (the pixel debugger's one kernel for many scenes), a row kind the scene
-    lacks is its empty table and index instead, and a tree the scene lacks (its own, or that
-    of the meshes instances hold) is empty_mesh_arrays: what a kind lacks then changes no
-    type, so scenes of different kinds share a compiled kernel."""
+    With ``empty``, a row kind the scene lacks is its empty table and index instead (a mesh
+    kind stays None: a BVH has at least one node)."""
     shapes = ()
     for kind in SHAPES:
         if kind.bvh:   # the scene's own tree; None where its meshes are all instances'
             shapes += mesh_arrays(flat) if flat.mesh is not None and flat.mesh.scene_tree \
-                else empty_mesh_arrays(flat) if empty else (None,) * len(MESH_SLOTS)
+                else (None,) * len(MESH_SLOTS)
         elif kind.instance and (flat.count(kind.name) or empty):
             # The instance table and index, then the instanced table of each kind an instance
             # may hold (None for a kind none holds), then the mesh arrays with the trees of
@@ -94,9 +90,7 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
             in_bvh = flat.mesh is not None and flat.mesh.instances
             shapes += (instance_table(flat, kind.name), None if in_bvh else flat.index(kind.name)) + tuple(
                 flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
-                + (mesh_arrays(flat) if "instanced_mesh" in flat.features
-                   else (mesh_arrays(flat) if flat.mesh is not None else empty_mesh_arrays(flat)) if empty
-                   else (None,) * len(MESH_SLOTS))
+                + (mesh_arrays(flat) if "instanced_mesh" in flat.features else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
             shapes += ((flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)) \
                 + (None,) * (slots(kind) - 2)
@@ -118,20 +112,6 @@ def mesh_arrays(flat) -> tuple:
     return mesh.vertices, mesh.faces, mesh.normals, nodes, nodes.view(np.int32), mesh.uvs
 
 
-def empty_mesh_arrays(flat) -> tuple:
-    """mesh_arrays of a mesh of no face: no vertex, no face, and a tree of one node whose
-    boxes are all empty (lo = +inf, hi = -inf: rtfgu.accelerators.wide_bvh), which no ray
-    enters; flat normals and no (u, v) (None, as a FlatMesh without them has)."""
-    if WIDE:
-        nodes = np.zeros((1, ROWS, WIDTH), dtype=np.float32)
-        nodes[0, 0:3], nodes[0, 3:6] = np.inf, -np.inf
-    else:
-        nodes = np.zeros((1, NODE_WIDTH), dtype=np.float32)
-        nodes[0, 0:3], nodes[0, 4:7] = np.inf, -np.inf
-    return (np.zeros((0, 3), dtype=flat.dtype), np.zeros((0, 4), dtype=np.int32), None, nodes, nodes.view(np.int32),
-            None)
-
-
 def instance_table(flat, kind: str) -> np.ndarray:
     """The instance table as the numba path reads it: an instance of a Mesh names its mesh's
     root in the tree that mesh_arrays gives (the layout names the binary table's)."""
@@ -147,14 +127,11 @@ def instance_table(flat, kind: str) -> np.ndarray:
     return table
 
 
-def scene_tuple(flat, empty: bool = False) -> tuple:
+def scene_tuple(flat) -> tuple:
     """The kernels' ``scene``: materials, shaders, background, then the texels and a table
     per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture, the
-    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF).
-    With ``empty`` (shape_arrays), every texture kind's table, empty where the scene lacks it."""
-    if empty:
-        textures = (flat.texels,) + tuple(flat.textures[k.name] for k in TEXTURES)
-    elif "textures" not in flat.features:
+    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF)."""
+    if "textures" not in flat.features:
         textures = (None,) * (1 + len(TEXTURES))
     else:
         textures = (flat.texels,) + tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None
