@@ -23,6 +23,15 @@ from wgsl_support import wgpu_device  # noqa: F401  (a fixture)
 RED, BLUE = Float3(1.0, 0.0, 0.0), Float3(0.0, 0.0, 1.0)
 
 
+def out_of_the_rays_way(scene, textures) -> Scene:
+    """``scene`` with a sphere of each texture where no ray of these tests goes: the 3D checker
+    test and the noise test then hold the same texture kinds, so each numba path traces both
+    with one compiled kernel (docs/compile_time.md)."""
+    for k, texture in enumerate(textures):
+        scene.shapes.append(Sphere(Float3(-100.0, 100.0 + 3.0 * k, 0.0), 1.0, Float3(0.0), Material(cd=texture)))
+    return scene
+
+
 def colours(path, scene, rays):
     bounces = path.trace(scene, [(o, d, 0.0, math.inf) for o, d in rays])
     return [b[0].color for b in bounces]
@@ -37,6 +46,7 @@ def test_checker3d_colours_cubes_of_space_on_every_path(path):
     scene.shapes.append(Plane(Float3(0.0, 0.0, 0.0), Float3(0.0, 1.0, 0.0), Float3(0.0), Material(cd=checker)))
     scene.shapes.append(Sphere(Float3(10.0, 1.0, 0.0), 1.0, Float3(0.0), Material(cd=checker)))
     scene.shapes.append(Box(Float3(20.0, 0.0, 0.0), Float3(22.0, 2.0, 2.0), Float3(0.0), Material(cd=checker)))
+    out_of_the_rays_way(scene, _noise_scene()[1])
     rays = [((0.25, 5.0, 0.25), (0.0, -1.0, 0.0)),    # floor: cubes (0, -1, 0): odd
             ((0.75, 5.0, 0.25), (0.0, -1.0, 0.0)),    # (1, -1, 0): even
             ((-0.25, 5.0, -0.75), (0.0, -1.0, 0.0)),  # (-1, -1, -2): even
@@ -179,6 +189,7 @@ def test_noise_textures_on_every_path(path):
     """Each path's colour at 25 points of each sphere against the lecture layer's: equal in
     numba float64, within float32 rounding (and the band or ramp entry it picks) elsewhere."""
     scene, textures = _noise_scene()
+    out_of_the_rays_way(scene, [Checker3D(RED, BLUE, size=0.5)])
     rays = []
     for k in range(len(textures)):
         for a in np.linspace(-0.8, 0.8, 5):
