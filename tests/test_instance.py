@@ -258,12 +258,21 @@ def test_a_tie_inside_an_instanced_mesh_goes_to_the_earlier_face_on_every_path(p
     """A quad of two faces of their own colours, instanced with exact steps: a ray through its
     diagonal hits both faces at the same t, and every path takes the earlier face, as the
     lecture layer's loop over each face's Instance does; so does a ray at an instance that
-    another instance of the quad, earlier in Scene.shapes, meets at the same t."""
+    another instance of the quad, earlier in Scene.shapes, meets at the same t.
+
+    The quad has normals and (u, v), the third instance a checker of its own and the quad is
+    also drawn as itself, after the instances and away from the rays: the scene has the kinds
+    of the test above, so the numba paths trace it with the kernel that test compiled
+    (docs/compile_time.md)."""
+    from rtfgu import Checker
+
     quad = Mesh(np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)], dtype=float), np.array([(0, 1, 2), (0, 2, 3)]),
-                [(0.9, 0.1, 0.1), (0.1, 0.1, 0.9)], material=Material())
+                [(0.9, 0.1, 0.1), (0.1, 0.1, 0.9)], material=Material(), normals=np.array([(0.0, 0.0, 1.0)] * 4),
+                uvs=np.array([(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]))
+    checker = Matte(cd=Checker(Float3(0.9, 0.9, 0.1), Float3(0.1, 0.4, 0.9), size=0.2))
     scene = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
     scene.shapes = [Instance(quad).translate(2.0, 0.0, 0.0), Instance(quad).scale(2.0).translate(1.0, -1.0, 0.0),
-                    Instance(quad).translate(-2.0, 0.0, 0.0)]
+                    Instance(quad, checker).translate(-2.0, 0.0, 0.0), quad]
     rays = [((2.5, 0.5, 3.0), (0.0, 0.0, -1.0), 0.0, math.inf),      # the diagonal of the first
             ((2.25, 0.5, 3.0), (0.0, 0.0, -1.0), 0.0, math.inf),     # the first and the second
             ((-1.5, 0.5, 3.0), (0.0, 0.0, -1.0), 0.0, math.inf)]     # the third's diagonal
