@@ -1,12 +1,24 @@
-"""numba's ``njit`` for the array loops outside the numba path (the BVH build, a mesh's
-per-face checks and bounds), or, where numba is not installed, the function itself: the
-same loop in plain Python, the same results, slower."""
+"""numba's ``njit`` and ``prange`` for the array loops outside the numba path (the BVH build,
+a mesh's per-face checks and bounds), or, where numba is not installed, the function itself
+and ``range``: the same loop in plain Python, the same results, slower. ``chunks_of_one()``
+hands a ``prange``'s iterations to the threads one at a time (numba.parallel_chunksize(1)),
+for loops whose iterations differ in cost; without numba it does nothing."""
 from __future__ import annotations
 
+import contextlib
+
 try:
-    from numba import njit
+    from numba import njit, parallel_chunksize, prange
+
+    def chunks_of_one():
+        return parallel_chunksize(1)
 except ImportError:
+    prange = range
+
     def njit(*args, **kwargs):
         return args[0] if args and callable(args[0]) else (lambda f: f)
 
-__all__ = ["njit"]
+    def chunks_of_one():
+        return contextlib.nullcontext()
+
+__all__ = ["chunks_of_one", "njit", "prange"]

@@ -159,18 +159,47 @@ def test_faces_with_one_centroid_are_split_in_halves_down_to_leaves():
     assert max(count for _, count in leaves(bvh)) <= 4 and sorted(bvh.order) == list(range(100))
 
 
-def test_the_build_without_numba_is_the_same_tree():
+def test_the_build_without_numba_is_the_same_tree(monkeypatch):
     mesh = icosphere(1)
     lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
     jitted = flat_bvh.build(lo, hi)
-    build = flat_bvh._build
-    try:
-        flat_bvh._build = build.py_func
-        plain = flat_bvh.build(lo, hi)
-    finally:
-        flat_bvh._build = build
+    for name, value in list(vars(flat_bvh).items()):
+        if hasattr(value, "py_func"):
+            monkeypatch.setattr(flat_bvh, name, value.py_func)
+    monkeypatch.setattr(flat_bvh, "TASK_MIN", 16)      # the parallel build's steps too
+    plain = flat_bvh.build(lo, hi)
+    assert not hasattr(flat_bvh._subtree, "py_func")
     assert np.array_equal(jitted.nodes.view(np.int32), plain.nodes.view(np.int32))
     assert np.array_equal(jitted.order, plain.order)
+
+
+def _soups():
+    """Boxes for the parallel build: a mesh, a soup half of whose centroids coincide (the
+    median split), and faces that all share one centroid."""
+    mesh = icosphere(4)
+    rng = np.random.default_rng(7)
+    centers = rng.random((3000, 3))
+    centers[:1500] = 0.5
+    one = flat_bvh.triangle_bounds(np.array([(0, 0, 0), (1, 0, 0), (0, 1, 0)], float),
+                                   np.array([(0, 1, 2)] * 300))
+    return [flat_bvh.triangle_bounds(mesh.vertices, mesh.faces), (centers, centers + 0.01), one]
+
+
+@pytest.mark.parametrize("task_min", [8, 300])
+def test_the_parallel_build_is_the_serial_tree_node_for_node(monkeypatch, task_min):
+    """Split into subtrees built on all cores (TASK_MIN primitives or fewer each, the nodes
+    above split with their bins made in parts), the table is the one-task build's (a
+    TASK_MIN above the count), number for number."""
+    for lo, hi in _soups():
+        monkeypatch.setattr(flat_bvh, "TASK_MIN", 1 << 30)
+        serial = flat_bvh.build(lo, hi)
+        monkeypatch.setattr(flat_bvh, "TASK_MIN", task_min)
+        parallel = flat_bvh.build(lo, hi)
+        assert np.array_equal(serial.nodes.view(np.int32), parallel.nodes.view(np.int32))
+        assert np.array_equal(serial.order, parallel.order)
+        assert np.array_equal(serial.boxes, parallel.boxes)
+        # each primitive's box, in leaf order, holds the primitive's own
+        assert (parallel.boxes[:, :3] <= lo[parallel.order]).all() and (parallel.boxes[:, 3:] >= hi[parallel.order]).all()
 
 
 def test_bad_boxes_are_refused():

@@ -30,7 +30,7 @@ import numpy as np
 
 from .bvh import BINS, C_INTERSECT, LEAF_SIZE
 
-from ..jit import njit
+from ..jit import chunks_of_one, njit, prange
 
 NODE_WIDTH = 8
 # Deepest stack a traversal needs: the build splits until LEAF_SIZE, and a tree of 2^31
@@ -80,137 +80,383 @@ def _surface_area(lo0, lo1, lo2, hi0, hi1, hi2):
     return 2.0 * (dx * dy + dy * dz + dz * dx)
 
 
+@njit(cache=True, parallel=True)
+def _references(lo, hi):
+    """The primitives as the build moves them (Embree's PrimRef): a row each, [lo (3), hi (3),
+    centroid (3)], kept in the order of ``order`` as the build reorders it, so that a node's
+    primitives are read one row after another."""
+    refs = np.empty((lo.shape[0], 9))
+    for p in prange(lo.shape[0]):
+        for axis in range(3):
+            refs[p, axis] = lo[p, axis]
+            refs[p, 3 + axis] = hi[p, axis]
+            refs[p, 6 + axis] = 0.5 * (lo[p, axis] + hi[p, axis])
+    return refs
+
+
 @njit(cache=True)
-def _build(lo, hi, order, box, links, leaf_size, bins, c_traverse, c_intersect, max_depth):
-    """Fill box (N, 6) float64 and links (N, 2) int32; returns the number of nodes. The nodes
-    are built from a stack of (node, first, count, depth); children are placed next to each
-    other at the end of the table."""
-    n_prims = order.shape[0]
+def _node_bounds(refs, first, count, out):
+    """out[0:6] = the box of primitives first..first + count - 1 (rows of ``refs``), out[6:12]
+    the box of their centroids, each [lo, hi]."""
+    b0 = np.inf; b1 = np.inf; b2 = np.inf; b3 = -np.inf; b4 = -np.inf; b5 = -np.inf
+    c0 = np.inf; c1 = np.inf; c2 = np.inf; c3 = -np.inf; c4 = -np.inf; c5 = -np.inf
+    for k in range(first, first + count):
+        r = refs[k]
+        b0 = min(b0, r[0]); b1 = min(b1, r[1]); b2 = min(b2, r[2])
+        b3 = max(b3, r[3]); b4 = max(b4, r[4]); b5 = max(b5, r[5])
+        x = r[6]; y = r[7]; z = r[8]
+        c0 = min(c0, x); c1 = min(c1, y); c2 = min(c2, z)
+        c3 = max(c3, x); c4 = max(c4, y); c5 = max(c5, z)
+    out[0], out[1], out[2], out[3], out[4], out[5] = b0, b1, b2, b3, b4, b5
+    out[6], out[7], out[8], out[9], out[10], out[11] = c0, c1, c2, c3, c4, c5
+
+
+@njit(cache=True)
+def _bin(refs, first, count, bounds, scale, bin_count, bin_box):
+    """Add primitives first..first + count - 1 to the bins of all three axes at once
+    (bin_count (3, bins), bin_box (3, bins, 6)), by their centroids over the centroid box
+    bounds[6:12]; an axis whose ``scale`` is 0 (no extent) is skipped."""
+    bins = bin_count.shape[1]
+    for k in range(first, first + count):
+        r = refs[k]
+        l0, l1, l2, h0, h1, h2 = r[0], r[1], r[2], r[3], r[4], r[5]
+        for axis in range(3):
+            if scale[axis] == 0.0:
+                continue
+            j = min(int(scale[axis] * (r[6 + axis] - bounds[6 + axis])), bins - 1)
+            bin_count[axis, j] += 1
+            box_j = bin_box[axis, j]
+            box_j[0] = min(box_j[0], l0); box_j[1] = min(box_j[1], l1); box_j[2] = min(box_j[2], l2)
+            box_j[3] = max(box_j[3], h0); box_j[4] = max(box_j[4], h1); box_j[5] = max(box_j[5], h2)
+
+
+@njit(cache=True)
+def _bin_scale(bounds, bins, scale):
+    for axis in range(3):
+        extent = bounds[9 + axis] - bounds[6 + axis]
+        scale[axis] = bins / extent if extent > 0.0 else 0.0
+
+
+@njit(cache=True)
+def _empty_bins(bin_count, bin_box):
+    bin_count[:, :] = 0
+    bin_box[:, :, 0:3] = np.inf
+    bin_box[:, :, 3:6] = -np.inf
+
+
+@njit(cache=True)
+def _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse, c_intersect,
+                right_area, right_count):
+    """The binned SAH (rtfgu.accelerators.bvh.BVH._best_split) over the filled bins: (axis,
+    plane) of the cheapest plane, axis -1 where none is cheaper than a leaf of a node small
+    enough to be one. A node bigger than that is split at its cheapest plane, whatever it
+    costs (PBRT-v4 section 7.3.4)."""
+    bins = bin_count.shape[1]
+    area = _surface_area(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5])
+    best_cost = c_intersect * count if count <= leaf_size else np.inf
+    best_axis = -1
+    best_plane = 0.0
+    for axis in range(3):
+        if scale[axis] == 0.0:
+            continue
+        clo = bounds[6 + axis]
+        extent = bounds[9 + axis] - clo
+        # Sweep from the right: area and count of bins j..bins-1.
+        r0 = np.inf; r1 = np.inf; r2 = np.inf; r3 = -np.inf; r4 = -np.inf; r5 = -np.inf
+        n_right = 0
+        # An empty bin changes neither side: the plane past it costs what the plane before
+        # it cost (and is no cheaper), so it is skipped, as are its min and max.
+        area_right = 0.0
+        for j in range(bins - 1, 0, -1):
+            if bin_count[axis, j] > 0:
+                r0 = min(r0, bin_box[axis, j, 0]); r1 = min(r1, bin_box[axis, j, 1]); r2 = min(r2, bin_box[axis, j, 2])
+                r3 = max(r3, bin_box[axis, j, 3]); r4 = max(r4, bin_box[axis, j, 4]); r5 = max(r5, bin_box[axis, j, 5])
+                n_right += bin_count[axis, j]
+                area_right = _surface_area(r0, r1, r2, r3, r4, r5)
+            right_count[j] = n_right
+            right_area[j] = area_right
+        l0 = np.inf; l1 = np.inf; l2 = np.inf; l3 = -np.inf; l4 = -np.inf; l5 = -np.inf
+        n_left = 0
+        for plane in range(1, bins):
+            j = plane - 1
+            if bin_count[axis, j] == 0:
+                continue
+            l0 = min(l0, bin_box[axis, j, 0]); l1 = min(l1, bin_box[axis, j, 1]); l2 = min(l2, bin_box[axis, j, 2])
+            l3 = max(l3, bin_box[axis, j, 3]); l4 = max(l4, bin_box[axis, j, 4]); l5 = max(l5, bin_box[axis, j, 5])
+            n_left += bin_count[axis, j]
+            if right_count[plane] == 0 or not area > 0.0:
+                continue
+            cost = c_traverse + c_intersect * (_surface_area(l0, l1, l2, l3, l4, l5) * n_left
+                                               + right_area[plane] * right_count[plane]) / area
+            if cost < best_cost:
+                best_cost = cost
+                best_axis = axis
+                best_plane = clo + extent * plane / bins
+    return best_axis, best_plane
+
+
+@njit(cache=True)
+def _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right_bounds):
+    """Reorder primitives first..first + count - 1 (``refs`` and ``order`` alike) into the
+    two children and return where the right one starts: centroids below ``plane`` on
+    ``axis`` first; with axis -1 (no plane pays), the median of the widest axis of the
+    centroid box (by lo + hi, a stable sort). Fills each child's bounds as _node_bounds
+    would (min and max are exact in any order): the partition gathers them as it sees each
+    primitive, so no pass over the children is needed to start them."""
+    if axis < 0:
+        axis = 0
+        if bounds[10] - bounds[7] > bounds[9] - bounds[6]:
+            axis = 1
+        if bounds[11] - bounds[8] > max(bounds[9] - bounds[6], bounds[10] - bounds[7]):
+            axis = 2
+        keys = np.empty(count)
+        for k in range(count):
+            keys[k] = refs[first + k, axis] + refs[first + k, 3 + axis]
+        permutation = np.argsort(keys, kind="mergesort") + first
+        order[first:first + count] = order[permutation]
+        refs[first:first + count] = refs[permutation]
+        mid = first + count // 2
+        _node_bounds(refs, first, mid - first, left_bounds)
+        _node_bounds(refs, mid, first + count - mid, right_bounds)
+        return mid
+    # Partition: centroids below the plane first. Each primitive is seen once, on its side.
+    a0 = np.inf; a1 = np.inf; a2 = np.inf; a3 = -np.inf; a4 = -np.inf; a5 = -np.inf
+    a6 = np.inf; a7 = np.inf; a8 = np.inf; a9 = -np.inf; a10 = -np.inf; a11 = -np.inf
+    b0 = np.inf; b1 = np.inf; b2 = np.inf; b3 = -np.inf; b4 = -np.inf; b5 = -np.inf
+    b6 = np.inf; b7 = np.inf; b8 = np.inf; b9 = -np.inf; b10 = -np.inf; b11 = -np.inf
+    i = first
+    j = first + count - 1
+    while i <= j:
+        r = refs[i]
+        if r[6 + axis] < plane:
+            a0 = min(a0, r[0]); a1 = min(a1, r[1]); a2 = min(a2, r[2])
+            a3 = max(a3, r[3]); a4 = max(a4, r[4]); a5 = max(a5, r[5])
+            a6 = min(a6, r[6]); a7 = min(a7, r[7]); a8 = min(a8, r[8])
+            a9 = max(a9, r[6]); a10 = max(a10, r[7]); a11 = max(a11, r[8])
+            i += 1
+        else:
+            b0 = min(b0, r[0]); b1 = min(b1, r[1]); b2 = min(b2, r[2])
+            b3 = max(b3, r[3]); b4 = max(b4, r[4]); b5 = max(b5, r[5])
+            b6 = min(b6, r[6]); b7 = min(b7, r[7]); b8 = min(b8, r[8])
+            b9 = max(b9, r[6]); b10 = max(b10, r[7]); b11 = max(b11, r[8])
+            p = order[i]
+            order[i] = order[j]
+            order[j] = p
+            for c in range(9):
+                refs[i, c], refs[j, c] = refs[j, c], refs[i, c]
+            j -= 1
+    if i == first or i == first + count:
+        # Rounding put every centroid on one side of a plane the bins had between them.
+        mid = first + count // 2
+        _node_bounds(refs, first, mid - first, left_bounds)
+        _node_bounds(refs, mid, first + count - mid, right_bounds)
+        return mid
+    left_bounds[0], left_bounds[1], left_bounds[2], left_bounds[3] = a0, a1, a2, a3
+    left_bounds[4], left_bounds[5], left_bounds[6], left_bounds[7] = a4, a5, a6, a7
+    left_bounds[8], left_bounds[9], left_bounds[10], left_bounds[11] = a8, a9, a10, a11
+    right_bounds[0], right_bounds[1], right_bounds[2], right_bounds[3] = b0, b1, b2, b3
+    right_bounds[4], right_bounds[5], right_bounds[6], right_bounds[7] = b4, b5, b6, b7
+    right_bounds[8], right_bounds[9], right_bounds[10], right_bounds[11] = b8, b9, b10, b11
+    return i
+
+
+@njit(cache=True)
+def _subtree(refs, order, box, links, root, first, count, depth, root_bounds, next_node, leaf_size, bins,
+             c_traverse, c_intersect, max_depth):
+    """Build the subtree of primitives first..first + count - 1 at node ``root`` (at
+    ``depth``; ``root_bounds`` its _node_bounds), its children placed from node
+    ``next_node`` on, next to each other: fill box (N, 6) float64 [lo, hi] and links (N, 2)
+    int32 (a leaf: first primitive, count; an inner node: left child, 0). Returns the first
+    node it left free, or -1 where the tree would be deeper than ``max_depth``. Nodes are
+    taken from a stack of (node, first, count, depth) and their bounds, the left child
+    first."""
     stack = np.empty((4 * max_depth, 4), dtype=np.int64)
-    stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3] = 0, 0, n_prims, 1
+    stack_bounds = np.empty((4 * max_depth + 4, 12))
+    stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3] = root, first, count, depth
+    stack_bounds[0, :] = root_bounds
     sp = 1
-    n_nodes = 1
+    n_nodes = next_node
     bin_count = np.zeros((3, bins), dtype=np.int64)
     bin_box = np.empty((3, bins, 6))
     right_area = np.empty(bins)
     right_count = np.empty(bins, dtype=np.int64)
-    cent = np.empty((n_prims, 3))
-    for p in range(n_prims):
-        for axis in range(3):
-            cent[p, axis] = 0.5 * (lo[p, axis] + hi[p, axis])
+    scale = np.zeros(3)
     while sp > 0:
         sp -= 1
         node, first, count, depth = stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3]
         if depth > max_depth:
             return -1
-        # The node's box and the box of its primitives' centroids.
-        b0 = np.inf; b1 = np.inf; b2 = np.inf; b3 = -np.inf; b4 = -np.inf; b5 = -np.inf
-        c0 = np.inf; c1 = np.inf; c2 = np.inf; c3 = -np.inf; c4 = -np.inf; c5 = -np.inf
-        for k in range(first, first + count):
-            p = order[k]
-            b0 = min(b0, lo[p, 0]); b1 = min(b1, lo[p, 1]); b2 = min(b2, lo[p, 2])
-            b3 = max(b3, hi[p, 0]); b4 = max(b4, hi[p, 1]); b5 = max(b5, hi[p, 2])
-            x = cent[p, 0]; y = cent[p, 1]; z = cent[p, 2]
-            c0 = min(c0, x); c1 = min(c1, y); c2 = min(c2, z)
-            c3 = max(c3, x); c4 = max(c4, y); c5 = max(c5, z)
-        box[node, 0], box[node, 1], box[node, 2] = b0, b1, b2
-        box[node, 3], box[node, 4], box[node, 5] = b3, b4, b5
+        bounds = stack_bounds[sp]
+        box[node, :] = bounds[:6]
         if count <= 1:
             links[node, 0], links[node, 1] = first, count
             continue
-        # The binned SAH (rtfgu.accelerators.bvh.BVH._best_split): the cheapest plane. One
-        # pass over the primitives bins them along all three axes at once.
-        area = _surface_area(b0, b1, b2, b3, b4, b5)
-        # A node small enough to be a leaf is split only where a plane costs less than the
-        # leaf; a bigger one at its cheapest plane, whatever it costs (PBRT-v4 section 7.3.4).
-        best_cost = c_intersect * count if count <= leaf_size else np.inf
-        best_axis = -1
-        best_plane = 0.0
-        clo = (c0, c1, c2)
-        extent = (c3 - c0, c4 - c1, c5 - c2)
-        scale = np.zeros(3)
-        for axis in range(3):
-            if extent[axis] > 0.0:
-                scale[axis] = bins / extent[axis]
-        bin_count[:, :] = 0
-        bin_box[:, :, 0:3] = np.inf
-        bin_box[:, :, 3:6] = -np.inf
-        for k in range(first, first + count):
-            p = order[k]
-            l0, l1, l2, h0, h1, h2 = lo[p, 0], lo[p, 1], lo[p, 2], hi[p, 0], hi[p, 1], hi[p, 2]
-            for axis in range(3):
-                if scale[axis] == 0.0:
-                    continue
-                j = min(int(scale[axis] * (cent[p, axis] - clo[axis])), bins - 1)
-                bin_count[axis, j] += 1
-                box_j = bin_box[axis, j]
-                box_j[0] = min(box_j[0], l0); box_j[1] = min(box_j[1], l1); box_j[2] = min(box_j[2], l2)
-                box_j[3] = max(box_j[3], h0); box_j[4] = max(box_j[4], h1); box_j[5] = max(box_j[5], h2)
-        for axis in range(3):
-            if scale[axis] == 0.0:
-                continue
-            # Sweep from the right: area and count of bins j..bins-1.
-            r0 = np.inf; r1 = np.inf; r2 = np.inf; r3 = -np.inf; r4 = -np.inf; r5 = -np.inf
-            n_right = 0
-            for j in range(bins - 1, 0, -1):
-                r0 = min(r0, bin_box[axis, j, 0]); r1 = min(r1, bin_box[axis, j, 1]); r2 = min(r2, bin_box[axis, j, 2])
-                r3 = max(r3, bin_box[axis, j, 3]); r4 = max(r4, bin_box[axis, j, 4]); r5 = max(r5, bin_box[axis, j, 5])
-                n_right += bin_count[axis, j]
-                right_count[j] = n_right
-                right_area[j] = _surface_area(r0, r1, r2, r3, r4, r5) if n_right > 0 else 0.0
-            l0 = np.inf; l1 = np.inf; l2 = np.inf; l3 = -np.inf; l4 = -np.inf; l5 = -np.inf
-            n_left = 0
-            for plane in range(1, bins):
-                j = plane - 1
-                l0 = min(l0, bin_box[axis, j, 0]); l1 = min(l1, bin_box[axis, j, 1]); l2 = min(l2, bin_box[axis, j, 2])
-                l3 = max(l3, bin_box[axis, j, 3]); l4 = max(l4, bin_box[axis, j, 4]); l5 = max(l5, bin_box[axis, j, 5])
-                n_left += bin_count[axis, j]
-                if n_left == 0 or right_count[plane] == 0 or not area > 0.0:
-                    continue
-                cost = c_traverse + c_intersect * (_surface_area(l0, l1, l2, l3, l4, l5) * n_left
-                                                   + right_area[plane] * right_count[plane]) / area
-                if cost < best_cost:
-                    best_cost = cost
-                    best_axis = axis
-                    best_plane = clo[axis] + extent[axis] * plane / bins
-        if best_axis < 0:
-            if count <= leaf_size:
-                links[node, 0], links[node, 1] = first, count
-                continue
-            # No plane pays, but the node is too big for a leaf: the median of the widest axis.
-            best_axis = 0
-            if c4 - c1 > c3 - c0:
-                best_axis = 1
-            if c5 - c2 > max(c3 - c0, c4 - c1):
-                best_axis = 2
-            keys = np.empty(count)
-            for k in range(count):
-                p = order[first + k]
-                keys[k] = lo[p, best_axis] + hi[p, best_axis]
-            sorted_part = order[first:first + count][np.argsort(keys, kind="mergesort")]
-            order[first:first + count] = sorted_part
-            mid = first + count // 2
-        else:
-            # Partition order[first:first + count]: centroids below the plane first.
-            i = first
-            j = first + count - 1
-            while i <= j:
-                p = order[i]
-                if cent[p, best_axis] < best_plane:
-                    i += 1
-                else:
-                    order[i] = order[j]
-                    order[j] = p
-                    j -= 1
-            mid = i
-            if mid == first or mid == first + count:
-                mid = first + count // 2
+        _bin_scale(bounds, bins, scale)
+        _empty_bins(bin_count, bin_box)
+        _bin(refs, first, count, bounds, scale, bin_count, bin_box)
+        axis, plane = _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse,
+                                  c_intersect, right_area, right_count)
+        if axis < 0 and count <= leaf_size:
+            links[node, 0], links[node, 1] = first, count
+            continue
+        # The right child's bounds go below the left's, over this node's (read: done).
+        mid = _split_at(refs, order, first, count, bounds, axis, plane, stack_bounds[sp + 2], stack_bounds[sp + 3])
+        stack_bounds[sp + 1, :] = stack_bounds[sp + 2]
+        stack_bounds[sp, :] = stack_bounds[sp + 3]
         left = n_nodes
         n_nodes += 2
         links[node, 0], links[node, 1] = left, 0
         stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3] = left + 1, mid, first + count - mid, depth + 1
         stack[sp + 1, 0], stack[sp + 1, 1], stack[sp + 1, 2], stack[sp + 1, 3] = left, first, mid - first, depth + 1
         sp += 2
+    return n_nodes
+
+
+# The parallel build (_build): a node of more than TASK_MIN primitives is split with its
+# bounds and bins made by all cores (PARTS parts of its primitives each, merged: min, max and
+# counts are exact in any order), and each node of at most TASK_MIN below them is a subtree
+# that one core builds (_subtree), the biggest first, handed out one at a time. A node's
+# split depends only on its primitives and their order, so the tree is the one _subtree
+# builds over all primitives at once, and the nodes are numbered again as that build numbers
+# them: the table is the same, node for node, whatever TASK_MIN and the number of cores
+# (tests/test_mesh_paths.py builds it both ways).
+TASK_MIN = 1 << 14
+PARTS = 16
+
+
+@njit(cache=True, parallel=True)
+def _node_bounds_parallel(refs, first, count, out):
+    """_node_bounds with all cores: PARTS parts, merged."""
+    parts = np.empty((PARTS, 12))
+    for q in prange(PARTS):
+        start = first + count * q // PARTS
+        _node_bounds(refs, start, first + count * (q + 1) // PARTS - start, parts[q])
+    for i in range(6):
+        out[i] = parts[:, i].min()
+        out[6 + i] = parts[:, 6 + i].min()
+    for i in range(3):
+        out[3 + i] = parts[:, 3 + i].max()
+        out[9 + i] = parts[:, 9 + i].max()
+
+
+@njit(cache=True, parallel=True)
+def _bin_parallel(refs, first, count, bounds, scale, bin_count, bin_box):
+    """_bin with all cores: each of PARTS parts into bins of its own, merged."""
+    bins = bin_count.shape[1]
+    counts = np.zeros((PARTS, 3, bins), dtype=np.int64)
+    boxes = np.empty((PARTS, 3, bins, 6))
+    for q in prange(PARTS):
+        _empty_bins(counts[q], boxes[q])
+        start = first + count * q // PARTS
+        _bin(refs, start, first + count * (q + 1) // PARTS - start, bounds, scale,
+             counts[q], boxes[q])
+    for axis in range(3):
+        for j in range(bins):
+            bin_count[axis, j] = counts[:, axis, j].sum()
+            for i in range(3):
+                bin_box[axis, j, i] = boxes[:, axis, j, i].min()
+                bin_box[axis, j, 3 + i] = boxes[:, axis, j, 3 + i].max()
+
+
+@njit(cache=True, parallel=True)
+def _subtrees(refs, order, box, links, tasks, task_bounds, leaf_size, bins, c_traverse, c_intersect,
+              max_depth, ends):
+    """_subtree of each row (node, first, count, depth, next node) of ``tasks`` with its
+    bounds ``task_bounds``, all cores; ends[i] = what task i returned."""
+    for i in prange(tasks.shape[0]):
+        ends[i] = _subtree(refs, order, box, links, tasks[i, 0], tasks[i, 1], tasks[i, 2], tasks[i, 3],
+                           task_bounds[i], tasks[i, 4], leaf_size, bins, c_traverse, c_intersect, max_depth)
+
+
+@njit(cache=True, parallel=True)
+def _place_blocks(box_in, links_in, blocks, box, links):
+    """Copy each block (start, end, new start) of nodes of box_in/links_in to its new start
+    in box/links, its inner nodes' left children moved with it."""
+    for i in prange(blocks.shape[0]):
+        start, end, to = blocks[i, 0], blocks[i, 1], blocks[i, 2]
+        shift = to - start
+        for k in range(end - start):
+            box[to + k, :] = box_in[start + k, :]
+            leaf = links_in[start + k, 1] > 0
+            links[to + k, 0] = links_in[start + k, 0] + (0 if leaf else shift)
+            links[to + k, 1] = links_in[start + k, 1]
+
+
+def _build(refs, order, box, links):
+    """Fill box and links with the tree over all primitives, root node 0, as the parallel
+    build makes it (TASK_MIN); returns the number of nodes, or -1 where it would be deeper
+    than MAX_DEPTH."""
+    n_prims = len(order)
+    root_bounds = np.empty(12)
+    # The top of the tree, each node split by all cores; its nodes numbered as they come.
+    # (A tree of at most TASK_MIN primitives is one task, its root.)
+    _node_bounds_parallel(refs, 0, n_prims, root_bounds)
+    top, tasks = [], []
+    stack = [(0, 0, n_prims, 1, root_bounds)]
+    scale = np.zeros(3)
+    bin_count = np.zeros((3, BINS), dtype=np.int64)
+    bin_box = np.empty((3, BINS, 6))
+    right_area = np.empty(BINS)
+    right_count = np.empty(BINS, dtype=np.int64)
+    n_top = 1
+    while stack:
+        node, first, count, depth, bounds = stack.pop()
+        if count <= TASK_MIN:
+            tasks.append((node, first, count, depth, bounds))
+            continue
+        if depth > MAX_DEPTH:
+            return -1
+        _bin_scale(bounds, BINS, scale)
+        _bin_parallel(refs, first, count, bounds, scale, bin_count, bin_box)
+        axis, plane = _best_plane(bin_count, bin_box, bounds, scale, count, LEAF_SIZE, C_TRAVERSE,
+                                  C_INTERSECT, right_area, right_count)
+        left_bounds, right_bounds = np.empty(12), np.empty(12)
+        mid = _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right_bounds)
+        top.append((node, bounds[:6], n_top))
+        stack.append((n_top + 1, mid, first + count - mid, depth + 1, right_bounds))
+        stack.append((n_top, first, mid - first, depth + 1, left_bounds))
+        n_top += 2
+    # Below it, the subtrees: task i's children from node n_top + 2 first on (a subtree of
+    # c primitives has at most 2 c - 1 nodes).
+    box_in = np.empty((n_top + 2 * n_prims, 6))
+    links_in = np.zeros((n_top + 2 * n_prims, 2), dtype=np.int32)
+    for node, node_box, left in top:
+        box_in[node] = node_box
+        links_in[node] = (left, 0)
+    tasks.sort(key=lambda task: -task[2])    # the biggest first
+    rows = np.array([(node, first, count, depth, n_top + 2 * first) for node, first, count, depth, _ in tasks],
+                    dtype=np.int64)
+    task_bounds = np.array([task[4] for task in tasks])
+    ends = np.empty(len(rows), dtype=np.int64)
+    with chunks_of_one():
+        _subtrees(refs, order, box_in, links_in, rows, task_bounds, LEAF_SIZE, BINS, C_TRAVERSE, C_INTERSECT,
+                  MAX_DEPTH, ends)
+    if (ends < 0).any():
+        return -1
+    # Number the nodes as the serial build does: a node's children get the next two numbers
+    # when it is taken from the stack, the left one taken next, so the nodes below a task's
+    # root take the next (end - start) numbers in the order its own build gave them.
+    below = {int(r[0]): (int(r[4]), int(e)) for r, e in zip(rows, ends)}
+    blocks = []
+    stack = [(0, 0)]
+    n_nodes = 1
+    while stack:
+        source, node = stack.pop()
+        box[node] = box_in[source]
+        if source in below:
+            start, end = below[source]
+            links[node] = links_in[source]
+            if links_in[source, 1] == 0:
+                links[node, 0] += n_nodes - start
+            blocks.append((start, end, n_nodes))
+            n_nodes += end - start
+            continue
+        left = int(links_in[source, 0])
+        links[node] = (n_nodes, 0)
+        stack.append((left + 1, n_nodes + 1))
+        stack.append((left, n_nodes))
+        n_nodes += 2
+    _place_blocks(box_in, links_in, np.array(blocks, dtype=np.int64), box, links)
     return n_nodes
 
 
@@ -232,11 +478,12 @@ def _depth(links):
     return deepest
 
 
-@njit(cache=True)
-def _round_out(box, nodes):
-    """Write the float64 boxes ``box`` (N, 6) [lo, hi] into the float32 ``nodes`` (N, 8)
-    columns 0-2 and 4-6, each lo rounded down and each hi up to a float32."""
-    for i in range(box.shape[0]):
+@njit(cache=True, parallel=True)
+def _round_out(box, out, high):
+    """Write the float64 boxes ``box`` (N, >= 6) [lo, hi] into the float32 rows of ``out``,
+    lo at columns 0-2 and hi at ``high``..``high`` + 2, each lo rounded down and each hi up
+    to a float32."""
+    for i in prange(box.shape[0]):
         for axis in range(3):
             lo = np.float32(box[i, axis])
             if np.float64(lo) > box[i, axis]:
@@ -244,24 +491,8 @@ def _round_out(box, nodes):
             hi = np.float32(box[i, 3 + axis])
             if np.float64(hi) < box[i, 3 + axis]:
                 hi = np.nextafter(hi, np.float32(np.inf))
-            nodes[i, axis] = lo
-            nodes[i, 4 + axis] = hi
-
-
-@njit(cache=True)
-def _primitive_boxes(lo, hi, order, boxes):
-    """boxes[k] = the box of primitive order[k], [lo, hi] rounded outward to float32."""
-    for k in range(order.shape[0]):
-        p = order[k]
-        for axis in range(3):
-            low = np.float32(lo[p, axis])
-            if np.float64(low) > lo[p, axis]:
-                low = np.nextafter(low, np.float32(-np.inf))
-            high = np.float32(hi[p, axis])
-            if np.float64(high) < hi[p, axis]:
-                high = np.nextafter(high, np.float32(np.inf))
-            boxes[k, axis] = low
-            boxes[k, 3 + axis] = high
+            out[i, axis] = lo
+            out[i, high + axis] = hi
 
 
 def build(lo, hi) -> FlatBVH:
@@ -277,16 +508,17 @@ def build(lo, hi) -> FlatBVH:
     capacity = 2 * len(lo)
     box = np.empty((capacity, 6))
     links = np.zeros((capacity, 2), dtype=np.int32)
-    n = _build(lo, hi, order, box, links, LEAF_SIZE, BINS, C_TRAVERSE, C_INTERSECT, MAX_DEPTH)
+    refs = _references(lo, hi)
+    n = _build(refs, order, box, links)
     if n < 0:
         raise ValueError("BVH: the tree would be deeper than %d levels (degenerate boxes)" % MAX_DEPTH)
     nodes = np.zeros((n, NODE_WIDTH), dtype=np.float32)
-    _round_out(box[:n], nodes)
+    _round_out(box[:n], nodes, 4)
     ints = nodes.view(np.int32)
     ints[:, 3] = links[:n, 0]
     ints[:, 7] = links[:n, 1]
-    boxes = np.empty((len(order), 6), dtype=np.float32)
-    _primitive_boxes(lo, hi, order, boxes)
+    boxes = np.empty((len(order), 6), dtype=np.float32)    # refs are in leaf order now
+    _round_out(refs, boxes, 3)
     return FlatBVH(nodes, order, time.perf_counter() - start, boxes)
 
 
