@@ -764,8 +764,8 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             return part
         faces, first, index = part
         rows = np.empty((len(faces), 4), dtype=np.int32)
-        rows[:, :3] = faces + first
-        rows[:, 3] = np.arange(index, index + len(faces))
+        np.add(faces, first, out=rows[:, :3], casting="unsafe")    # no int64 temporary
+        rows[:, 3] = np.arange(index, index + len(faces), dtype=np.int32)
         return rows
 
     for i, shape in mesh_faces:
@@ -823,12 +823,12 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
             lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
             bvh = flat_bvh.build(_joined([lo, bound_lo]), _joined([hi, bound_hi]))
             trees.append(bvh)
-            rows.append(faces[bvh.order])
+            rows.append(np.take(faces, bvh.order, axis=0))   # a row's 16 bytes at once
         for part in map(rows_of, object_parts):
             bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, part))
             roots.append(sum(t.num_nodes for t in trees))
             trees.append(flat_bvh.offset(bvh, roots[-1], sum(len(r) for r in rows)))
-            rows.append(part[bvh.order])
+            rows.append(np.take(part, bvh.order, axis=0))
         bvh = trees[0] if len(trees) == 1 else flat_bvh.FlatBVH(
             np.concatenate([t.nodes for t in trees]), np.concatenate([t.order for t in trees]),
             sum(t.build_seconds for t in trees), np.concatenate([t.boxes for t in trees]))

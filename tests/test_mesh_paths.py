@@ -202,6 +202,24 @@ def test_the_parallel_build_is_the_serial_tree_node_for_node(monkeypatch, task_m
         assert (parallel.boxes[:, :3] <= lo[parallel.order]).all() and (parallel.boxes[:, 3:] >= hi[parallel.order]).all()
 
 
+def test_boxes_round_out_to_float32_as_nextafter_does():
+    """The build's rounding (a step on the float32's bits) against np.nextafter, over
+    magnitudes from subnormal to overflow, both zeros and exact float32 values."""
+    rng = np.random.default_rng(3)
+    values = np.concatenate([rng.normal(size=20000) * 10.0 ** rng.integers(-47, 40, 20000),
+                             [0.0, -0.0, 1e-300, -1e-300, 1e-46, -1e-46, 3.5e38, -3.5e38, 1.0, -1.0,
+                              2.0 ** -149, -2.0 ** -149, 2.0 ** -150, -2.0 ** -150, 1 + 2.0 ** -30]])
+    out = np.zeros((len(values), 8), np.float32)
+    flat_bvh._round_out(np.stack([values] * 6, axis=1), out, out.view(np.int32), 4)
+    for column, toward in ((0, -np.inf), (4, np.inf)):
+        with np.errstate(over="ignore"):     # beyond float32: inf, stepped back to its largest
+            expected = values.astype(np.float32)
+        wrong_side = (expected.astype(np.float64) > values) if toward < 0 else (expected.astype(np.float64) < values)
+        expected[wrong_side] = np.nextafter(expected[wrong_side], np.float32(toward))
+        assert np.array_equal(out[:, column].view(np.int32), expected.view(np.int32))
+    assert (out[:, 0] <= values).all() and (out[:, 4] >= values).all()
+
+
 def test_bad_boxes_are_refused():
     with pytest.raises(ValueError, match="not finite"):
         flat_bvh.build(np.array([[0.0, np.nan, 0.0]]), np.array([[1.0, 1.0, 1.0]]))

@@ -479,20 +479,28 @@ def _depth(links):
 
 
 @njit(cache=True, parallel=True)
-def _round_out(box, out, high):
-    """Write the float64 boxes ``box`` (N, >= 6) [lo, hi] into the float32 rows of ``out``,
-    lo at columns 0-2 and hi at ``high``..``high`` + 2, each lo rounded down and each hi up
-    to a float32."""
+def _round_out(box, out, bits, high):
+    """Write the float64 boxes ``box`` (N, >= 6) [lo, hi] into the float32 rows of ``out``
+    (``bits``: the same array as int32), lo at columns 0-2 and hi at ``high``..``high`` + 2,
+    each lo rounded down and each hi up to a float32: the nearest float32, moved one step
+    where it lies on the wrong side (np.nextafter's step, done on the bits: one float32
+    further from zero is the next integer, ±0 steps to the smallest subnormal)."""
     for i in prange(box.shape[0]):
         for axis in range(3):
             lo = np.float32(box[i, axis])
-            if np.float64(lo) > box[i, axis]:
-                lo = np.nextafter(lo, np.float32(-np.inf))
-            hi = np.float32(box[i, 3 + axis])
-            if np.float64(hi) < box[i, 3 + axis]:
-                hi = np.nextafter(hi, np.float32(np.inf))
             out[i, axis] = lo
+            if np.float64(lo) > box[i, axis]:
+                if lo == 0:
+                    bits[i, axis] = -2147483647    # 0x80000001: the subnormal below -0
+                else:
+                    bits[i, axis] += -1 if lo > 0 else 1
+            hi = np.float32(box[i, 3 + axis])
             out[i, high + axis] = hi
+            if np.float64(hi) < box[i, 3 + axis]:
+                if hi == 0:
+                    bits[i, high + axis] = 1
+                else:
+                    bits[i, high + axis] += 1 if hi > 0 else -1
 
 
 def build(lo, hi) -> FlatBVH:
@@ -513,12 +521,12 @@ def build(lo, hi) -> FlatBVH:
     if n < 0:
         raise ValueError("BVH: the tree would be deeper than %d levels (degenerate boxes)" % MAX_DEPTH)
     nodes = np.zeros((n, NODE_WIDTH), dtype=np.float32)
-    _round_out(box[:n], nodes, 4)
+    _round_out(box[:n], nodes, nodes.view(np.int32), 4)
     ints = nodes.view(np.int32)
     ints[:, 3] = links[:n, 0]
     ints[:, 7] = links[:n, 1]
     boxes = np.empty((len(order), 6), dtype=np.float32)    # refs are in leaf order now
-    _round_out(refs, boxes, 3)
+    _round_out(refs, boxes, boxes.view(np.int32), 3)
     return FlatBVH(nodes, order, time.perf_counter() - start, boxes)
 
 
@@ -541,9 +549,9 @@ def triangle_bounds(vertices: np.ndarray, faces: np.ndarray):
     return lo, hi
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def _triangle_bounds(vertices, faces, lo, hi):
-    for f in range(faces.shape[0]):
+    for f in prange(faces.shape[0]):
         a, b, c = faces[f, 0], faces[f, 1], faces[f, 2]
         for axis in range(3):
             x, y, z = vertices[a, axis], vertices[b, axis], vertices[c, axis]

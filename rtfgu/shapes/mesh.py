@@ -82,6 +82,8 @@ class Mesh:
         m = len(self.faces)
         self.colors = _per_face_colors(color, m)
         self.materials = _per_face_materials(material, m)
+        # The tuple of one Material for every face, while it is self.materials (surfaces()).
+        self._one_material = self.materials if material is None or isinstance(material, Material) else None
         _refuse_zero_area(self.vertices, self.faces)
         self._triangles = None      # (key, [MeshTriangle per face]) once triangles() made them
         # (materials, colours, surfaces(), [(material, cd is a colour)]) once surfaces() ran
@@ -126,9 +128,12 @@ class Mesh:
                 and all(isinstance(m.cd, Float3) == own for m, own in self._surfaces[3]):
             return self._surfaces[2]
         m = len(self.faces)
-        ids = np.fromiter(map(id, self.materials), dtype=np.uint64, count=m)
+        if self._one_material is self.materials:    # made from one Material: one group
+            groups = [np.arange(m)]
+        else:
+            groups = _groups(np.fromiter(map(id, self.materials), dtype=np.uint64, count=m))
         out = []
-        for faces in _groups(ids):
+        for faces in groups:
             material = self.materials[faces[0]]
             if isinstance(material.cd, Float3):
                 out.append((int(faces[0]), material, faces))
