@@ -320,7 +320,7 @@ def _subtree(refs, order, box, links, root, first, count, depth, root_bounds, ne
 # builds over all primitives at once, and the nodes are numbered again as that build numbers
 # them: the table is the same, node for node, whatever TASK_MIN and the number of cores
 # (tests/test_mesh_paths.py builds it both ways).
-TASK_MIN = 1 << 14
+TASK_MIN = 1 << 17
 PARTS = 16
 
 
@@ -340,22 +340,30 @@ def _node_bounds_parallel(refs, first, count, out):
 
 
 @njit(cache=True, parallel=True)
-def _bin_parallel(refs, first, count, bounds, scale, bin_count, bin_box):
-    """_bin with all cores: each of PARTS parts into bins of its own, merged."""
-    bins = bin_count.shape[1]
+def _split_node(refs, order, first, count, bounds, bins, leaf_size, c_traverse, c_intersect, left_bounds,
+                right_bounds):
+    """Split a node of the top of the tree as _subtree splits one (a node this big is never
+    a leaf), its bins made by all cores: each of PARTS parts of its primitives into bins of
+    its own, merged. Returns where the right child starts (_split_at)."""
+    scale = np.zeros(3)
+    _bin_scale(bounds, bins, scale)
     counts = np.zeros((PARTS, 3, bins), dtype=np.int64)
     boxes = np.empty((PARTS, 3, bins, 6))
     for q in prange(PARTS):
         _empty_bins(counts[q], boxes[q])
         start = first + count * q // PARTS
-        _bin(refs, start, first + count * (q + 1) // PARTS - start, bounds, scale,
-             counts[q], boxes[q])
+        _bin(refs, start, first + count * (q + 1) // PARTS - start, bounds, scale, counts[q], boxes[q])
+    bin_count = np.zeros((3, bins), dtype=np.int64)
+    bin_box = np.empty((3, bins, 6))
     for axis in range(3):
         for j in range(bins):
             bin_count[axis, j] = counts[:, axis, j].sum()
             for i in range(3):
                 bin_box[axis, j, i] = boxes[:, axis, j, i].min()
                 bin_box[axis, j, 3 + i] = boxes[:, axis, j, 3 + i].max()
+    axis, plane = _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse, c_intersect,
+                              np.empty(bins), np.empty(bins, dtype=np.int64))
+    return _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right_bounds)
 
 
 @njit(cache=True, parallel=True)
@@ -393,11 +401,6 @@ def _build(refs, order, box, links):
     _node_bounds_parallel(refs, 0, n_prims, root_bounds)
     top, tasks = [], []
     stack = [(0, 0, n_prims, 1, root_bounds)]
-    scale = np.zeros(3)
-    bin_count = np.zeros((3, BINS), dtype=np.int64)
-    bin_box = np.empty((3, BINS, 6))
-    right_area = np.empty(BINS)
-    right_count = np.empty(BINS, dtype=np.int64)
     n_top = 1
     while stack:
         node, first, count, depth, bounds = stack.pop()
@@ -406,12 +409,9 @@ def _build(refs, order, box, links):
             continue
         if depth > MAX_DEPTH:
             return -1
-        _bin_scale(bounds, BINS, scale)
-        _bin_parallel(refs, first, count, bounds, scale, bin_count, bin_box)
-        axis, plane = _best_plane(bin_count, bin_box, bounds, scale, count, LEAF_SIZE, C_TRAVERSE,
-                                  C_INTERSECT, right_area, right_count)
         left_bounds, right_bounds = np.empty(12), np.empty(12)
-        mid = _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right_bounds)
+        mid = _split_node(refs, order, first, count, bounds, BINS, LEAF_SIZE, C_TRAVERSE, C_INTERSECT,
+                          left_bounds, right_bounds)
         top.append((node, bounds[:6], n_top))
         stack.append((n_top + 1, mid, first + count - mid, depth + 1, right_bounds))
         stack.append((n_top, first, mid - first, depth + 1, left_bounds))

@@ -160,9 +160,13 @@ def collapse(bvh: FlatBVH, roots=(0,)) -> WideBVH:
     if leaves.any() and (links[leaves, 7].max() > 2 ** LEAF_BITS or links[leaves, 3].max() >= MAX_FIRST):
         raise ValueError("wide BVH: a leaf holds more than %d primitives or starts past %d"
                          % (2 ** LEAF_BITS, MAX_FIRST))
+    # Room for a wide node per binary one (only the pages written are ever touched), cut
+    # down to the nodes made in place: realloc, no copy of the table.
     out = np.empty((len(bvh.nodes) + len(roots), ROWS, WIDTH), dtype=np.float32)
+    out_links = out.view(np.int32)
     wide_roots = np.zeros(len(roots), dtype=np.int64)
-    n = _collapse(bvh.nodes, links, bvh.boxes, np.asarray(roots, dtype=np.int64), out, out.view(np.int32),
+    n = _collapse(bvh.nodes, links, bvh.boxes, np.asarray(roots, dtype=np.int64), out, out_links,
                   wide_roots, WIDTH, LEAF_BITS)
-    nodes = np.ascontiguousarray(out[:n])
-    return WideBVH(nodes, tuple(int(r) for r in wide_roots), time.perf_counter() - start)
+    del out_links
+    out.resize((n, ROWS, WIDTH), refcheck=False)    # no view of ``out`` is left
+    return WideBVH(out, tuple(int(r) for r in wide_roots), time.perf_counter() - start)

@@ -138,9 +138,9 @@ class Mesh:
             if isinstance(material.cd, Float3):
                 out.append((int(faces[0]), material, faces))
                 continue
-            colors = self.colors[faces]
+            colors = self.colors if len(faces) == m else self.colors[faces]    # no copy of them all
             for part in _groups(colors):
-                out.append((int(faces[part[0]]), material, faces[part]))
+                out.append((int(faces[part[0]]), material, faces if len(part) == len(faces) else faces[part]))
         out.sort(key=lambda group: group[0])
         kinds = [(m, isinstance(m.cd, Float3)) for m in {id(g[1]): g[1] for g in out}.values()]
         self._surfaces = (self.materials, self.colors.copy(), out, kinds)
@@ -273,7 +273,8 @@ def _face_indices(faces, num_vertices: int) -> np.ndarray:
         raise ValueError("Mesh.faces is empty: a mesh needs at least one triangle")
     if not np.issubdtype(array.dtype, np.integer):
         raise ValueError("Mesh.faces must hold integer vertex indices, got %s" % array.dtype)
-    bad = np.flatnonzero(((array < 0) | (array >= num_vertices)).any(axis=1))
+    bad = np.flatnonzero(((array < 0) | (array >= num_vertices)).any(axis=1)) \
+        if array.min() < 0 or array.max() >= num_vertices else ()
     if len(bad):
         raise ValueError("Mesh.faces[%d] = %s refers to a vertex outside 0..%d"
                          % (bad[0], tuple(int(i) for i in array[bad[0]]), num_vertices - 1))
@@ -315,7 +316,8 @@ def _per_face_colors(color, m: int) -> np.ndarray:
     array = np.asarray(color, dtype=np.float64) if not isinstance(color, Float3) else \
         np.array([color.x, color.y, color.z])
     if array.shape == (3,):
-        array = np.repeat(array[None, :], m, axis=0)
+        _finite_rows(array[None, :], "Mesh.color")      # checked once, not once per face
+        return np.repeat(array[None, :], m, axis=0)
     elif array.shape != (m, 3):
         raise ValueError("Mesh.color must be one colour or one per face (%d, 3), got shape %s"
                          % (m, array.shape))
@@ -343,9 +345,9 @@ def zero_area_faces(vertices: np.ndarray, faces: np.ndarray) -> np.ndarray:
     out = []
     for start in range(0, len(faces), ZERO_AREA_BLOCK):
         block = faces[start:start + ZERO_AREA_BLOCK]
-        v0 = vertices[block[:, 0]]
-        e0 = vertices[block[:, 1]] - v0
-        e1 = vertices[block[:, 2]] - v0
+        v0 = np.take(vertices, block[:, 0], axis=0)      # np.take: a row at a time
+        e0 = np.take(vertices, block[:, 1], axis=0) - v0
+        e1 = np.take(vertices, block[:, 2], axis=0) - v0
         nx = e0[:, 1] * e1[:, 2] - e0[:, 2] * e1[:, 1]
         ny = e0[:, 2] * e1[:, 0] - e0[:, 0] * e1[:, 2]
         nz = e0[:, 0] * e1[:, 1] - e0[:, 1] * e1[:, 0]
