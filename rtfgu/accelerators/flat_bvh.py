@@ -2,8 +2,9 @@
 arrays, into a flat node table that both paths traverse.
 
 The build is the lecture BVH's (BINS bins, LEAF_SIZE, C_INTERSECT) over the primitives'
-boxes as arrays, with numba when it is installed (the build of a 1.3-million-triangle mesh
-takes under a second; docs/bvh.md has the figures) and as plain Python otherwise. It has one
+boxes as arrays, with numba on all cores when it is installed (TASK_MIN says how; the
+1.3-million-triangle mesh of `make bench` builds in about 1 s on 2 cores, docs/bvh.md) and as
+plain Python otherwise, the same table either way. It has one
 constant of its own: a step down the tree costs C_TRAVERSE = 2 shape tests, where the
 lecture's costs 1. Leaves then hold two shapes or more where they can (the lecture's tree
 splits down to single shapes, so a student sees every step and ties meet across leaves):
