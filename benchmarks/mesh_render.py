@@ -44,6 +44,7 @@ sys.path.insert(0, str(HERE))
 
 import rtfgu  # noqa: E402
 from rtfgu.float3 import Float3  # noqa: E402
+from rtfgu.accelerators import flat_bvh  # noqa: E402
 from rtfgu.kernels import NumbaAccumulator  # noqa: E402
 
 from meshes import bunny, displaced_icosphere  # noqa: E402
@@ -82,6 +83,15 @@ def main(argv=None) -> None:
         warm = displaced_icosphere(1)
         rtfgu.render(mesh_scene(rtfgu.Mesh(warm.vertices, warm.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()),
                                 args.triangles), 16, 16, backend="numba", precision=args.precision)
+        # The build's parallel part splits only nodes of more than TASK_MIN primitives: the
+        # small mesh built once more with TASK_MIN lowered, so that "compiled before" holds
+        # for its functions too (numba compiles them, or loads them from its cache, once).
+        task_min, flat_bvh.TASK_MIN = flat_bvh.TASK_MIN, 16
+        try:
+            corners = warm.vertices[warm.faces]
+            flat_bvh.build(corners.min(axis=1), corners.max(axis=1))
+        finally:
+            flat_bvh.TASK_MIN = task_min
 
     arrays = bunny() if args.bunny else displaced_icosphere(args.subdivisions)
     scene, construct = timed(lambda: mesh_scene(

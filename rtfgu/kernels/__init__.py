@@ -98,7 +98,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     cast, path = (MAX_DEPTH if continues else None, flat.area_lighting, stacks), None
     if flat.max_depth:
         cast, path = None, (flat.max_depth, flat.lights_at_every_vertex)
-    # A pinhole's primary rays through the scene's wide BVH in packets (render_packet_tile),
+    # A pinhole's primary rays through the scene's wide BVH in packets (render.primary_hits),
     # for the ray-cast tracer in float32 (float64 packets measured no faster: docs/bvh.md).
     packets = 1 if (cast is not None and flat.camera_kind == PINHOLE and not flat.show_ray_direction
                     and flat.dtype == np.float32 and flat.mesh is not None and flat.mesh.scene_tree

@@ -92,13 +92,13 @@ def _mesh_parts(k: int, kind, at: int) -> list:
 
 def _given_or_scan(name: str) -> str:
     """given_or_scan_ of a mesh kind: scan_ (the BVH's traversal), or, where intersect_scene
-    is given the BVH's hit already (a packet's: rtfgu.kernels.packet) and told to take it, that
-    hit kept if nearer than ``hit`` by the tie rule: every hit is kept by the smaller (t, scene
-    index), so this is the hit the traversal would give."""
+    is given the BVH's hit already (a packet's: rtfgu.kernels.packet), that hit kept if nearer
+    than ``hit`` by the tie rule: every hit is kept by the smaller (t, scene index), so this
+    is the hit the traversal would give."""
     params = "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, hit, formula"
     scan = "scan_%s(%s)" % (name, params)
     return _overloaded("given_or_scan_" + name, "given, " + params, scan,
-                       "    if given[1]:\n        return nearer_hit(hit, given[0])\n    return " + scan,
+                       "    return nearer_hit(hit, given)",
                        "The nearest hit among what the BVH holds, given the nearest so far, or the BVH's hit "
                        "given")
 
@@ -536,8 +536,8 @@ def source() -> str:
         "def intersect_scene(shapes, terms, candidates, n_candidates, origin, direction, tmin, tmax, formula, "
         "given=None):",
         '    """The nearest hit over every shape: (t, scene index, kind, row), index -1 on a miss.',
-        "    ``given``: None, or (the hit of what the BVH holds, found before: a packet's; whether to",
-        '    take it instead of traversing the BVH)."""',
+        "    ``given``: None, or the hit of what the BVH holds, found before (a packet's), taken",
+        '    instead of traversing the BVH."""',
         "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",

@@ -22,7 +22,7 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
               or None where no material sends a second ray (trace); ``path`` PathTrace's
               (max_depth, lights at every vertex: False for GlobalTrace)
               (rtfgu.kernels.path_trace); ``packets`` 1 where a pinhole's primary rays go
-              through the scene's wide BVH in packets (render_packet_tile), else None
+              through the scene's wide BVH in packets (primary_hits), else None
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
 
@@ -188,17 +188,32 @@ def _typed_record_bounce(record, i, ray, hit, shader, normal, color):
     return write
 
 
-def given_at(primary, first):
-    """intersect_scene's ``given``: None without a packet's hit (typed by the overload
-    below), else (the hit, whether this is the primary ray, ``first``)."""
-    return as_python(_typed_given_at, primary, first)
+def nearest_hit(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
+    """The nearest hit (t, scene index, kind, row) of ``trace``'s ray at depth ``i``: the
+    scene's intersect_scene (a primary ray, i = 0, tests the from-eye kind's culled
+    candidates), or, with ``primary`` the primary ray's hit found before
+    (render_tile's second phase), that hit at depth 0. Where no shader continues a path
+    (``bounces`` None) and the hit is given, no intersection code is compiled here at all
+    (typed by the overload below)."""
+    return as_python(_typed_nearest_hit, primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax,
+                     formula)
 
 
-@overload(given_at, inline="always")
-def _typed_given_at(primary, first):
+@overload(nearest_hit, inline="always")
+def _typed_nearest_hit(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
     if isinstance(primary, types.NoneType):
-        return lambda primary, first: None
-    return lambda primary, first: (primary, first)
+        def search(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
+            return intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2] if i == 0 else -1,
+                                   origin, direction, tmin, tmax, formula)
+        return search
+    if isinstance(bounces, types.NoneType):
+        return lambda primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula: primary
+
+    def given_first(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
+        if i == 0:
+            return primary
+        return intersect_scene(shapes, eye_rows[0], eye_rows[1], -1, origin, direction, tmin, tmax, formula)
+    return given_first
 
 
 # A row of a tile's stack of rays (push_ray): origin (3), direction (3), weight (3), depth.
@@ -288,11 +303,9 @@ def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, stack
     array that receives every bounce of the first path (record_bounce). ``stream``: (pixel,
     sample, seed, whether area lights are sampled: AreaLighting), the numbers a ray at depth
     i draws being the stream's path_dimension(i, k). ``primary``: None, or the primary ray's
-    nearest hit among what the scene's BVH holds, found by a packet (render_packet_tile),
-    which intersect_scene then takes instead of traversing the BVH. Returns (radiance,
-    shadow rays, secondary rays)."""
+    nearest hit, found before (render_tile's second phase), taken instead of intersecting
+    it again (nearest_hit). Returns (radiance, shadow rays, secondary rays)."""
     origin, direction, tmin, tmax = ray
-    terms, candidates, n_candidates = eye_rows
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
     zero = lit(0, tmin)
@@ -308,8 +321,8 @@ def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, stack
         for i in range(first, depth):
             if i > 0:
                 n_secondary += 1
-            t, idx, kind, row = intersect_scene(shapes, terms, candidates, n_candidates if i == 0 else -1,
-                                                origin, direction, tmin, tmax, formula, given_at(primary, i == 0))
+            t, idx, kind, row = nearest_hit(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax,
+                                            formula)
             if idx < 0:
                 seen = background_radiance(scene[ENVIRONMENT], background, direction)
                 result = add(result, mul(weight, seen))
@@ -360,6 +373,156 @@ def screen_point(sampler, pixel, s, seed, ix, iy, width, height, one):
             lit(2, one) * (lit(iy, one) + spy) / lit(height, one) - one)
 
 
+# A packet: the PACKET_SIDE x PACKET_SIDE pixels of a block of a tile (rtfgu.kernels.packet).
+PACKET_SIDE = 4
+assert PACKET_SIDE * PACKET_SIDE == PACKET and TILE % PACKET_SIDE == 0
+
+
+# A tile's primary rays (render_tile's first phase): origin (3), direction (3), tmin, tmax.
+RAY_FIELDS = 8
+tile_rays = on_the_stack(RAY_FIELDS * TILE * TILE, "A tile's primary rays, RAY_FIELDS values each.")
+tile_values = on_the_stack(TILE * TILE, "A value per pixel of a tile.")
+tile_hits = on_the_stack(3 * TILE * TILE, "The (scene index, kind, row) of a tile's primary hits.")
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def fill_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
+    """Sample ``s``'s primary ray of every pixel of ``tile`` into ``rays``, row after row from
+    (x0, y0), RAY_FIELDS values a ray (ThinLens.gen_ray with the lens's sample, else the
+    camera's gen_ray)."""
+    x0, x1, y0, y1, width, height = tile
+    one = lit(1, camera_row[0])
+    c = 0
+    for iy in range(y0, y1):
+        for ix in range(x0, x1):
+            pixel = (height - 1 - iy) * width + ix
+            sx, sy = screen_point(sampler, pixel, s, seed, ix, iy, width, height, one)
+            if camera_kind == THIN_LENS:
+                lens = concentric_map(*pixel_sample(sampler, pixel, s, LENS_SET, seed, one))
+                origin, direction, tmin, tmax = thin_lens_ray(camera_row, sx, sy, lens)
+            else:
+                origin, direction, tmin, tmax = gen_ray(camera_kind, camera_row, sx, sy)
+            rays[c], rays[c + 1], rays[c + 2] = origin
+            rays[c + 3], rays[c + 4], rays[c + 5] = direction
+            rays[c + 6] = tmin
+            rays[c + 7] = tmax
+            c += RAY_FIELDS
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def camera_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
+    """render_tile's first phase: fill_rays with the camera's kind chosen once per tile, a
+    pinhole's loop compiled with its kind known (a literal), so that gen_ray's choice of kind
+    leaves the loop (a choice per pixel cost a flat-colour render of the 64 spheres about a
+    fifth of its time)."""
+    if camera_kind == PINHOLE:
+        fill_rays(tile, PINHOLE, camera_row, sampler, s, seed, rays)
+    else:
+        fill_rays(tile, camera_kind, camera_row, sampler, s, seed, rays)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def ray_at(rays, c):
+    """Ray ``c`` of a tile's ``rays``: (origin, direction, tmin, tmax)."""
+    k = RAY_FIELDS * c
+    return ((rays[k], rays[k + 1], rays[k + 2]), (rays[k + 3], rays[k + 4], rays[k + 5]), rays[k + 6],
+            rays[k + 7])
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def keep_hit(ts, hits, c, hit):
+    """Store ``hit`` (t, scene index, kind, row) as pixel ``c``'s primary hit."""
+    ts[c] = hit[0]
+    hits[3 * c] = hit[1]
+    hits[3 * c + 1] = hit[2]
+    hits[3 * c + 2] = hit[3]
+
+
+def hits_first(packets, bounces) -> bool:
+    """Whether render_tile finds the primary hits in a phase of their own: where the rays go
+    in packets, or where no shader continues a path (``bounces`` None), so that trace then
+    compiles no intersection of its own (nearest_hit). Where a shader continues the path
+    without packets, trace finds every hit itself, and intersect_scene, the largest part of
+    a kernel, is compiled once, not twice. Decided by the types, when numba compiles."""
+    return not isinstance(packets, types.NoneType) or isinstance(bounces, types.NoneType)
+
+
+def primary_hits(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
+    """render_tile's second phase, where hits_first: the nearest hit of each of the tile's
+    primary ``rays`` into ``ts`` and ``hits`` (keep_hit); nothing otherwise. Without
+    ``packets``, intersect_scene a ray; with them, the rays of each PACKET_SIDE x
+    PACKET_SIDE block of the tile through the scene's wide BVH as one packet
+    (trace_packet), then each ray's hit completed with the shapes outside the BVH
+    (intersect_scene given the BVH's hit). Every ray gets the hit its own intersect_scene
+    gives (rtfgu.kernels.packet), so the image is the same bit for bit (typed by the
+    overload below)."""
+    return as_python(_typed_primary_hits, packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula)
+
+
+@overload(primary_hits, inline="always")
+def _typed_primary_hits(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
+    if not hits_first(packets, bounces):
+        return lambda packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula: None
+    if isinstance(packets, types.NoneType):
+        def one_by_one(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
+            x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
+            for c in range((x1 - x0) * (y1 - y0)):
+                origin, direction, tmin, tmax = ray_at(rays, c)
+                keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
+                                                      direction, tmin, tmax, formula))
+        return one_by_one
+
+    def in_packets(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
+        x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
+        one = lit(1, rays[0])
+        zero = lit(0, one)
+        inf = lit(math.inf, one)
+        origins = packet_rays(one)
+        directions = packet_rays(one)
+        t = packet_lanes(one)
+        best = packet_lanes(np.int64)
+        kind = packet_lanes(np.int64)
+        row = packet_lanes(np.int64)
+        for by in range(y0, y1, PACKET_SIDE):
+            for bx in range(x0, x1, PACKET_SIDE):
+                count = 0
+                for iy in range(by, min(by + PACKET_SIDE, y1)):
+                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
+                        k = RAY_FIELDS * ((iy - y0) * (x1 - x0) + ix - x0)
+                        for a in range(3):
+                            origins[3 * count + a] = rays[k + a]
+                            directions[3 * count + a] = rays[k + 3 + a]
+                        t[count] = inf
+                        best[count] = -1
+                        kind[count] = -1
+                        row[count] = -1
+                        count += 1
+                trace_packet(shapes, origins, directions, count, zero, t, best, kind, row, formula)
+                count = 0
+                for iy in range(by, min(by + PACKET_SIDE, y1)):
+                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
+                        c = (iy - y0) * (x1 - x0) + ix - x0
+                        origin, direction, tmin, tmax = ray_at(rays, c)
+                        keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
+                                                              direction, tmin, tmax, formula,
+                                                              (t[count], best[count], kind[count], row[count])))
+                        count += 1
+    return in_packets
+
+
+def primary_hit(packets, bounces, ts, hits, c):
+    """Pixel ``c``'s primary hit for trace: (t, scene index, kind, row) where hits_first,
+    else None (typed by the overload below)."""
+    return as_python(_typed_primary_hit, packets, bounces, ts, hits, c)
+
+
+@overload(primary_hit, inline="always")
+def _typed_primary_hit(packets, bounces, ts, hits, c):
+    if not hits_first(packets, bounces):
+        return lambda packets, bounces, ts, hits, c: None
+    return lambda packets, bounces, ts, hits, c: (ts[c], hits[3 * c], hits[3 * c + 1], hits[3 * c + 2])
+
+
 @njit(cache=True, error_model="numpy", _nrt=False)
 def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler, buffers):
     """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
@@ -371,7 +534,17 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     pinhole eye). ``buffers`` = (stack, image): the tile's rays waiting (trace), None where
     none can, and the image.
     ``packets``: None, or 1 where a pinhole's primary rays go through the scene's wide BVH in
-    packets (render_packet_tile; rtfgu.kernels.kernel_arguments decides).
+    packets (primary_hits; rtfgu.kernels.kernel_arguments decides).
+
+    A sample of the tile is made in three phases, each a loop of its own over the tile's
+    pixels: their primary rays (camera_rays), the rays' nearest hits (primary_hits: the
+    ray-cast tracer, where hits_first), then each pixel's colour (trace, given the hit
+    where hits_first; trace_path).
+    A loop that only intersects keeps the shaders' code, chosen per pixel, out of the
+    intersection's loop (a loop with both measured 1.4x slower on the 64 spheres). Every
+    pixel adds its samples in the same order, and every ray is computed by the same
+    functions from the same numbers, so the image is the same bit for bit as a loop that
+    does it all pixel by pixel.
 
     Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
@@ -379,119 +552,51 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     x0, x1, y0, y1, width, height = tile
     stack, image = buffers
     camera_kind, camera_row = camera[0], camera[1]
-    show_ray_direction, seed, first, end = settings[1], settings[3], settings[4], settings[5]
+    show_ray_direction, seed, first, end, formula = settings[1], settings[3], settings[4], settings[5], settings[2]
     n_shadow = 0
     n_secondary = 0
-    n_primary = 0
     one = lit(1, camera_row[0])
-    if first == 0:
-        # A render's first samples start its sums (0 + v is v, bit for bit): the image need
-        # not be zeroed before.
-        image[height - y1:height - y0, x0:x1, :] = lit(0, one)
-    if packets is not None:
-        n_primary, n_shadow, n_secondary = render_packet_tile(tile, camera_row, shapes, lights, scene, eye_rows,
-                                                              settings, cast, sampler, stack, image)
-    else:
+    rays = tile_rays(one)
+    ts = tile_values(one)
+    hits = tile_hits(np.int64)
+    zero = lit(0, one)
+    for s in range(first, end):
+        camera_rays(tile, camera_kind, camera_row, sampler, s, seed, rays)
+        if cast is not None and not show_ray_direction:
+            primary_hits(packets, cast[0], tile, shapes, eye_rows, rays, ts, hits, formula)
+        c = 0
         for iy in range(y0, y1):
             for ix in range(x0, x1):
-                pixel = (height - 1 - iy) * width + ix
-                out = image[height - 1 - iy, ix]
-                total = (out[0], out[1], out[2])
-                for s in range(first, end):
-                    sx, sy = screen_point(sampler, pixel, s, seed, ix, iy, width, height, one)
-                    if camera_kind == THIN_LENS:
-                        lens = concentric_map(*pixel_sample(sampler, pixel, s, LENS_SET, seed, one))
-                        ray = thin_lens_ray(camera_row, sx, sy, lens)
-                    else:
-                        ray = gen_ray(camera_kind, camera_row, sx, sy)
-                    n_primary += 1
-                    if show_ray_direction:
-                        half = lit(0.5, one)
-                        color = add(scale(ray[1], half), (half, half, half))
-                    else:
-                        # Exactly one of these stays in a compiled kernel (the module docstring).
-                        if cast is not None:
-                            color, shadow_rays, secondary_rays = trace(ray, shapes, lights, scene, eye_rows,
-                                                                       settings, cast[0],
-                                                                       (pixel, s, settings[3], cast[1]), stack)
-                        if path is not None:
-                            color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
-                                                                            eye_rows[0], eye_rows[1], eye_rows[2],
-                                                                            settings, path, pixel, s)
-                        n_shadow += shadow_rays
-                        n_secondary += secondary_rays
-                    total = add(total, color)
-                out[0] = total[0]
-                out[1] = total[1]
-                out[2] = total[2]
-    return n_primary, n_shadow, n_secondary
-
-
-# A packet: the PACKET_SIDE x PACKET_SIDE pixels of a block of a tile (rtfgu.kernels.packet).
-PACKET_SIDE = 4
-assert PACKET_SIDE * PACKET_SIDE == PACKET and TILE % PACKET_SIDE == 0
-
-
-@njit(cache=True, error_model="numpy", inline="always")
-def render_packet_tile(tile, camera_row, shapes, lights, scene, eye_rows, settings, cast, sampler, stack, image):
-    """render_tile for a pinhole camera whose primary rays go through the scene's wide BVH as
-    packets: each PACKET_SIDE x PACKET_SIDE block of the tile, one sample after another,
-    makes its pixels' primary rays as render_tile does, finds their nearest hits among what
-    the BVH holds as one packet (trace_packet), then traces each ray on with its hit given
-    (trace's ``primary``; the shapes outside the BVH still tested). Every pixel adds its
-    samples in the same order, and every ray gets the hit its own traversal gives
-    (rtfgu.kernels.packet), so the image is render_tile's, bit for bit."""
-    x0, x1, y0, y1, width, height = tile
-    seed, first, end, formula = settings[3], settings[4], settings[5], settings[2]
-    one = lit(1, camera_row[0])
-    zero = lit(0, one)
-    inf = lit(math.inf, one)
-    origins = packet_rays(one)
-    directions = packet_rays(one)
-    t = packet_lanes(one)
-    best = packet_lanes(np.int64)
-    kind = packet_lanes(np.int64)
-    row = packet_lanes(np.int64)
-    n_shadow = 0
-    n_secondary = 0
-    n_primary = 0
-    for by in range(y0, y1, PACKET_SIDE):
-        for bx in range(x0, x1, PACKET_SIDE):
-            for s in range(first, end):
-                count = 0
-                for iy in range(by, min(by + PACKET_SIDE, y1)):
-                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
-                        pixel = (height - 1 - iy) * width + ix
-                        sx, sy = screen_point(sampler, pixel, s, seed, ix, iy, width, height, one)
-                        origin, direction, _, _ = gen_ray(PINHOLE, camera_row, sx, sy)
-                        for a in range(3):
-                            origins[3 * count + a] = origin[a]
-                            directions[3 * count + a] = direction[a]
-                        t[count] = inf
-                        best[count] = -1
-                        kind[count] = -1
-                        row[count] = -1
-                        count += 1
-                trace_packet(shapes, origins, directions, count, zero, t, best, kind, row, formula)
-                count = 0
-                for iy in range(by, min(by + PACKET_SIDE, y1)):
-                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
-                        pixel = (height - 1 - iy) * width + ix
-                        ray = ((origins[3 * count], origins[3 * count + 1], origins[3 * count + 2]),
-                               (directions[3 * count], directions[3 * count + 1], directions[3 * count + 2]),
-                               zero, inf)
+                ray = ray_at(rays, c)
+                if show_ray_direction:
+                    half = lit(0.5, one)
+                    color = add(scale(ray[1], half), (half, half, half))
+                else:
+                    pixel = (height - 1 - iy) * width + ix
+                    # Exactly one of these stays in a compiled kernel (the module docstring).
+                    if cast is not None:
                         color, shadow_rays, secondary_rays = trace(
-                            ray, shapes, lights, scene, eye_rows, settings, cast[0],
-                            (pixel, s, seed, cast[1]), stack, None, (t[count], best[count], kind[count], row[count]))
-                        out = image[height - 1 - iy, ix]
-                        out[0] += color[0]
-                        out[1] += color[1]
-                        out[2] += color[2]
-                        n_primary += 1
-                        n_shadow += shadow_rays
-                        n_secondary += secondary_rays
-                        count += 1
-    return n_primary, n_shadow, n_secondary
+                            ray, shapes, lights, scene, eye_rows, settings, cast[0], (pixel, s, seed, cast[1]), stack,
+                            None, primary_hit(packets, cast[0], ts, hits, c))
+                    if path is not None:
+                        color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
+                                                                        eye_rows[0], eye_rows[1], eye_rows[2],
+                                                                        settings, path, pixel, s)
+                    n_shadow += shadow_rays
+                    n_secondary += secondary_rays
+                out = image[height - 1 - iy, ix]
+                if s == 0:
+                    # A render's first sample starts its sums, as 0 + v would (v + 0 is
+                    # that, -0 made +0): the image need not be zeroed nor read before.
+                    out[0] = color[0] + zero
+                    out[1] = color[1] + zero
+                    out[2] = color[2] + zero
+                else:
+                    out[0] += color[0]
+                    out[1] += color[1]
+                    out[2] += color[2]
+                c += 1
+    return (x1 - x0) * (y1 - y0) * (end - first), n_shadow, n_secondary
 
 
 @njit(parallel=True, cache=True, error_model="numpy")

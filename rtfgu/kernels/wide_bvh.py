@@ -19,10 +19,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 from llvmlite import ir
 from numba import njit, types
 from numba.core import cgutils
-from numba.extending import intrinsic
+from numba.extending import intrinsic, overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
 from ..accelerators.wide_bvh import CODE_ROW, LEAF_BITS, ROWS, WIDTH
@@ -52,9 +53,10 @@ def _element(dtype):
 
 
 def on_the_stack(size: int, what: str):
-    """An intrinsic giving a pointer to ``size`` elements of a number type (or of the type of
-    a value given): an alloca in the entry block of the function it is inlined into, so it
-    costs nothing per call and needs no reference counting."""
+    """A function giving ``size`` elements of a number type (or of the type of a value
+    given): compiled, a pointer to an alloca in the entry block of the function it is inlined
+    into (an intrinsic), so it costs nothing per call and needs no reference counting; as
+    plain Python (NUMBA_DISABLE_JIT=1), a numpy array."""
     @intrinsic
     def allocate(typingctx, dtype):
         element = _element(dtype)
@@ -64,8 +66,15 @@ def on_the_stack(size: int, what: str):
         def codegen(context, builder, signature, args):
             return cgutils.alloca_once(builder, context.get_value_type(element), size=size)
         return types.CPointer(element)(dtype), codegen
-    allocate.__doc__ = what
-    return allocate
+
+    def elements(like):
+        return np.empty(size, dtype=like if isinstance(like, type) else np.asarray(like).dtype)
+
+    @overload(elements, inline="always")
+    def _typed_elements(like):
+        return lambda like: allocate(like)
+    elements.__doc__ = what
+    return elements
 
 
 stack_of = on_the_stack(STACK, "A traversal's stack: STACK elements.")
