@@ -413,8 +413,8 @@ def fill_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
 def camera_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
     """render_tile's first phase: fill_rays with the camera's kind chosen once per tile, a
     pinhole's loop compiled with its kind known (a literal), so that gen_ray's choice of kind
-    leaves the loop (a choice per pixel cost a flat-colour render of the 64 spheres about a
-    fifth of its time)."""
+    leaves the loop (a choice per pixel cost a flat-colour render of the 64 spheres a fifth
+    to a quarter of its time)."""
     if camera_kind == PINHOLE:
         fill_rays(tile, PINHOLE, camera_row, sampler, s, seed, rays)
     else:
@@ -541,7 +541,7 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     ray-cast tracer, where hits_first), then each pixel's colour (trace, given the hit
     where hits_first; trace_path).
     A loop that only intersects keeps the shaders' code, chosen per pixel, out of the
-    intersection's loop (a loop with both measured 1.4x slower on the 64 spheres). Every
+    intersection's loop (a loop with both measured 1.15x slower on the 64 spheres). Every
     pixel adds its samples in the same order, and every ray is computed by the same
     functions from the same numbers, so the image is the same bit for bit as a loop that
     does it all pixel by pixel.
