@@ -207,7 +207,7 @@ def test_a_packet_of_no_rays_or_too_many_is_refused(count):
 def _both_renders(scene, width, height, sampler=None):
     """The float32 kernel's sums and ray counts with the pinhole's primary rays in packets and
     without (the same arguments, only ``packets`` changed)."""
-    from rtfgu.kernels import kernel_arguments, render_kernel
+    from rtfgu.kernels import hit_phases, kernel_arguments, render_kernel
     from rtfgu.layout import compile_sampler, compile_scene
 
     flat = compile_scene(scene, "float32")
@@ -216,7 +216,7 @@ def _both_renders(scene, width, height, sampler=None):
     out = {}
     for packets in (None, 1):
         run = list(args)
-        run[7] = args[7][:2] + (packets,)
+        run[7] = args[7][:2] + (packets, hit_phases(args[7][0], packets))
         sums = np.full((height, width, 3), np.nan, dtype=np.float32)
         counts = np.zeros((tiles, 3), dtype=np.int64)
         render_kernel(*run, sums, counts)

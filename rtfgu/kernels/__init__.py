@@ -71,6 +71,22 @@ def own_sets(flat, sampler=None):
     return flat.own_samples, flat.own_shuffled, sobol
 
 
+def hit_phases(cast, packets) -> tuple:
+    """How the ray-cast tracer (``cast``; None: none) finds its hits, four flags each 1 or
+    None (render.render_tile): (one_by_one: the primary hits found ray by ray before the
+    pixels' colours, where no shader continues a path and there are no packets; given: the
+    primary hits given to trace, which then compiles no intersection, where no shader
+    continues a path; given_first: the packets' hits given at depth 0 and every deeper hit
+    searched; search: every hit searched by trace, where a shader continues a path without
+    packets)."""
+    if cast is None:
+        return None, None, None, None
+    ends = cast[0] is None
+    flag = lambda condition: 1 if condition else None
+    return (flag(ends and packets is None), flag(ends), flag(not ends and packets is not None),
+            flag(not ends and packets is None))
+
+
 def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, seed: int = 0,
                      samples=(0, 1)):
     """The render_kernel arguments for a FlatScene (rtfgu.kernels.render says how they are
@@ -98,12 +114,13 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     cast, path = (MAX_DEPTH if continues else None, flat.area_lighting, stacks), None
     if flat.max_depth:
         cast, path = None, (flat.max_depth, flat.lights_at_every_vertex)
-    # A pinhole's primary rays through the scene's wide BVH in packets (render.primary_hits),
+    # A pinhole's primary rays through the scene's wide BVH in packets (render.hits_in_packets),
     # for the ray-cast tracer in float32 (float64 packets measured no faster: docs/bvh.md).
     packets = 1 if (cast is not None and flat.camera_kind == PINHOLE and not flat.show_ray_direction
                     and flat.dtype == np.float32 and flat.mesh is not None and flat.mesh.scene_tree
                     and mesh_arrays(flat)[3].ndim == 3) else None
     scene = scene_tuple(flat)
+    phases = hit_phases(cast, packets)
     settings = (flat.shadows, flat.show_ray_direction, formula_id, int(seed), int(samples[0]),
                 int(samples[1]))
     if sampler is not None and sampler.kind == "sobol":
@@ -111,7 +128,7 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     elif sampler is not None:
         sampler = (sampler.samples, sampler.shuffled, sampler.num_samples, sampler.num_sets)
     return ((width, height), (flat.camera_kind, camera, camera64), shapes, lights, scene, eye,
-            settings, (cast, path, packets), sampler, _coprime_stride(tiles)), tiles
+            settings, (cast, path, packets, phases), sampler, _coprime_stride(tiles)), tiles
 
 
 class NumbaAccumulator:

@@ -28,7 +28,7 @@ from ..registry import LIGHTS
 from ..tracers.whitted import MAX_DEPTH
 from .camera import gen_ray
 from .float3 import add, lit, scale
-from .render import RECORD_FIELDS, record_bounce, scene_tuple, shape_arrays, trace
+from .render import RECORD_FIELDS, record_bounce, scene_tuple, search_hit, shape_arrays, trace
 
 
 @njit(cache=True, error_model="numpy")
@@ -54,7 +54,7 @@ def trace_records(camera, pixel, rays, shapes, lights, scene, settings, records)
             record_bounce(records[k], 0, ray, (ray[3], -1, -1), -1, ray[1], color)
         else:
             trace(ray, shapes, lights, scene, (None, no_candidates, -1), settings, MAX_DEPTH, (0, 0, 0, False),
-                  None, records[k])
+                  search_hit, None, records[k])
 
 
 def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:

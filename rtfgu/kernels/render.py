@@ -15,14 +15,15 @@ bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_a
               (scene_tuple)
     eye       None, or (per-frame terms, culling cones) of the from-eye shape kind
     settings  (shadows, show_ray_direction, formula id, seed, first sample, end sample)
-    tracer    (cast, path, packets), cast or path None: ``cast`` the ray-cast loop's
+    tracer    (cast, path, packets, phases), cast or path None: ``cast`` the ray-cast loop's
               (bounces, sampled, stacks), bounces None when no shader continues a path (that
               code then compiles to nothing), else MAX_DEPTH; sampled: AreaLighting's area
               lights; stacks: (tiles, MAX_DEPTH, STACK_FIELDS) rays waiting, a stack per tile,
               or None where no material sends a second ray (trace); ``path`` PathTrace's
               (max_depth, lights at every vertex: False for GlobalTrace)
               (rtfgu.kernels.path_trace); ``packets`` 1 where a pinhole's primary rays go
-              through the scene's wide BVH in packets (primary_hits), else None
+              through the scene's wide BVH in packets (hits_in_packets), else None;
+              ``phases`` how the ray-cast tracer finds its hits (kernel_arguments' hit_phases)
     sampler   None (one sample at each pixel's centre), or the FlatSampler's
               (samples, shuffled, num_samples, num_sets) (rtfgu.kernels.sampling)
 
@@ -188,32 +189,32 @@ def _typed_record_bounce(record, i, ray, hit, shader, normal, color):
     return write
 
 
-def nearest_hit(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
-    """The nearest hit (t, scene index, kind, row) of ``trace``'s ray at depth ``i``: the
-    scene's intersect_scene (a primary ray, i = 0, tests the from-eye kind's culled
-    candidates), or, with ``primary`` the primary ray's hit found before
-    (render_tile's second phase), that hit at depth 0. Where no shader continues a path
-    (``bounces`` None) and the hit is given, no intersection code is compiled here at all
-    (typed by the overload below)."""
-    return as_python(_typed_nearest_hit, primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax,
-                     formula)
+# How ``trace`` finds the hit of its ray at depth i: one of these three, handed to it by its
+# caller as ``hit_of``. numba inlines a function handed to an inlined function as it inlines
+# one called by name, before it types the kernel, so the kernel holds the intersection only
+# where the function chosen has it (an overload choosing among them by type would have
+# numba type intersect_scene once more on its own: 15 % of a kernel's compile, measured).
+@njit(cache=True, error_model="numpy", inline="always")
+def search_hit(primary, i, shapes, eye_rows, origin, direction, tmin, tmax, formula):
+    """The nearest hit (t, scene index, kind, row) of the scene's intersect_scene (a primary
+    ray, i = 0, tests the from-eye kind's culled candidates); ``primary`` is not read."""
+    return intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2] if i == 0 else -1,
+                           origin, direction, tmin, tmax, formula)
 
 
-@overload(nearest_hit, inline="always")
-def _typed_nearest_hit(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
-    if isinstance(primary, types.NoneType):
-        def search(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
-            return intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2] if i == 0 else -1,
-                                   origin, direction, tmin, tmax, formula)
-        return search
-    if isinstance(bounces, types.NoneType):
-        return lambda primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula: primary
+@njit(cache=True, error_model="numpy", inline="always")
+def given_hit(primary, i, shapes, eye_rows, origin, direction, tmin, tmax, formula):
+    """``primary``, the primary ray's hit found before (render_tile's second phase), where no
+    shader continues a path: no intersection code is compiled in trace at all."""
+    return primary
 
-    def given_first(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax, formula):
-        if i == 0:
-            return primary
-        return intersect_scene(shapes, eye_rows[0], eye_rows[1], -1, origin, direction, tmin, tmax, formula)
-    return given_first
+
+@njit(cache=True, error_model="numpy", inline="always")
+def given_first_hit(primary, i, shapes, eye_rows, origin, direction, tmin, tmax, formula):
+    """``primary`` at depth 0 (found before, in packets), search_hit's at every other depth."""
+    if i == 0:
+        return primary
+    return intersect_scene(shapes, eye_rows[0], eye_rows[1], -1, origin, direction, tmin, tmax, formula)
 
 
 # A row of a tile's stack of rays (push_ray): origin (3), direction (3), weight (3), depth.
@@ -288,7 +289,8 @@ def _typed_row_of(stacks, k):
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, stack=None, record=None, primary=None):
+def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, hit_of, stack=None, record=None,
+          primary=None):
     """The 02562 path loop (rtfgu.renderer.trace) as Whitted's tracer (Suffern ch. 24):
     shade each hit until a shader ends the path or the ray leaves the scene (background), at
     most ``bounces`` (MAX_DEPTH) rays deep, each hit's radiance weighted by the product of
@@ -302,9 +304,10 @@ def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, stack
     (n_candidates -1: no such eye). ``record``: None, or an
     array that receives every bounce of the first path (record_bounce). ``stream``: (pixel,
     sample, seed, whether area lights are sampled: AreaLighting), the numbers a ray at depth
-    i draws being the stream's path_dimension(i, k). ``primary``: None, or the primary ray's
-    nearest hit, found before (render_tile's second phase), taken instead of intersecting
-    it again (nearest_hit). Returns (radiance, shadow rays, secondary rays)."""
+    i draws being the stream's path_dimension(i, k). ``hit_of``: search_hit, given_hit or
+    given_first_hit, how the hit at each depth is found; ``primary``: None, or the primary
+    ray's nearest hit, found before (render_tile's second phase), for given_hit and
+    given_first_hit. Returns (radiance, shadow rays, secondary rays)."""
     origin, direction, tmin, tmax = ray
     materials, shaders, background = scene[0], scene[1], scene[2]
     shadows, formula = settings[0], settings[2]
@@ -321,8 +324,7 @@ def trace(ray, shapes, lights, scene, eye_rows, settings, bounces, stream, stack
         for i in range(first, depth):
             if i > 0:
                 n_secondary += 1
-            t, idx, kind, row = nearest_hit(primary, i, bounces, shapes, eye_rows, origin, direction, tmin, tmax,
-                                            formula)
+            t, idx, kind, row = hit_of(primary, i, shapes, eye_rows, origin, direction, tmin, tmax, formula)
             if idx < 0:
                 seen = background_radiance(scene[ENVIRONMENT], background, direction)
                 result = add(result, mul(weight, seen))
@@ -438,93 +440,71 @@ def keep_hit(ts, hits, c, hit):
     hits[3 * c + 2] = hit[3]
 
 
-def hits_first(packets, bounces) -> bool:
-    """Whether render_tile finds the primary hits in a phase of their own: where the rays go
-    in packets, or where no shader continues a path (``bounces`` None), so that trace then
-    compiles no intersection of its own (nearest_hit). Where a shader continues the path
-    without packets, trace finds every hit itself, and intersect_scene, the largest part of
-    a kernel, is compiled once, not twice. Decided by the types, when numba compiles."""
-    return not isinstance(packets, types.NoneType) or isinstance(bounces, types.NoneType)
+@njit(cache=True, error_model="numpy", inline="always")
+def hits_one_by_one(tile, shapes, eye_rows, rays, ts, hits, formula):
+    """render_tile's second phase where no shader continues a path: the nearest hit of each
+    of the tile's primary ``rays`` (intersect_scene a ray) into ``ts`` and ``hits``
+    (keep_hit), so that trace, given it (given_hit), compiles no intersection of its own."""
+    x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
+    for c in range((x1 - x0) * (y1 - y0)):
+        origin, direction, tmin, tmax = ray_at(rays, c)
+        keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
+                                              direction, tmin, tmax, formula))
 
 
-def primary_hits(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
-    """render_tile's second phase, where hits_first: the nearest hit of each of the tile's
-    primary ``rays`` into ``ts`` and ``hits`` (keep_hit); nothing otherwise. Without
-    ``packets``, intersect_scene a ray; with them, the rays of each PACKET_SIDE x
-    PACKET_SIDE block of the tile through the scene's wide BVH as one packet
+@njit(cache=True, error_model="numpy", inline="always")
+def hits_in_packets(tile, shapes, eye_rows, rays, ts, hits, formula):
+    """render_tile's second phase where the rays go in packets: the rays of each PACKET_SIDE
+    x PACKET_SIDE block of the tile through the scene's wide BVH as one packet
     (trace_packet), then each ray's hit completed with the shapes outside the BVH
-    (intersect_scene given the BVH's hit). Every ray gets the hit its own intersect_scene
-    gives (rtfgu.kernels.packet), so the image is the same bit for bit (typed by the
-    overload below)."""
-    return as_python(_typed_primary_hits, packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula)
+    (intersect_scene given the BVH's hit), into ``ts`` and ``hits`` (keep_hit). Every ray
+    gets the hit its own intersect_scene gives (rtfgu.kernels.packet), so the image is the
+    same bit for bit."""
+    x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
+    one = lit(1, rays[0])
+    zero = lit(0, one)
+    inf = lit(math.inf, one)
+    origins = packet_rays(one)
+    directions = packet_rays(one)
+    t = packet_lanes(one)
+    best = packet_lanes(np.int64)
+    kind = packet_lanes(np.int64)
+    row = packet_lanes(np.int64)
+    for by in range(y0, y1, PACKET_SIDE):
+        for bx in range(x0, x1, PACKET_SIDE):
+            count = 0
+            for iy in range(by, min(by + PACKET_SIDE, y1)):
+                for ix in range(bx, min(bx + PACKET_SIDE, x1)):
+                    k = RAY_FIELDS * ((iy - y0) * (x1 - x0) + ix - x0)
+                    for a in range(3):
+                        origins[3 * count + a] = rays[k + a]
+                        directions[3 * count + a] = rays[k + 3 + a]
+                    t[count] = inf
+                    best[count] = -1
+                    kind[count] = -1
+                    row[count] = -1
+                    count += 1
+            trace_packet(shapes, origins, directions, count, zero, t, best, kind, row, formula)
+            count = 0
+            for iy in range(by, min(by + PACKET_SIDE, y1)):
+                for ix in range(bx, min(bx + PACKET_SIDE, x1)):
+                    c = (iy - y0) * (x1 - x0) + ix - x0
+                    origin, direction, tmin, tmax = ray_at(rays, c)
+                    keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
+                                                          direction, tmin, tmax, formula,
+                                                          (t[count], best[count], kind[count], row[count])))
+                    count += 1
 
 
-@overload(primary_hits, inline="always")
-def _typed_primary_hits(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
-    if not hits_first(packets, bounces):
-        return lambda packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula: None
-    if isinstance(packets, types.NoneType):
-        def one_by_one(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
-            x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
-            for c in range((x1 - x0) * (y1 - y0)):
-                origin, direction, tmin, tmax = ray_at(rays, c)
-                keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
-                                                      direction, tmin, tmax, formula))
-        return one_by_one
-
-    def in_packets(packets, bounces, tile, shapes, eye_rows, rays, ts, hits, formula):
-        x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
-        one = lit(1, rays[0])
-        zero = lit(0, one)
-        inf = lit(math.inf, one)
-        origins = packet_rays(one)
-        directions = packet_rays(one)
-        t = packet_lanes(one)
-        best = packet_lanes(np.int64)
-        kind = packet_lanes(np.int64)
-        row = packet_lanes(np.int64)
-        for by in range(y0, y1, PACKET_SIDE):
-            for bx in range(x0, x1, PACKET_SIDE):
-                count = 0
-                for iy in range(by, min(by + PACKET_SIDE, y1)):
-                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
-                        k = RAY_FIELDS * ((iy - y0) * (x1 - x0) + ix - x0)
-                        for a in range(3):
-                            origins[3 * count + a] = rays[k + a]
-                            directions[3 * count + a] = rays[k + 3 + a]
-                        t[count] = inf
-                        best[count] = -1
-                        kind[count] = -1
-                        row[count] = -1
-                        count += 1
-                trace_packet(shapes, origins, directions, count, zero, t, best, kind, row, formula)
-                count = 0
-                for iy in range(by, min(by + PACKET_SIDE, y1)):
-                    for ix in range(bx, min(bx + PACKET_SIDE, x1)):
-                        c = (iy - y0) * (x1 - x0) + ix - x0
-                        origin, direction, tmin, tmax = ray_at(rays, c)
-                        keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
-                                                              direction, tmin, tmax, formula,
-                                                              (t[count], best[count], kind[count], row[count])))
-                        count += 1
-    return in_packets
-
-
-def primary_hit(packets, bounces, ts, hits, c):
-    """Pixel ``c``'s primary hit for trace: (t, scene index, kind, row) where hits_first,
-    else None (typed by the overload below)."""
-    return as_python(_typed_primary_hit, packets, bounces, ts, hits, c)
-
-
-@overload(primary_hit, inline="always")
-def _typed_primary_hit(packets, bounces, ts, hits, c):
-    if not hits_first(packets, bounces):
-        return lambda packets, bounces, ts, hits, c: None
-    return lambda packets, bounces, ts, hits, c: (ts[c], hits[3 * c], hits[3 * c + 1], hits[3 * c + 2])
+@njit(cache=True, error_model="numpy", inline="always")
+def hit_at(ts, hits, c):
+    """Pixel ``c``'s primary hit (t, scene index, kind, row), as keep_hit stored it."""
+    return ts[c], hits[3 * c], hits[3 * c + 1], hits[3 * c + 2]
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler, buffers):
+def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler, buffers,
+                one_by_one, given, given_first, search):
     """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
     y1, width, height)) to the image (the lecture's render loop,
     rtfgu.renderer.render_reference), each traced by the ray-cast ``trace`` (``cast``) or
@@ -534,12 +514,18 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     pinhole eye). ``buffers`` = (stack, image): the tile's rays waiting (trace), None where
     none can, and the image.
     ``packets``: None, or 1 where a pinhole's primary rays go through the scene's wide BVH in
-    packets (primary_hits; rtfgu.kernels.kernel_arguments decides).
+    packets (hits_in_packets; rtfgu.kernels.kernel_arguments decides). ``one_by_one``,
+    ``given``, ``given_first``, ``search``: 1 or None, how the ray-cast tracer finds its hits
+    (kernel_arguments' ``hit_phases``); numba removes a branch on ``argument is not None``
+    where the argument is None, so a kernel holds only the code its phases use.
 
     A sample of the tile is made in three phases, each a loop of its own over the tile's
-    pixels: their primary rays (camera_rays), the rays' nearest hits (primary_hits: the
-    ray-cast tracer, where hits_first), then each pixel's colour (trace, given the hit
-    where hits_first; trace_path).
+    pixels: their primary rays (camera_rays); the rays' nearest hits, for the ray-cast
+    tracer where the rays go in packets (hits_in_packets) or no shader continues a path
+    (hits_one_by_one); then each pixel's colour (trace, given the hit where it was found
+    before: given_hit, given_first_hit; else search_hit; trace_path). Where a shader
+    continues the path without packets, trace finds every hit itself, so intersect_scene,
+    the largest part of a kernel, is compiled once, not twice.
     A loop that only intersects keeps the shaders' code, chosen per pixel, out of the
     intersection's loop (a loop with both measured 1.15x slower on the 64 spheres). Every
     pixel adds its samples in the same order, and every ray is computed by the same
@@ -562,8 +548,11 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     zero = lit(0, one)
     for s in range(first, end):
         camera_rays(tile, camera_kind, camera_row, sampler, s, seed, rays)
-        if cast is not None and not show_ray_direction:
-            primary_hits(packets, cast[0], tile, shapes, eye_rows, rays, ts, hits, formula)
+        if not show_ray_direction:
+            if packets is not None:
+                hits_in_packets(tile, shapes, eye_rows, rays, ts, hits, formula)
+            if one_by_one is not None:
+                hits_one_by_one(tile, shapes, eye_rows, rays, ts, hits, formula)
         c = 0
         for iy in range(y0, y1):
             for ix in range(x0, x1):
@@ -575,9 +564,18 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
                     pixel = (height - 1 - iy) * width + ix
                     # Exactly one of these stays in a compiled kernel (the module docstring).
                     if cast is not None:
+                        stream = (pixel, s, seed, cast[1])
+                    if given is not None:
                         color, shadow_rays, secondary_rays = trace(
-                            ray, shapes, lights, scene, eye_rows, settings, cast[0], (pixel, s, seed, cast[1]), stack,
-                            None, primary_hit(packets, cast[0], ts, hits, c))
+                            ray, shapes, lights, scene, eye_rows, settings, cast[0], stream, given_hit, stack, None,
+                            hit_at(ts, hits, c))
+                    if given_first is not None:
+                        color, shadow_rays, secondary_rays = trace(
+                            ray, shapes, lights, scene, eye_rows, settings, cast[0], stream, given_first_hit, stack,
+                            None, hit_at(ts, hits, c))
+                    if search is not None:
+                        color, shadow_rays, secondary_rays = trace(
+                            ray, shapes, lights, scene, eye_rows, settings, cast[0], stream, search_hit, stack)
                     if path is not None:
                         color, shadow_rays, secondary_rays = trace_path(ray, shapes, lights, scene,
                                                                         eye_rows[0], eye_rows[1], eye_rows[2],
@@ -613,7 +611,7 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
     n_tiles = tiles_x * tiles_y
     candidates = np.empty((n_tiles, from_eye_rows(eye)), dtype=np.int64)
     terms = eye_terms(eye)
-    cast, path, packets = tracer
+    cast, path, packets, phases = tracer
     for k in prange(n_tiles):
         # prange hands each thread a contiguous block of k; the stride (coprime with
         # n_tiles) spreads every block over the whole image, so the threads share the work.
@@ -625,7 +623,8 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene,
                                                        (terms, candidates[tile], n_candidates),
                                                        settings, cast, path, packets, sampler,
-                                                       (tile_stack(cast, tile), image))
+                                                       (tile_stack(cast, tile), image), phases[0], phases[1],
+                                                       phases[2], phases[3])
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
