@@ -306,10 +306,14 @@ def _vec(v) -> list:
 
 def pack_row(record: str, obj) -> list:
     """The row of ``record`` holding the attributes of ``obj`` named by its fields."""
-    row = [0.0] * width(record)
-    for name, components, column in RECORDS[record][1]:
+    size, fields = RECORDS[record]
+    row = [0.0] * size
+    for name, components, column in fields:
         value = getattr(obj, name)
-        row[column:column + components] = _vec(value) if components == 3 else [float(value)]
+        if components == 3:
+            row[column], row[column + 1], row[column + 2] = value.x, value.y, value.z
+        else:
+            row[column] = float(value)
     return row
 
 
@@ -567,8 +571,10 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add(kind.name)
         material_of_shape.append(material_row(where, shape.material, shape.color))
         i += 1
-    material_of = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int32)) for x in material_of_shape]
-                                 or [np.zeros(0, dtype=np.int32)])
+    if all(isinstance(x, int) for x in material_of_shape):   # no mesh: a row each
+        material_of = np.array(material_of_shape, dtype=np.int32)
+    else:
+        material_of = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int32)) for x in material_of_shape])
     materials = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
     shaders = np.array(unique_shaders, dtype=np.int32)
 

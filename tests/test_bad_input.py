@@ -411,3 +411,12 @@ def test_a_render_whose_float32_radiance_overflows_is_refused_not_written(backen
         rtfgu.render(_overflowing_scene(), 8, 8, backend=backend, precision="float32")
     image = rtfgu.render(_overflowing_scene(), 8, 8, backend="numba", precision="float64")
     assert image.dtype == np.float64 and np.isfinite(image).all() and image.max() > 1e38
+
+
+def test_a_float64_render_of_one_sample_whose_radiance_overflows_is_refused():
+    """One float64 sample's sums are the image (not divided, only checked): an infinite
+    pixel there is refused as a divided one is."""
+    scene = _overflowing_scene()
+    scene.lights[0] = PointLight(Float3(0, 0.1, 0), Float3(1e307))   # 1e309 at the plane: beyond float64
+    with pytest.raises(ValueError, match="the numba backend produced non-finite pixels"):
+        rtfgu.render(scene, 8, 8, backend="numba", precision="float64")

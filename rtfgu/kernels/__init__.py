@@ -23,8 +23,8 @@ from ..tracers.whitted import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import (PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, mesh_arrays, render_kernel,
-                     scene_tuple, shape_arrays)
+from .render import (PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, mesh_arrays, not_finite,
+                     render_kernel, scene_tuple, shape_arrays)
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -150,9 +150,9 @@ class NumbaAccumulator:
 
     def __call__(self, samples, progress=None, last=False) -> np.ndarray:
         """The float64 image so far, refused (check_finite_image) where not finite. With
-        ``last`` (no pass follows), float64 sums become the image, divided in place: a render
-        then holds one image-sized array, not two, and the accumulator none (a call after it
-        is refused)."""
+        ``last`` (no pass follows), float64 sums become the image, divided in place (of one
+        sample, only checked: v / 1 is v): a render then holds one image-sized array, not two,
+        and the accumulator none (a call after it is refused)."""
         if self.sums is None:
             raise ValueError("NumbaAccumulator: its last pass has given its sums away as the image")
         if samples[0] > 0 and not self.started:
@@ -171,7 +171,11 @@ class NumbaAccumulator:
             image, self.sums = sums, None
         else:
             image = np.empty(sums.shape)
-        if mean_image(sums, self.flat.dtype(samples[1]), image):
+        if image is sums and samples[1] == 1:
+            bad = not_finite(image)   # the sum of one sample is its mean
+        else:
+            bad = mean_image(sums, self.flat.dtype(samples[1]), image)
+        if bad:
             check_finite_image(image, "numba")
         return image
 

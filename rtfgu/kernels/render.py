@@ -503,10 +503,11 @@ def hit_at(ts, hits, c):
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
-def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, path, packets, sampler, buffers,
-                one_by_one, given, given_first, search):
-    """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``tile`` = (x0, x1, y0,
-    y1, width, height)) to the image (the lecture's render loop,
+def render_tile(view, world, eye_rows, settings, cast, path, packets, buffers, one_by_one, given, given_first,
+                search):
+    """Add the samples of the pixels x0 <= ix < x1, y0 <= iy < y1 (``view`` = (tile,
+    camera, sampler), ``tile`` = (x0, x1, y0, y1, width, height)) of the scene ``world`` =
+    (shapes, lights, scene) to the image (the lecture's render loop,
     rtfgu.renderer.render_reference), each traced by the ray-cast ``trace`` (``cast``) or
     by PathTrace (``path``): (primary, shadow, secondary) rays cast. ``eye_rows`` is (terms,
     candidates, n_candidates): ``candidates[:n_candidates]`` are the from-eye kind's rows
@@ -535,6 +536,8 @@ def render_tile(tile, camera, shapes, lights, scene, eye_rows, settings, cast, p
     Compiled without numba's reference counting (``_nrt=False``): it allocates nothing, and
     the scene arrays it reads, unpacked from their tuples for every pixel, would otherwise
     cost an atomic increment and decrement each per pixel, twice the time of the pixel."""
+    tile, camera, sampler = view
+    shapes, lights, scene = world
     x0, x1, y0, y1, width, height = tile
     stack, image = buffers
     camera_kind, camera_row = camera[0], camera[1]
@@ -620,11 +623,10 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         y0 = (tile // tiles_x) * TILE
         box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
-        n_primary, n_shadow, n_secondary = render_tile(box + size, camera, shapes, lights, scene,
-                                                       (terms, candidates[tile], n_candidates),
-                                                       settings, cast, path, packets, sampler,
-                                                       (tile_stack(cast, tile), image), phases[0], phases[1],
-                                                       phases[2], phases[3])
+        n_primary, n_shadow, n_secondary = render_tile((box + size, camera, sampler), (shapes, lights, scene),
+                                                       (terms, candidates[tile], n_candidates), settings, cast,
+                                                       path, packets, (tile_stack(cast, tile), image), phases[0],
+                                                       phases[1], phases[2], phases[3])
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
@@ -642,5 +644,19 @@ def mean_image(sums, n, out) -> int:
                 value = sums[y, x, c] / n
                 out[y, x, c] = value
                 if not math.isfinite(value):
+                    bad += 1
+    return bad
+
+
+@njit(parallel=True, cache=True)
+def not_finite(image) -> int:
+    """How many of ``image``'s values are not finite, all cores, reading it once: mean_image's
+    count where the mean is the sums themselves (one sample, float64: v / 1 is v, bit for
+    bit, NaN and -0 included), so the image is not written again."""
+    bad = 0
+    for y in prange(image.shape[0]):
+        for x in range(image.shape[1]):
+            for c in range(image.shape[2]):
+                if not math.isfinite(image[y, x, c]):
                     bad += 1
     return bad
