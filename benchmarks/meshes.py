@@ -63,8 +63,10 @@ The paths (``System.paths``):
                  mi.load_dict, and ``scene.ray_intersect_preliminary`` on all rays at once.
 
 Timing: every path is run once first (the warm-up: numba and Dr.Jit compile then), then RUNS
-rounds time each path once (round-robin, so a change in the machine's load hits all alike);
-the median is quoted. A time covers tracing the rays and returning t and the face: not making
+rounds time each path once (round-robin, so a change in the machine's load hits all alike),
+in an order shuffled per round (seeded) so that no path always follows the same other one,
+and each time is the second of two calls in a row (second_call: the first wakes the threads
+and fills the caches that the path before left to another system); the median is quoted. A time covers tracing the rays and returning t and the face: not making
 the rays, nor turning them into Dr.Jit arrays for Mitsuba, nor uploading them for WGSL (done
 once, before the timing; WGSL's timed part is its dispatches and the readback of the
 results, and its pipeline is compiled before anything is timed). Build: from the vertex and
@@ -94,6 +96,7 @@ import argparse
 import json
 import math
 import os
+import random
 import statistics
 import subprocess
 import sys
@@ -890,11 +893,26 @@ def measure_builds(system, mesh, runs, log):
     return statistics.median(seconds), first
 
 
+def second_call(fn, *args) -> float:
+    """Seconds of the second of two calls in a row: the call a user makes again, after the
+    threads and caches another system's call used have been woken and filled by the first."""
+    fn(*args)
+    return timed(fn, *args)[1]
+
+
+def shuffled(items, number):
+    """``items`` in round ``number``'s order (seeded), so that no row always runs right after
+    the same other system (one that leaves the caches cold or its threads spinning)."""
+    order = list(items)
+    random.Random(number).shuffle(order)
+    return order
+
+
 def round_robin(measured, prepared, runs, log, what):
     for number in range(runs):
-        for m in measured:
+        for m in shuffled(measured, number):
             if not m.failed:
-                m.times.append(timed(m.path.run, prepared[id(m)])[1])
+                m.times.append(second_call(m.path.run, prepared[id(m)]))
         log("  %s: round %d of %d done" % (what, number + 1, runs))
 
 
@@ -1042,9 +1060,9 @@ def bench_spheres(mitsuba, size, runs, log):
             rows.append(["Mitsuba 3", "float32", 0, None, None, [], float("nan"), "-",
                          "not run: %s" % str(error).splitlines()[0]])
     for number in range(runs):
-        for row in rows:
+        for row in shuffled(rows, number):
             if row[3] is not None:
-                row[5].append(timed(row[3], row[4])[1])
+                row[5].append(second_call(row[3], row[4]))
         log("  64 spheres: round %d of %d done" % (number + 1, runs))
     return [(label, precision, threads, size * size / statistics.median(times) if times else None,
              d, what, note)
@@ -1331,7 +1349,8 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
         "- Peers: %s." % "; ".join(others),
         "- Time: median of %d round(s) after a warm-up run of every path (so numba's and "
         "Dr.Jit's compile, and the adapter's first dispatch, are excluded; rtfgu numba's "
-        "first calls, compile included: %s); a round times every path once (round-robin). "
+        "first calls, compile included: %s); a round times every path once (round-robin), "
+        "in an order shuffled per round, each time the second of two calls in a row. "
         "Timed: tracing and returning t and the face, not making the rays (WGSL: the "
         "dispatches and the readback of the results, not the upload of the rays). Build: "
         "median of %d after a warm-up build, from the arrays to a structure ready to trace "
@@ -1385,7 +1404,9 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
         "random_spheres_64 (benchmarks/scenes.py) at %dx%d, primary rays only (flat colours); "
         "rtfgu's rows are the paths of the first table, timed again here in the same run. "
         "Mitsuba traces the camera's rays made by rtfgu.kernels.camera.gen_ray, rounded to "
-        "float32, through 64 `sphere` shapes." % (sphere_size, sphere_size),
+        "float32, through 64 `sphere` shapes. Time: median of the rounds, each timing every "
+        "row once in an order shuffled per round, the second of two calls in a row." % (
+            sphere_size, sphere_size),
         "",
         *sphere_table(sphere_rows, sphere_size),
         "",
