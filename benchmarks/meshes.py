@@ -66,9 +66,10 @@ Timing: every path is run once first (the warm-up: numba and Dr.Jit compile then
 rounds time each path once (round-robin, so a change in the machine's load hits all alike),
 in an order shuffled per round (seeded) so that no path always follows the same other one,
 and each time is the second of two calls in a row (second_call: the first wakes the threads
-and fills the caches that the path before left to another system); the median is quoted. A time covers tracing the rays and returning t and the face: not making
-the rays, nor turning them into Dr.Jit arrays for Mitsuba, nor uploading them for WGSL (done
-once, before the timing; WGSL's timed part is its dispatches and the readback of the
+and fills the caches that the path before left to another system); the median is quoted.
+A time covers tracing the rays and returning t and the face: not making the rays, nor
+turning them into Dr.Jit arrays for Mitsuba, nor uploading them for WGSL (done once, before
+the timing; WGSL's timed part is its dispatches and the readback of the
 results, and its pipeline is compiled before anything is timed). Build: from the vertex and
 face arrays to a structure ready to trace, median of BUILD_RUNS after a warm-up build; rtfgu:
 triangle_bounds + flat_bvh.build + the permuted faces (WGSL: and their upload to the
