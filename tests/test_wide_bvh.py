@@ -351,6 +351,17 @@ def test_no_ray_from_inside_a_closed_mesh_leaks_through_the_wide_tree(dtype):
         assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(targets))
 
 
+def test_the_traversals_called_once_a_ray_count_no_references():
+    """mesh_closest, mesh_any, the instances' copy and the packets' traversal are called, not
+    inlined, once a ray: compiled with numba's reference counting, each call would increment
+    and decrement every array argument atomically (docs/bvh.md, "Where a single ray's time
+    goes"). They allocate nothing, so they are compiled without it."""
+    from rtfgu.kernels.mesh import object_mesh_closest
+    from rtfgu.kernels.packet import mesh_closest_packet
+    for traversal in (mesh_closest, mesh_any, object_mesh_closest, mesh_closest_packet):
+        assert traversal.targetoptions.get("_nrt") is False, traversal.py_func.__name__
+
+
 # --- through rtfgu.render -----------------------------------------------------------------
 
 def test_the_render_traverses_the_wide_tree_where_the_cpu_has_vector_units_and_both_give_one_image(monkeypatch):

@@ -318,7 +318,14 @@ _traverse_closest = _by_tree(_binary_closest, _wide_closest)
 # and cached, they are shared by every render kernel (each scene's kinds compile a kernel of
 # their own). ``nodes`` is the binary table (flat_bvh, (N, 8)) or the wide one (wide_bvh,
 # (N, ROWS, WIDTH)): its number of dimensions picks the traversal when numba compiles it.
-@njit(cache=True, error_model="numpy")
+# NO_REFCOUNT: they allocate nothing (their stacks are allocas) and keep no array they are
+# given, so they are compiled without numba's reference counting, which otherwise
+# increments and decrements each array argument atomically at every call, once a ray, from
+# whichever caller (docs/bvh.md, "Where a single ray's time goes").
+NO_REFCOUNT = dict(cache=True, error_model="numpy", _nrt=False)
+
+
+@njit(**NO_REFCOUNT)
 def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, formula, root=0,
                  instances=(None, None, None)):
     """The nearest face, sphere or instance hit, given the nearest hit so far ``hit`` = (t,
@@ -338,7 +345,7 @@ def mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin
 
 # mesh_closest again, for the tree of a mesh an instance holds: the scene's tree may hold that
 # instance (rtfgu.layout: bvh_instances), and numba compiles no function that calls itself.
-object_mesh_closest = njit(cache=True, error_model="numpy")(getattr(mesh_closest, "py_func", mesh_closest))
+object_mesh_closest = njit(**NO_REFCOUNT)(getattr(mesh_closest, "py_func", mesh_closest))
 
 
 def _binary_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
@@ -401,7 +408,7 @@ def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, b
 _traverse_any = _by_tree(_binary_any, _wide_any)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(**NO_REFCOUNT)
 def mesh_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, tmax, formula, root=0,
              instances=(None, None, None)):
     """A shadow ray: is any face or sphere hit in [tmin, tmax)? ``root`` as in mesh_closest."""

@@ -38,7 +38,7 @@ from numba.extending import intrinsic
 from ..accelerators.wide_bvh import CODE_ROW, ROWS, WIDTH
 from . import wide_bvh
 from .float3 import lit, lit_per_precision
-from .mesh import WIDEN32, WIDEN64, _inverse, _leaf_closest, mesh_closest, ray_frame
+from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, mesh_closest, ray_frame
 
 # Rays of a packet: its masks are bits of an int64, its lanes one vector.
 PACKET = 16
@@ -162,7 +162,7 @@ def rays_within(typingctx, rays, mask, near):
     return types.UniTuple(types.int64, 2)(rays, mask, near), codegen
 
 
-@njit(cache=True, error_model="numpy")
+@njit(**NO_REFCOUNT)
 def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, formula, root=0,
                         instances=(None, None, None)):
     """mesh_closest for the rays 0 <= r < count (count <= PACKET) of ``packet`` = (origins,
