@@ -826,12 +826,11 @@ def compile_mesh(scene, mesh_faces, spheres, dtype, instanced=(), instances=None
         trees, rows, roots = [], [], []
         if num_rows:
             faces = _joined([rows_of(p) for p in face_parts])
-            lo, hi = flat_bvh.triangle_bounds(vertices, faces[:num_triangles])
-            bvh = flat_bvh.build(_joined([lo, bound_lo]), _joined([hi, bound_hi]))
+            bvh = flat_bvh.build_rows(flat_bvh.triangle_rows(vertices, faces[:num_triangles], bound_lo, bound_hi))
             trees.append(bvh)
             rows.append(np.take(faces, bvh.order, axis=0))   # a row's 16 bytes at once
         for part in map(rows_of, object_parts):
-            bvh = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, part))
+            bvh = flat_bvh.build_rows(flat_bvh.triangle_rows(vertices, part))
             roots.append(sum(t.num_nodes for t in trees))
             trees.append(flat_bvh.offset(bvh, roots[-1], sum(len(r) for r in rows)))
             rows.append(np.take(part, bvh.order, axis=0))

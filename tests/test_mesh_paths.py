@@ -202,6 +202,44 @@ def test_the_parallel_build_is_the_serial_tree_node_for_node(monkeypatch, task_m
         assert (parallel.boxes[:, :3] <= lo[parallel.order]).all() and (parallel.boxes[:, 3:] >= hi[parallel.order]).all()
 
 
+def test_a_node_of_few_primitives_picks_the_plane_its_bins_pick():
+    """_best_plane_few (a node of at most FEW primitives, sorted by bin) against the bins
+    (_bin and _best_plane) on random nodes: spread, clustered (empty bins between runs),
+    centroids shared (one bin holds all), flat on an axis (no extent), and a node of no
+    area; every count from 1 to FEW, both sides of LEAF_SIZE."""
+    rng = np.random.default_rng(5)
+    bins, chosen = flat_bvh.BINS, set()
+    for trial in range(3000):
+        count = 1 + trial % flat_bvh.FEW
+        kind = trial % 5
+        centers = rng.random((count, 3))
+        if kind == 1:
+            centers = np.round(centers * 3) / 3                  # few distinct bins
+        elif kind == 2:
+            centers[:] = centers[0]                              # one bin
+        elif kind == 3:
+            centers[:, trial % 3] = 0.25                         # no extent on an axis
+        half = 0.0 if kind == 4 else rng.random((count, 3)) * 0.2
+        lo, hi = centers - half, centers + half
+        refs = flat_bvh._references(lo, hi)
+        bounds = np.empty(12)
+        flat_bvh._node_bounds(refs, 0, count, bounds)
+        scale = np.zeros(3)
+        flat_bvh._bin_scale(bounds, bins, scale)
+        bin_count, bin_box = np.zeros((3, bins), dtype=np.int64), np.empty((3, bins, 6))
+        flat_bvh._empty_bins(bin_count, bin_box)
+        flat_bvh._bin(refs, 0, count, bounds, scale, bin_count, bin_box)
+        binned = flat_bvh._best_plane(bin_count, bin_box, bounds, scale, count, flat_bvh.LEAF_SIZE,
+                                      flat_bvh.C_TRAVERSE, flat_bvh.C_INTERSECT, np.empty(bins),
+                                      np.empty(bins, dtype=np.int64))
+        few = flat_bvh._best_plane_few(refs, 0, count, bounds, scale, bins, flat_bvh.LEAF_SIZE,
+                                       flat_bvh.C_TRAVERSE, flat_bvh.C_INTERSECT,
+                                       np.empty((flat_bvh.FEW, 2), dtype=np.int64), np.empty(flat_bvh.FEW))
+        assert few == binned, (trial, count, kind)
+        chosen.add(binned[0])
+    assert chosen == {-1, 0, 1, 2}       # leaves and each axis were chosen
+
+
 def test_boxes_round_out_to_float32_as_nextafter_does():
     """The build's rounding (a step on the float32's bits) against np.nextafter, over
     magnitudes from subnormal to overflow, both zeros and exact float32 values."""
@@ -225,6 +263,24 @@ def test_bad_boxes_are_refused():
         flat_bvh.build(np.array([[0.0, np.nan, 0.0]]), np.array([[1.0, 1.0, 1.0]]))
     with pytest.raises(ValueError, match=r"\(P, 3\)"):
         flat_bvh.build(np.zeros((0, 3)), np.zeros((0, 3)))
+    with pytest.raises(ValueError, match=r"\(P, 6\) float64"):
+        flat_bvh.build_rows(np.zeros((4, 3)))
+    with pytest.raises(ValueError, match="not finite"):
+        flat_bvh.build_rows(np.array([[0.0, 0.0, 0.0, 1.0, np.inf, 1.0]]))
+
+
+def test_a_meshs_rows_are_its_triangles_boxes_then_the_others():
+    """triangle_rows, what compile_scene builds from: each face's box, then the boxes given
+    (spheres, instances), and the tree over them is build's over the same boxes."""
+    mesh = icosphere(2)
+    lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+    extra_lo, extra_hi = np.array([[5.0, 5.0, 5.0]]), np.array([[6.0, 7.0, 8.0]])
+    rows = flat_bvh.triangle_rows(mesh.vertices, mesh.faces, extra_lo, extra_hi)
+    assert np.array_equal(rows, np.concatenate([np.hstack([lo, hi]), np.hstack([extra_lo, extra_hi])]))
+    tree = flat_bvh.build_rows(rows)
+    same = flat_bvh.build(np.concatenate([lo, extra_lo]), np.concatenate([hi, extra_hi]))
+    assert np.array_equal(tree.nodes.view(np.int32), same.nodes.view(np.int32))
+    assert np.array_equal(tree.order, same.order) and tree.order.max() == len(mesh.faces)
 
 
 def test_a_mesh_takes_at_most_64_bytes_per_triangle_with_its_bvh_in_float32():

@@ -83,16 +83,22 @@ def _surface_area(lo0, lo1, lo2, hi0, hi1, hi2):
 
 @njit(cache=True, parallel=True)
 def _references(lo, hi):
-    """The primitives as the build moves them (Embree's PrimRef): a row each, [lo (3), hi (3),
-    centroid (3)], kept in the order of ``order`` as the build reorders it, so that a node's
-    primitives are read one row after another."""
-    refs = np.empty((lo.shape[0], 9))
+    """The primitives as the build moves them (Embree's PrimRef): a row each, [lo (3), hi (3)],
+    kept in the order of ``order`` as the build reorders it, so that a node's primitives are
+    read one row after another. Their centroids are computed where they are read
+    (_centroid), not stored: 48 bytes a primitive to move, not 72."""
+    refs = np.empty((lo.shape[0], 6))
     for p in prange(lo.shape[0]):
         for axis in range(3):
             refs[p, axis] = lo[p, axis]
             refs[p, 3 + axis] = hi[p, axis]
-            refs[p, 6 + axis] = 0.5 * (lo[p, axis] + hi[p, axis])
     return refs
+
+
+@njit(cache=True, inline="always")
+def _centroid(r, axis):
+    """The centroid of a primitive's box ``r`` (a row of refs) on ``axis``."""
+    return 0.5 * (r[axis] + r[3 + axis])
 
 
 @njit(cache=True)
@@ -105,7 +111,7 @@ def _node_bounds(refs, first, count, out):
         r = refs[k]
         b0 = min(b0, r[0]); b1 = min(b1, r[1]); b2 = min(b2, r[2])
         b3 = max(b3, r[3]); b4 = max(b4, r[4]); b5 = max(b5, r[5])
-        x = r[6]; y = r[7]; z = r[8]
+        x = _centroid(r, 0); y = _centroid(r, 1); z = _centroid(r, 2)
         c0 = min(c0, x); c1 = min(c1, y); c2 = min(c2, z)
         c3 = max(c3, x); c4 = max(c4, y); c5 = max(c5, z)
     out[0], out[1], out[2], out[3], out[4], out[5] = b0, b1, b2, b3, b4, b5
@@ -124,7 +130,7 @@ def _bin(refs, first, count, bounds, scale, bin_count, bin_box):
         for axis in range(3):
             if scale[axis] == 0.0:
                 continue
-            j = min(int(scale[axis] * (r[6 + axis] - bounds[6 + axis])), bins - 1)
+            j = min(int(scale[axis] * (_centroid(r, axis) - bounds[6 + axis])), bins - 1)
             bin_count[axis, j] += 1
             box_j = bin_box[axis, j]
             box_j[0] = min(box_j[0], l0); box_j[1] = min(box_j[1], l1); box_j[2] = min(box_j[2], l2)
@@ -196,6 +202,63 @@ def _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse,
     return best_axis, best_plane
 
 
+# A node of at most FEW primitives chooses its plane without the bins (_best_plane_few).
+FEW = 16
+
+
+@njit(cache=True)
+def _best_plane_few(refs, first, count, bounds, scale, bins, leaf_size, c_traverse, c_intersect, by_bin,
+                    right_area):
+    """_best_plane of a node of few primitives (count <= FEW) without filling the bins: on
+    each axis its primitives sorted by the bin their centroid falls in (_bin's formula),
+    then swept from the left, a plane costed after each run of one bin that has primitives
+    after it. Those are the planes _best_plane costs (it skips the empty bins), with the
+    same two boxes (min and max are exact in any order), counts and expression, in the same
+    order: the same (axis, plane), at the cost of the primitives rather than of the bins.
+    ``by_bin`` (FEW, 2) int64 and ``right_area`` (FEW,) are scratch."""
+    area = _surface_area(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5])
+    best_cost = c_intersect * count if count <= leaf_size else np.inf
+    best_axis = -1
+    best_plane = 0.0
+    for axis in range(3):
+        if scale[axis] == 0.0:
+            continue
+        clo = bounds[6 + axis]
+        extent = bounds[9 + axis] - clo
+        for k in range(count):
+            j = min(int(scale[axis] * (_centroid(refs[first + k], axis) - clo)), bins - 1)
+            m = k
+            while m > 0 and by_bin[m - 1, 0] > j:
+                by_bin[m, 0] = by_bin[m - 1, 0]
+                by_bin[m, 1] = by_bin[m - 1, 1]
+                m -= 1
+            by_bin[m, 0] = j
+            by_bin[m, 1] = first + k
+        # right_area[m]: the area of the box of the sorted primitives m..count-1.
+        r0 = np.inf; r1 = np.inf; r2 = np.inf; r3 = -np.inf; r4 = -np.inf; r5 = -np.inf
+        for m in range(count - 1, 0, -1):
+            r = refs[by_bin[m, 1]]
+            r0 = min(r0, r[0]); r1 = min(r1, r[1]); r2 = min(r2, r[2])
+            r3 = max(r3, r[3]); r4 = max(r4, r[4]); r5 = max(r5, r[5])
+            right_area[m] = _surface_area(r0, r1, r2, r3, r4, r5)
+        l0 = np.inf; l1 = np.inf; l2 = np.inf; l3 = -np.inf; l4 = -np.inf; l5 = -np.inf
+        for m in range(count - 1):
+            r = refs[by_bin[m, 1]]
+            l0 = min(l0, r[0]); l1 = min(l1, r[1]); l2 = min(l2, r[2])
+            l3 = max(l3, r[3]); l4 = max(l4, r[4]); l5 = max(l5, r[5])
+            if by_bin[m + 1, 0] == by_bin[m, 0] or not area > 0.0:
+                continue
+            n_left = m + 1
+            n_right = count - n_left
+            cost = c_traverse + c_intersect * (_surface_area(l0, l1, l2, l3, l4, l5) * n_left
+                                               + right_area[n_left] * n_right) / area
+            if cost < best_cost:
+                best_cost = cost
+                best_axis = axis
+                best_plane = clo + extent * (by_bin[m, 0] + 1) / bins
+    return best_axis, best_plane
+
+
 @njit(cache=True)
 def _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right_bounds):
     """Reorder primitives first..first + count - 1 (``refs`` and ``order`` alike) into the
@@ -229,21 +292,22 @@ def _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right
     j = first + count - 1
     while i <= j:
         r = refs[i]
-        if r[6 + axis] < plane:
+        x = _centroid(r, 0); y = _centroid(r, 1); z = _centroid(r, 2)
+        if (x if axis == 0 else y if axis == 1 else z) < plane:
             a0 = min(a0, r[0]); a1 = min(a1, r[1]); a2 = min(a2, r[2])
             a3 = max(a3, r[3]); a4 = max(a4, r[4]); a5 = max(a5, r[5])
-            a6 = min(a6, r[6]); a7 = min(a7, r[7]); a8 = min(a8, r[8])
-            a9 = max(a9, r[6]); a10 = max(a10, r[7]); a11 = max(a11, r[8])
+            a6 = min(a6, x); a7 = min(a7, y); a8 = min(a8, z)
+            a9 = max(a9, x); a10 = max(a10, y); a11 = max(a11, z)
             i += 1
         else:
             b0 = min(b0, r[0]); b1 = min(b1, r[1]); b2 = min(b2, r[2])
             b3 = max(b3, r[3]); b4 = max(b4, r[4]); b5 = max(b5, r[5])
-            b6 = min(b6, r[6]); b7 = min(b7, r[7]); b8 = min(b8, r[8])
-            b9 = max(b9, r[6]); b10 = max(b10, r[7]); b11 = max(b11, r[8])
+            b6 = min(b6, x); b7 = min(b7, y); b8 = min(b8, z)
+            b9 = max(b9, x); b10 = max(b10, y); b11 = max(b11, z)
             p = order[i]
             order[i] = order[j]
             order[j] = p
-            for c in range(9):
+            for c in range(6):
                 refs[i, c], refs[j, c] = refs[j, c], refs[i, c]
             j -= 1
     if i == first or i == first + count:
@@ -262,12 +326,14 @@ def _split_at(refs, order, first, count, bounds, axis, plane, left_bounds, right
 
 
 @njit(cache=True)
-def _subtree(refs, order, box, links, root, first, count, depth, root_bounds, next_node, leaf_size, bins,
+def _subtree(refs, order, table, links, root, first, count, depth, root_bounds, next_node, leaf_size, bins,
              c_traverse, c_intersect, max_depth):
     """Build the subtree of primitives first..first + count - 1 at node ``root`` (at
     ``depth``; ``root_bounds`` its _node_bounds), its children placed from node
-    ``next_node`` on, next to each other: fill box (N, 6) float64 [lo, hi] and links (N, 2)
-    int32 (a leaf: first primitive, count; an inner node: left child, 0). Returns the first
+    ``next_node`` on, next to each other: fill the rows of ``table`` (N, 8) float32, the
+    node table of the module docstring, its box rounded out (_put_box) and its links in
+    ``links``, the same array as int32 (a leaf: first primitive, count; an inner node: left
+    child, 0). Returns the first
     node it left free, or -1 where the tree would be deeper than ``max_depth``. Nodes are
     taken from a stack of (node, first, count, depth) and their bounds, the left child
     first."""
@@ -282,23 +348,29 @@ def _subtree(refs, order, box, links, root, first, count, depth, root_bounds, ne
     right_area = np.empty(bins)
     right_count = np.empty(bins, dtype=np.int64)
     scale = np.zeros(3)
+    by_bin = np.empty((FEW, 2), dtype=np.int64)
+    few_area = np.empty(FEW)
     while sp > 0:
         sp -= 1
         node, first, count, depth = stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3]
         if depth > max_depth:
             return -1
         bounds = stack_bounds[sp]
-        box[node, :] = bounds[:6]
+        _put_box(bounds, table, links, node, 4)
         if count <= 1:
-            links[node, 0], links[node, 1] = first, count
+            links[node, 3], links[node, 7] = first, count
             continue
         _bin_scale(bounds, bins, scale)
-        _empty_bins(bin_count, bin_box)
-        _bin(refs, first, count, bounds, scale, bin_count, bin_box)
-        axis, plane = _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse,
-                                  c_intersect, right_area, right_count)
+        if count <= FEW:
+            axis, plane = _best_plane_few(refs, first, count, bounds, scale, bins, leaf_size, c_traverse,
+                                          c_intersect, by_bin, few_area)
+        else:
+            _empty_bins(bin_count, bin_box)
+            _bin(refs, first, count, bounds, scale, bin_count, bin_box)
+            axis, plane = _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse,
+                                      c_intersect, right_area, right_count)
         if axis < 0 and count <= leaf_size:
-            links[node, 0], links[node, 1] = first, count
+            links[node, 3], links[node, 7] = first, count
             continue
         # The right child's bounds go below the left's, over this node's (read: done).
         mid = _split_at(refs, order, first, count, bounds, axis, plane, stack_bounds[sp + 2], stack_bounds[sp + 3])
@@ -306,7 +378,7 @@ def _subtree(refs, order, box, links, root, first, count, depth, root_bounds, ne
         stack_bounds[sp, :] = stack_bounds[sp + 3]
         left = n_nodes
         n_nodes += 2
-        links[node, 0], links[node, 1] = left, 0
+        links[node, 3], links[node, 7] = left, 0
         stack[sp, 0], stack[sp, 1], stack[sp, 2], stack[sp, 3] = left + 1, mid, first + count - mid, depth + 1
         stack[sp + 1, 0], stack[sp + 1, 1], stack[sp + 1, 2], stack[sp + 1, 3] = left, first, mid - first, depth + 1
         sp += 2
@@ -368,33 +440,32 @@ def _split_node(refs, order, first, count, bounds, bins, leaf_size, c_traverse, 
 
 
 @njit(cache=True, parallel=True)
-def _subtrees(refs, order, box, links, tasks, task_bounds, leaf_size, bins, c_traverse, c_intersect,
+def _subtrees(refs, order, table, links, tasks, task_bounds, leaf_size, bins, c_traverse, c_intersect,
               max_depth, ends):
     """_subtree of each row (node, first, count, depth, next node) of ``tasks`` with its
     bounds ``task_bounds``, all cores; ends[i] = what task i returned."""
     for i in prange(tasks.shape[0]):
-        ends[i] = _subtree(refs, order, box, links, tasks[i, 0], tasks[i, 1], tasks[i, 2], tasks[i, 3],
+        ends[i] = _subtree(refs, order, table, links, tasks[i, 0], tasks[i, 1], tasks[i, 2], tasks[i, 3],
                            task_bounds[i], tasks[i, 4], leaf_size, bins, c_traverse, c_intersect, max_depth)
 
 
 @njit(cache=True, parallel=True)
-def _place_blocks(box_in, links_in, blocks, box, links):
-    """Copy each block (start, end, new start) of nodes of box_in/links_in to its new start
-    in box/links, its inner nodes' left children moved with it."""
+def _place_blocks(links_in, blocks, links):
+    """Copy each block (start, end, new start) of rows of the node table links_in (as int32)
+    to its new start in links, its inner nodes' left children moved with it."""
     for i in prange(blocks.shape[0]):
         start, end, to = blocks[i, 0], blocks[i, 1], blocks[i, 2]
         shift = to - start
         for k in range(end - start):
-            box[to + k, :] = box_in[start + k, :]
-            leaf = links_in[start + k, 1] > 0
-            links[to + k, 0] = links_in[start + k, 0] + (0 if leaf else shift)
-            links[to + k, 1] = links_in[start + k, 1]
+            for c in range(NODE_WIDTH):
+                links[to + k, c] = links_in[start + k, c]
+            if links_in[start + k, 7] == 0:
+                links[to + k, 3] += shift
 
 
-def _build(refs, order, box, links):
-    """Fill box and links with the tree over all primitives, root node 0, as the parallel
-    build makes it (TASK_MIN); returns the number of nodes, or -1 where it would be deeper
-    than MAX_DEPTH."""
+def _build(refs, order):
+    """The node table (N, 8) float32 of the tree over all primitives, root node 0, as the
+    parallel build makes it (TASK_MIN), or None where it would be deeper than MAX_DEPTH."""
     n_prims = len(order)
     root_bounds = np.empty(12)
     # The top of the tree, each node split by all cores; its nodes numbered as they come.
@@ -409,7 +480,7 @@ def _build(refs, order, box, links):
             tasks.append((node, first, count, depth, bounds))
             continue
         if depth > MAX_DEPTH:
-            return -1
+            return None
         left_bounds, right_bounds = np.empty(12), np.empty(12)
         mid = _split_node(refs, order, first, count, bounds, BINS, LEAF_SIZE, C_TRAVERSE, C_INTERSECT,
                           left_bounds, right_bounds)
@@ -419,46 +490,50 @@ def _build(refs, order, box, links):
         n_top += 2
     # Below it, the subtrees: task i's children from node n_top + 2 first on (a subtree of
     # c primitives has at most 2 c - 1 nodes).
-    box_in = np.empty((n_top + 2 * n_prims, 6))
-    links_in = np.zeros((n_top + 2 * n_prims, 2), dtype=np.int32)
+    table_in = np.empty((n_top + 2 * n_prims, NODE_WIDTH), dtype=np.float32)
+    links_in = table_in.view(np.int32)
     for node, node_box, left in top:
-        box_in[node] = node_box
-        links_in[node] = (left, 0)
+        _put_box(node_box, table_in, links_in, node, 4)
+        links_in[node, 3], links_in[node, 7] = left, 0
     tasks.sort(key=lambda task: -task[2])    # the biggest first
     rows = np.array([(node, first, count, depth, n_top + 2 * first) for node, first, count, depth, _ in tasks],
                     dtype=np.int64)
     task_bounds = np.array([task[4] for task in tasks])
     ends = np.empty(len(rows), dtype=np.int64)
     with chunks_of_one():
-        _subtrees(refs, order, box_in, links_in, rows, task_bounds, LEAF_SIZE, BINS, C_TRAVERSE, C_INTERSECT,
+        _subtrees(refs, order, table_in, links_in, rows, task_bounds, LEAF_SIZE, BINS, C_TRAVERSE, C_INTERSECT,
                   MAX_DEPTH, ends)
     if (ends < 0).any():
-        return -1
+        return None
     # Number the nodes as the serial build does: a node's children get the next two numbers
     # when it is taken from the stack, the left one taken next, so the nodes below a task's
     # root take the next (end - start) numbers in the order its own build gave them.
     below = {int(r[0]): (int(r[4]), int(e)) for r, e in zip(rows, ends)}
     blocks = []
+    placed = []    # (node, its row in table_in, its left child's number or -1: the row's own)
     stack = [(0, 0)]
     n_nodes = 1
     while stack:
         source, node = stack.pop()
-        box[node] = box_in[source]
         if source in below:
             start, end = below[source]
-            links[node] = links_in[source]
-            if links_in[source, 1] == 0:
-                links[node, 0] += n_nodes - start
+            placed.append((node, source, n_nodes - start + links_in[source, 3] if links_in[source, 7] == 0 else -1))
             blocks.append((start, end, n_nodes))
             n_nodes += end - start
             continue
-        left = int(links_in[source, 0])
-        links[node] = (n_nodes, 0)
+        left = int(links_in[source, 3])
+        placed.append((node, source, n_nodes))
         stack.append((left + 1, n_nodes + 1))
         stack.append((left, n_nodes))
         n_nodes += 2
-    _place_blocks(box_in, links_in, np.array(blocks, dtype=np.int64), box, links)
-    return n_nodes
+    table = np.empty((n_nodes, NODE_WIDTH), dtype=np.float32)
+    links = table.view(np.int32)
+    for node, source, left in placed:
+        links[node] = links_in[source]
+        if left >= 0:
+            links[node, 3] = left
+    _place_blocks(links_in, np.array(blocks, dtype=np.int64), links)
+    return table
 
 
 @njit(cache=True)
@@ -481,27 +556,33 @@ def _depth(links):
 
 @njit(cache=True, parallel=True)
 def _round_out(box, out, bits, high):
-    """Write the float64 boxes ``box`` (N, >= 6) [lo, hi] into the float32 rows of ``out``
-    (``bits``: the same array as int32), lo at columns 0-2 and hi at ``high``..``high`` + 2,
-    each lo rounded down and each hi up to a float32: the nearest float32, moved one step
-    where it lies on the wrong side (np.nextafter's step, done on the bits: one float32
-    further from zero is the next integer, ±0 steps to the smallest subnormal)."""
+    """_put_box for every row of ``box`` (N, >= 6), into the same rows of ``out``."""
     for i in prange(box.shape[0]):
-        for axis in range(3):
-            lo = np.float32(box[i, axis])
-            out[i, axis] = lo
-            if np.float64(lo) > box[i, axis]:
-                if lo == 0:
-                    bits[i, axis] = -2147483647    # 0x80000001: the subnormal below -0
-                else:
-                    bits[i, axis] += -1 if lo > 0 else 1
-            hi = np.float32(box[i, 3 + axis])
-            out[i, high + axis] = hi
-            if np.float64(hi) < box[i, 3 + axis]:
-                if hi == 0:
-                    bits[i, high + axis] = 1
-                else:
-                    bits[i, high + axis] += 1 if hi > 0 else -1
+        _put_box(box[i], out, bits, i, high)
+
+
+@njit(cache=True)
+def _put_box(box, out, bits, i, high):
+    """Write the float64 box ``box`` [lo, hi] (its first 6 values) into the float32 row ``i``
+    of ``out`` (``bits``: the same array as int32), lo at columns 0-2 and hi at ``high``..``high``
+    + 2, lo rounded down and hi up to a float32: the nearest float32, moved one step where it
+    lies on the wrong side (np.nextafter's step, done on the bits: one float32 further from
+    zero is the next integer, ±0 steps to the smallest subnormal)."""
+    for axis in range(3):
+        lo = np.float32(box[axis])
+        out[i, axis] = lo
+        if np.float64(lo) > box[axis]:
+            if lo == 0:
+                bits[i, axis] = -2147483647    # 0x80000001: the subnormal below -0
+            else:
+                bits[i, axis] += -1 if lo > 0 else 1
+        hi = np.float32(box[3 + axis])
+        out[i, high + axis] = hi
+        if np.float64(hi) < box[3 + axis]:
+            if hi == 0:
+                bits[i, high + axis] = 1
+            else:
+                bits[i, high + axis] += 1 if hi > 0 else -1
 
 
 def build(lo, hi) -> FlatBVH:
@@ -510,22 +591,23 @@ def build(lo, hi) -> FlatBVH:
     hi = np.ascontiguousarray(hi, dtype=np.float64)
     if lo.shape != hi.shape or lo.ndim != 2 or lo.shape[1] != 3 or len(lo) == 0:
         raise ValueError("BVH: lo and hi must be (P, 3) arrays with P >= 1, got %s and %s" % (lo.shape, hi.shape))
-    if not (np.isfinite(lo).all() and np.isfinite(hi).all()):
+    return build_rows(_references(lo, hi))
+
+
+def build_rows(refs) -> FlatBVH:
+    """The BVH over primitives with boxes ``refs`` (P, 6) float64 [lo, hi] (finite, lo <= hi),
+    which the build reorders: made for it (_references, triangle_rows), so a mesh's boxes
+    are written once."""
+    if refs.dtype != np.float64 or refs.ndim != 2 or refs.shape[1] != 6 or len(refs) == 0:
+        raise ValueError("BVH: the boxes must be a (P, 6) float64 array with P >= 1, got %s %s"
+                         % (refs.shape, refs.dtype))
+    if not np.isfinite(refs).all():
         raise ValueError("BVH: a primitive's box is not finite")
     start = time.perf_counter()
-    order = np.arange(len(lo), dtype=np.int32)
-    capacity = 2 * len(lo)
-    box = np.empty((capacity, 6))
-    links = np.zeros((capacity, 2), dtype=np.int32)
-    refs = _references(lo, hi)
-    n = _build(refs, order, box, links)
-    if n < 0:
+    order = np.arange(len(refs), dtype=np.int32)
+    nodes = _build(refs, order)
+    if nodes is None:
         raise ValueError("BVH: the tree would be deeper than %d levels (degenerate boxes)" % MAX_DEPTH)
-    nodes = np.zeros((n, NODE_WIDTH), dtype=np.float32)
-    _round_out(box[:n], nodes, nodes.view(np.int32), 4)
-    ints = nodes.view(np.int32)
-    ints[:, 3] = links[:n, 0]
-    ints[:, 7] = links[:n, 1]
     boxes = np.empty((len(order), 6), dtype=np.float32)    # refs are in leaf order now
     _round_out(refs, boxes, boxes.view(np.int32), 3)
     return FlatBVH(nodes, order, time.perf_counter() - start, boxes)
@@ -539,6 +621,19 @@ def offset(bvh: FlatBVH, first_node: int, first_primitive: int) -> FlatBVH:
     leaf = links[:, 7] > 0
     links[:, 3] += np.where(leaf, first_primitive, first_node).astype(np.int32)
     return FlatBVH(nodes, bvh.order + np.int32(first_primitive), bvh.build_seconds, bvh.boxes)
+
+
+def triangle_rows(vertices: np.ndarray, faces: np.ndarray, lo=None, hi=None) -> np.ndarray:
+    """build_rows' boxes (F + E, 6) float64 [lo, hi] of the triangles faces (F, >=3) of
+    vertices (V, 3), followed by the boxes lo, hi (E, 3) where given (spheres, instances)."""
+    faces = np.ascontiguousarray(faces)
+    extra = 0 if lo is None else len(lo)
+    rows = np.empty((len(faces) + extra, 6))
+    _triangle_bounds(np.ascontiguousarray(vertices, dtype=np.float64), faces, rows[:, :3], rows[:, 3:])
+    if extra:
+        rows[len(faces):, :3] = lo
+        rows[len(faces):, 3:] = hi
+    return rows
 
 
 def triangle_bounds(vertices: np.ndarray, faces: np.ndarray):
