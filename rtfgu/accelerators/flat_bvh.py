@@ -152,6 +152,14 @@ def _empty_bins(bin_count, bin_box):
 
 
 @njit(cache=True)
+def _as_a_leaf(bounds, count, leaf_size, c_intersect):
+    """What a plane must beat: (the area of the node's box, the cost of leaving the node a
+    leaf, inf where it has more than leaf_size primitives, axis -1, plane 0.0)."""
+    area = _surface_area(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5])
+    return area, (c_intersect * count if count <= leaf_size else np.inf), -1, 0.0
+
+
+@njit(cache=True)
 def _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse, c_intersect,
                 right_area, right_count):
     """The binned SAH (rtfgu.accelerators.bvh.BVH._best_split) over the filled bins: (axis,
@@ -159,10 +167,7 @@ def _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse,
     enough to be one. A node bigger than that is split at its cheapest plane, whatever it
     costs (PBRT-v4 section 7.3.4)."""
     bins = bin_count.shape[1]
-    area = _surface_area(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5])
-    best_cost = c_intersect * count if count <= leaf_size else np.inf
-    best_axis = -1
-    best_plane = 0.0
+    area, best_cost, best_axis, best_plane = _as_a_leaf(bounds, count, leaf_size, c_intersect)
     for axis in range(3):
         if scale[axis] == 0.0:
             continue
@@ -216,15 +221,11 @@ def _best_plane_few(refs, first, count, bounds, scale, bins, leaf_size, c_traver
     same two boxes (min and max are exact in any order), counts and expression, in the same
     order: the same (axis, plane), at the cost of the primitives rather than of the bins.
     ``by_bin`` (FEW, 2) int64 and ``right_area`` (FEW,) are scratch."""
-    area = _surface_area(bounds[0], bounds[1], bounds[2], bounds[3], bounds[4], bounds[5])
-    best_cost = c_intersect * count if count <= leaf_size else np.inf
-    best_axis = -1
-    best_plane = 0.0
+    area, best_cost, best_axis, best_plane = _as_a_leaf(bounds, count, leaf_size, c_intersect)
     for axis in range(3):
         if scale[axis] == 0.0:
             continue
         clo = bounds[6 + axis]
-        extent = bounds[9 + axis] - clo
         for k in range(count):
             j = min(int(scale[axis] * (_centroid(refs[first + k], axis) - clo)), bins - 1)
             m = k
@@ -255,7 +256,7 @@ def _best_plane_few(refs, first, count, bounds, scale, bins, leaf_size, c_traver
             if cost < best_cost:
                 best_cost = cost
                 best_axis = axis
-                best_plane = clo + extent * (by_bin[m, 0] + 1) / bins
+                best_plane = clo + (bounds[9 + axis] - clo) * (by_bin[m, 0] + 1) / bins    # _best_plane's
     return best_axis, best_plane
 
 
