@@ -78,8 +78,9 @@ def no_mesh_triangles(monkeypatch):
 
 @pytest.fixture
 def builds(monkeypatch) -> Counted:
-    counted = Counted(flat_bvh.build)
-    monkeypatch.setattr(flat_bvh, "build", counted)
+    """Counts the BVH builds: every one goes through build_rows (build's too)."""
+    counted = Counted(flat_bvh.build_rows)
+    monkeypatch.setattr(flat_bvh, "build_rows", counted)
     return counted
 
 
