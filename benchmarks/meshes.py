@@ -72,7 +72,7 @@ turning them into Dr.Jit arrays for Mitsuba, nor uploading them for WGSL (done o
 the timing; WGSL's timed part is its dispatches and the readback of the
 results, and its pipeline is compiled before anything is timed). Build: from the vertex and
 face arrays to a structure ready to trace, median of BUILD_RUNS after a warm-up build; rtfgu:
-triangle_bounds + flat_bvh.build + the permuted faces (WGSL: and their upload to the
+triangle_rows + flat_bvh.build_rows (as compile_scene builds) + the permuted faces (WGSL: and their upload to the
 adapter); Embree: a new scene, TriangleMesh and the commit (done by the first ``run``, of one
 ray); Mitsuba: mi.Mesh, its buffers and mi.load_dict. Bytes per triangle: rtfgu's node table
 + the (F, 4) int32 faces + the vertices, over the triangles; the peers do not say what they
@@ -352,8 +352,7 @@ def closest_hits_packets(vertices, faces4, nodes, links, origins, directions, si
 def bvh_of(mesh: MeshArrays):
     """rtfgu's BVH over the mesh's faces and the (F, 4) faces in its leaf order, each with
     its index in the mesh's face list (what rtfgu.layout.compile_scene makes of a mesh)."""
-    lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
-    bvh = flat_bvh.build(lo, hi)
+    bvh = flat_bvh.build_rows(flat_bvh.triangle_rows(mesh.vertices, mesh.faces))
     faces4 = np.empty((len(mesh.faces), 4), dtype=np.int32)
     faces4[:, :3] = mesh.faces[bvh.order]
     faces4[:, 3] = bvh.order

@@ -638,12 +638,10 @@ def triangle_rows(vertices: np.ndarray, faces: np.ndarray, lo=None, hi=None) -> 
 
 
 def triangle_bounds(vertices: np.ndarray, faces: np.ndarray):
-    """lo, hi (F, 3) float64 of the triangles faces (F, >=3) of vertices (V, 3)."""
-    faces = np.ascontiguousarray(faces)
-    lo = np.empty((len(faces), 3))
-    hi = np.empty((len(faces), 3))
-    _triangle_bounds(np.ascontiguousarray(vertices, dtype=np.float64), faces, lo, hi)
-    return lo, hi
+    """lo, hi (F, 3) float64 of the triangles faces (F, >=3) of vertices (V, 3): the two
+    halves of triangle_rows."""
+    rows = triangle_rows(vertices, faces)
+    return rows[:, :3], rows[:, 3:]
 
 
 @njit(cache=True, parallel=True)
