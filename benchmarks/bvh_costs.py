@@ -24,7 +24,6 @@ sys.path.insert(0, str(HERE.parent))
 sys.path.insert(0, str(HERE))
 
 from rtfgu.accelerators import flat_bvh  # noqa: E402
-from rtfgu.accelerators.bvh import BINS, C_INTERSECT, LEAF_SIZE  # noqa: E402
 from rtfgu.accelerators.flat_bvh import C_TRAVERSE  # noqa: E402
 
 from meshes import (ICOSPHERE_SUBDIVISIONS, INCOHERENT, PRIMARY, QUICK_INCOHERENT,  # noqa: E402
@@ -36,19 +35,14 @@ RUNS = 3
 
 
 def build(lo, hi, c_traverse):
-    """flat_bvh.build with another C_TRAVERSE: (nodes, order, seconds)."""
-    order = np.arange(len(lo), dtype=np.int32)
-    box = np.empty((2 * len(lo), 6))
-    links = np.zeros((2 * len(lo), 2), dtype=np.int32)
-    start = time.perf_counter()
-    n = flat_bvh._build(lo, hi, order, box, links, LEAF_SIZE, BINS, c_traverse, C_INTERSECT,
-                        flat_bvh.MAX_DEPTH)
-    seconds = time.perf_counter() - start
-    nodes = np.zeros((n, flat_bvh.NODE_WIDTH), dtype=np.float32)
-    flat_bvh._round_out(box[:n], nodes)
-    ints = nodes.view(np.int32)
-    ints[:, 3], ints[:, 7] = links[:n, 0], links[:n, 1]
-    return nodes, order, seconds
+    """flat_bvh.build with another C_TRAVERSE (a module constant its build reads when it
+    runs): (nodes, order, seconds)."""
+    saved, flat_bvh.C_TRAVERSE = flat_bvh.C_TRAVERSE, c_traverse
+    try:
+        bvh = flat_bvh.build(lo, hi)
+    finally:
+        flat_bvh.C_TRAVERSE = saved
+    return bvh.nodes, bvh.order, bvh.build_seconds
 
 
 def main(argv=None):
