@@ -11,6 +11,13 @@ the tile's candidate list; the test is conservative by a margin far above the ro
 the float32 intersection (about 2 eps D / r near a grazing ray), so no hit is ever lost and
 the image is the same bit for bit.
 
+The test is made on cosines, with no inverse cosine per sphere and tile: the angle a
+between the cone's axis and a sphere's direction is within the limit L = half + R (R the
+sphere's angular radius with its margin) where cos a >= cos L = cos(half) cos R -
+sin(half) sin R, acos being decreasing on [-1, 1] and L below pi. cos R and sin R are
+computed once per frame; the rounding of the cosines (about 1e-16, at most 2e-8 radians
+where the angle is near 0 or pi) is far inside the margin.
+
 The cones are computed in float64 whatever the render precision: they only choose which
 spheres to test, never a result.
 """
@@ -35,8 +42,8 @@ MARGIN_RELATIVE = 1e-6
 
 @njit(cache=True, error_model="numpy")
 def sphere_cones(camera, spheres, out):
-    """Per sphere: the unit direction from the eye to its centre and its angular radius
-    plus the margin (pi: always a candidate)."""
+    """Per sphere (a row of CONE_FIELDS): the unit direction from the eye to its centre, its
+    angular radius R plus the margin (pi: always a candidate), cos R and sin R."""
     eye = load3(camera, PINHOLE_EYE)
     for i in range(spheres.shape[0]):
         p = sub(row3(spheres, i, SPHERE_CENTER), eye)
@@ -52,6 +59,8 @@ def sphere_cones(camera, spheres, out):
             out[i, 1] = p[1] / D
             out[i, 2] = p[2] / D
             out[i, 3] = math.asin(r / D) + MARGIN_ABSOLUTE + MARGIN_RELATIVE * D / r
+        out[i, 4] = math.cos(out[i, 3])
+        out[i, 5] = math.sin(out[i, 3])
 
 
 @njit(cache=True, error_model="numpy")
@@ -77,23 +86,27 @@ def tile_candidates(camera, cones, x0, x1, y0, y1, width, height, out):
     c2 = _direction(camera, sx0, sy1)
     c3 = _direction(camera, sx1, sy1)
     axis = normalize(add(add(c0, c1), add(c2, c3)))
-    cos_half = min(min(dot(axis, c0), dot(axis, c1)), min(dot(axis, c2), dot(axis, c3)))
-    half = math.acos(min(cos_half, 1.0))
+    cos_half = min(min(min(dot(axis, c0), dot(axis, c1)), min(dot(axis, c2), dot(axis, c3))), 1.0)
+    half = math.acos(cos_half)
+    sin_half = math.sqrt(max(0.0, 1.0 - cos_half * cos_half))
     n = 0
     for i in range(cones.shape[0]):
-        limit = half + cones[i, 3]
-        if limit >= math.pi:
-            out[n] = i
-            n += 1
-            continue
-        cos_a = axis[0] * cones[i, 0] + axis[1] * cones[i, 1] + axis[2] * cones[i, 2]
-        if math.acos(max(-1.0, min(cos_a, 1.0))) <= limit:
+        # Within the cone where the angle to the axis is at most L = half + R (L >= pi: any
+        # angle), compared as cosines (the module docstring).
+        if half + cones[i, 3] >= math.pi or axis[0] * cones[i, 0] + axis[1] * cones[i, 1] + \
+                axis[2] * cones[i, 2] >= cos_half * cones[i, 4] - sin_half * cones[i, 5]:
             out[n] = i
             n += 1
     return n
 
 
+# A row of the cone table (sphere_cones): direction (3), R, cos R, sin R.
+CONE_FIELDS = 6
+
+
 def cone_table(camera64: np.ndarray, spheres: np.ndarray) -> np.ndarray:
-    cones = np.empty((len(spheres), 4), dtype=np.float64)
+    """The culling cones of the sphere rows ``spheres`` seen from the pinhole ``camera64``
+    (float64), (len(spheres), CONE_FIELDS) float64 (sphere_cones)."""
+    cones = np.empty((len(spheres), CONE_FIELDS), dtype=np.float64)
     sphere_cones(camera64, spheres.astype(np.float64), cones)
     return cones
