@@ -302,6 +302,60 @@ def _scan(k: int, kind) -> str:
                        eye_free="\n".join(start + _branches(cases) + end), absent_on="index")
 
 
+def _eye_scan(k: int, kind) -> str:
+    """eye_scan_<kind>: the from-eye kind's culled candidates tested against every primary ray
+    of a tile at once, candidate by candidate (render.hits_one_by_one). Each ray meets the
+    candidates in the order scan_'s eye loop takes them, with the same test and the same keep
+    rule, so its hit is scan_'s bit for bit; the loop over the rays has no branch and reads
+    arrays of one field each, so LLVM's loop vectoriser tests 8 rays an instruction.
+    ``rays``: the tile's rays, field f of ray r at rays[f * stride + r] (origin 0-2, direction
+    3-5, tmin 6); ``ts``, ``hits``, ``rows``: each ray's nearest hit so far, its t, its scene
+    index and kind at hits[r] and hits[stride + r] (int32), its row at rows[r]. The loop keeps
+    the candidate's place at hits[2 * stride + r] (int32, so that every value it stores is
+    32 bits: eight rays an instruction), made a kind and a row after it."""
+    radius = layout.offset(kind.record, "radius")
+    loops = []
+    for formula in ("robust", "slide"):
+        roots = ("%s_roots_robust(temp, terms[i, 3], table[i, %d], direction, rays[6 * stride + r], tmax)"
+                 % (kind.name, radius) if formula == "robust"
+                 else "%s_roots(temp, terms[i, 3], direction, rays[6 * stride + r], tmax)" % kind.name)
+        loops.append("\n".join([
+            "    %s:" % ("if formula == %d" % FORMULAS.index("robust") if formula == "robust" else "else"),
+            "        for c in range(n_candidates):",
+            "            i = candidates[c]",
+            "            temp = row3(terms, i, 0)",
+            "            idx = index[i]",
+            "            for r in range(count):",
+            "                tmax = ts[r]",
+            "                direction = (rays[3 * stride + r], rays[4 * stride + r], rays[5 * stride + r])",
+            "                t = " + roots,
+            "                keep = (t < tmax) | ((t == tmax) & (idx < hits[r]))",
+            "                ts[r] = t if keep else tmax",
+            "                hits[r] = idx if keep else hits[r]",
+            "                hits[2 * stride + r] = c if keep else hits[2 * stride + r]"]))
+    start = ["    for r in range(count):",
+             "        hits[2 * stride + r] = -1"]
+    end = ["    for r in range(count):",
+           "        if hits[2 * stride + r] >= 0:",
+           "            hits[stride + r] = %d" % k,
+           "            rows[r] = candidates[hits[2 * stride + r]]",
+           "    return 0"]
+    return _overloaded("eye_scan_" + kind.name,
+                       "table, index, terms, candidates, n_candidates, rays, count, stride, ts, hits, rows, formula",
+                       "0", "\n".join(start + loops + end),
+                       "The nearest hits among the %ss' candidates of a tile's primary rays, given the "
+                       "nearest so far" % kind.name, eye_free="    return 0", absent_on="index")
+
+
+def _rest_of_eye_kind(kind) -> str:
+    """rest_<kind>: the from-eye kind for intersect_scene_after_eye, where eye_scan_ has tested
+    its candidates already: nothing left, or scan_ where there is no eye."""
+    params = "table, index, terms, candidates, n_candidates, origin, direction, tmin, hit, formula"
+    return _overloaded("rest_" + kind.name, params, "hit", "    return hit",
+                       "What is left of the %ss after eye_scan_%s" % (kind.name, kind.name),
+                       eye_free="    return scan_%s(%s)" % (kind.name, params), absent_on="index")
+
+
 def _any_hit(kind) -> str:
     """any_hit_<kind>: is any row of this kind hit in [tmin, tmax)? (a shadow ray)"""
     lines = []
@@ -495,6 +549,8 @@ def source() -> str:
             parts += _mesh_parts(k, kind, at[kind.name])
         elif not kind.instance:
             parts += [_scan(k, kind), _any_hit(kind), _normal(kind), _texcoord(kind)]
+            if kind.from_eye:
+                parts += [_eye_scan(k, kind), _rest_of_eye_kind(kind)]
     for k, kind in enumerate(SHAPES):   # after the kinds an instance holds, whose functions they call
         if kind.instance:
             parts += _instance_parts(k, kind)
@@ -503,8 +559,13 @@ def source() -> str:
 
     calls = []
     shadow_calls = []
+    eye_at = len(SHAPES)   # calls[:eye_at]: the kinds intersect_scene tests before the from-eye kind
     for k, kind in enumerate(SHAPES):
         a = at[kind.name]
+        if kind.from_eye:
+            eye_at = len(calls)
+        if eye_at == len(SHAPES) and eye_kinds and (kind.bvh or kind.instance):
+            raise ValueError("rtfgu.registry: the from-eye kind must come before the %s kind" % kind.name)
         if kind.bvh:
             instance = at["instance"]
             mesh = "shapes[%d], shapes[%d], shapes[%d], shapes[%d], shapes[%d], (shapes[%d], shapes[%d], %s)" % (
@@ -539,6 +600,35 @@ def source() -> str:
         "    ``given``: None, or the hit of what the BVH holds, found before (a packet's), taken",
         '    instead of traversing the BVH."""',
         "    hit = (tmax, -1, -1, -1)"] + calls + ["    return hit"]))
+    # intersect_scene in three steps for a tile of primary rays (render.hits_one_by_one): the
+    # kinds before the from-eye kind ray by ray, its candidates for all rays at once
+    # (eye_scan), the rest ray by ray; each ray meets every shape in intersect_scene's order.
+    if eye_at < len(SHAPES):
+        eye = eye_kinds[0]
+        a = at[eye.name]
+        after = ["    hit = rest_%s(shapes[%d], shapes[%d], terms, candidates, n_candidates, origin, direction, "
+                 "tmin, hit, formula)" % (eye.name, a, a + 1)] + calls[eye_at + 1:]
+        eye_scan = ["    eye_scan_%s(shapes[%d], shapes[%d], terms, candidates, n_candidates, rays, count, stride, ts, "
+                    "hits, rows, formula)" % (eye.name, a, a + 1)]
+    else:
+        after, eye_scan = calls[eye_at:], []
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+        "def intersect_scene_before_eye(shapes, origin, direction, tmin, hit, formula):",
+        '    """intersect_scene\'s kinds before the from-eye kind, given the nearest hit so far."""']
+        + calls[:eye_at] + ["    return hit"]))
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+        "def eye_scan(shapes, terms, candidates, n_candidates, rays, count, stride, ts, hits, rows, formula):",
+        '    """The from-eye kind\'s candidates against a tile\'s primary rays (eye_scan_ of the kind)."""']
+        + eye_scan + ["    return 0"]))
+    parts.append("\n".join([
+        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
+        "def intersect_scene_after_eye(shapes, terms, candidates, n_candidates, origin, direction, tmin, hit, "
+        "formula, given=None):",
+        '    """intersect_scene\'s from-eye kind where eye_scan did not test it, and the kinds after it,',
+        '    given the nearest hit so far."""']
+        + after + ["    return hit"]))
     parts.append("\n".join([
         "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
         "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
@@ -725,3 +815,6 @@ surface_color = _generated.surface_color
 direct_path = _generated.direct_path
 instance_t = _generated.instance_t
 trace_packet = _generated.trace_packet
+intersect_scene_before_eye = _generated.intersect_scene_before_eye
+eye_scan = _generated.eye_scan
+intersect_scene_after_eye = _generated.intersect_scene_after_eye

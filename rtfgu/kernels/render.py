@@ -49,7 +49,8 @@ from ..sampling.random import LENS_SET, PIXEL_SET, VERTEX_DIMENSIONS
 from ..ray import SPAWN_EPSILON
 from .camera import gen_ray, thin_lens_ray
 from .culling import tile_candidates
-from .dispatch import MESH_SLOTS, intersect_scene, shade, shape_normal, slots, surface_color, trace_packet
+from .dispatch import (MESH_SLOTS, eye_scan, intersect_scene, intersect_scene_after_eye, intersect_scene_before_eye,
+                       shade, shape_normal, slots, surface_color, trace_packet)
 from .dispatch_support import as_python
 from .float3 import add, lit, load3, mul, scale
 from .environment import ENVIRONMENT, MATERIAL_OF, background_radiance
@@ -380,17 +381,22 @@ PACKET_SIDE = 4
 assert PACKET_SIDE * PACKET_SIDE == PACKET and TILE % PACKET_SIDE == 0
 
 
-# A tile's primary rays (render_tile's first phase): origin (3), direction (3), tmin, tmax.
+# A tile's primary rays (render_tile's first phase): origin (3), direction (3), tmin, tmax,
+# stored a field at a time (field f of ray c at f * TILE_RAYS + c), so that a loop over the
+# rays reads each field with unit stride (dispatch's eye_scan, vectorised by LLVM).
 RAY_FIELDS = 8
-tile_rays = on_the_stack(RAY_FIELDS * TILE * TILE, "A tile's primary rays, RAY_FIELDS values each.")
-tile_values = on_the_stack(TILE * TILE, "A value per pixel of a tile.")
-tile_hits = on_the_stack(3 * TILE * TILE, "The (scene index, kind, row) of a tile's primary hits.")
+TILE_RAYS = TILE * TILE
+tile_rays = on_the_stack(RAY_FIELDS * TILE_RAYS, "A tile's primary rays, field after field.")
+tile_values = on_the_stack(TILE_RAYS, "A value per pixel of a tile.")
+tile_hits = on_the_stack(3 * TILE_RAYS, "The scene indices, then kinds of a tile's primary hits, then room for "
+                         "eye_scan (int32: eight to a vector there).")
+tile_rows = on_the_stack(TILE_RAYS, "The rows of a tile's primary hits.")
 
 
 @njit(cache=True, error_model="numpy", inline="always")
 def fill_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
     """Sample ``s``'s primary ray of every pixel of ``tile`` into ``rays``, row after row from
-    (x0, y0), RAY_FIELDS values a ray (ThinLens.gen_ray with the lens's sample, else the
+    (x0, y0), field after field (RAY_FIELDS; ThinLens.gen_ray with the lens's sample, else the
     camera's gen_ray)."""
     x0, x1, y0, y1, width, height = tile
     one = lit(1, camera_row[0])
@@ -404,11 +410,11 @@ def fill_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
                 origin, direction, tmin, tmax = thin_lens_ray(camera_row, sx, sy, lens)
             else:
                 origin, direction, tmin, tmax = gen_ray(camera_kind, camera_row, sx, sy)
-            rays[c], rays[c + 1], rays[c + 2] = origin
-            rays[c + 3], rays[c + 4], rays[c + 5] = direction
-            rays[c + 6] = tmin
-            rays[c + 7] = tmax
-            c += RAY_FIELDS
+            rays[c], rays[TILE_RAYS + c], rays[2 * TILE_RAYS + c] = origin
+            rays[3 * TILE_RAYS + c], rays[4 * TILE_RAYS + c], rays[5 * TILE_RAYS + c] = direction
+            rays[6 * TILE_RAYS + c] = tmin
+            rays[7 * TILE_RAYS + c] = tmax
+            c += 1
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -426,30 +432,41 @@ def camera_rays(tile, camera_kind, camera_row, sampler, s, seed, rays):
 @njit(cache=True, error_model="numpy", inline="always")
 def ray_at(rays, c):
     """Ray ``c`` of a tile's ``rays``: (origin, direction, tmin, tmax)."""
-    k = RAY_FIELDS * c
-    return ((rays[k], rays[k + 1], rays[k + 2]), (rays[k + 3], rays[k + 4], rays[k + 5]), rays[k + 6],
-            rays[k + 7])
+    n = TILE_RAYS
+    return ((rays[c], rays[n + c], rays[2 * n + c]), (rays[3 * n + c], rays[4 * n + c], rays[5 * n + c]),
+            rays[6 * n + c], rays[7 * n + c])
 
 
 @njit(cache=True, error_model="numpy", inline="always")
 def keep_hit(ts, hits, c, hit):
-    """Store ``hit`` (t, scene index, kind, row) as pixel ``c``'s primary hit."""
+    """Store ``hit`` (t, scene index, kind, row) as pixel ``c``'s primary hit (``hits``: the
+    tile's (tile_hits, tile_rows))."""
     ts[c] = hit[0]
-    hits[3 * c] = hit[1]
-    hits[3 * c + 1] = hit[2]
-    hits[3 * c + 2] = hit[3]
+    hits[0][c] = np.int32(hit[1])
+    hits[0][TILE_RAYS + c] = np.int32(hit[2])
+    hits[1][c] = hit[3]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
 def hits_one_by_one(tile, shapes, eye_rows, rays, ts, hits, formula):
     """render_tile's second phase where no shader continues a path: the nearest hit of each
-    of the tile's primary ``rays`` (intersect_scene a ray) into ``ts`` and ``hits``
-    (keep_hit), so that trace, given it (given_hit), compiles no intersection of its own."""
+    of the tile's primary ``rays`` into ``ts`` and ``hits`` (keep_hit), so that trace, given
+    it (given_hit), compiles no intersection of its own. Each ray meets the shapes in
+    intersect_scene's order and gets its hit bit for bit, in three loops: the kinds before the
+    from-eye kind ray by ray, the from-eye kind's candidates for all the rays at once
+    (eye_scan: 8 rays an instruction), the rest ray by ray."""
     x0, x1, y0, y1 = tile[0], tile[1], tile[2], tile[3]
-    for c in range((x1 - x0) * (y1 - y0)):
+    terms, candidates, n_candidates = eye_rows
+    count = (x1 - x0) * (y1 - y0)
+    for c in range(count):
         origin, direction, tmin, tmax = ray_at(rays, c)
-        keep_hit(ts, hits, c, intersect_scene(shapes, eye_rows[0], eye_rows[1], eye_rows[2], origin,
-                                              direction, tmin, tmax, formula))
+        keep_hit(ts, hits, c, intersect_scene_before_eye(shapes, origin, direction, tmin, (tmax, -1, -1, -1),
+                                                         formula))
+    eye_scan(shapes, terms, candidates, n_candidates, rays, count, TILE_RAYS, ts, hits[0], hits[1], formula)
+    for c in range(count):
+        origin, direction, tmin, tmax = ray_at(rays, c)
+        keep_hit(ts, hits, c, intersect_scene_after_eye(shapes, terms, candidates, n_candidates, origin, direction,
+                                                        tmin, hit_at(ts, hits, c), formula))
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -475,10 +492,10 @@ def hits_in_packets(tile, shapes, eye_rows, rays, ts, hits, formula):
             count = 0
             for iy in range(by, min(by + PACKET_SIDE, y1)):
                 for ix in range(bx, min(bx + PACKET_SIDE, x1)):
-                    k = RAY_FIELDS * ((iy - y0) * (x1 - x0) + ix - x0)
+                    k = (iy - y0) * (x1 - x0) + ix - x0
                     for a in range(3):
-                        origins[3 * count + a] = rays[k + a]
-                        directions[3 * count + a] = rays[k + 3 + a]
+                        origins[3 * count + a] = rays[a * TILE_RAYS + k]
+                        directions[3 * count + a] = rays[(3 + a) * TILE_RAYS + k]
                     t[count] = inf
                     best[count] = -1
                     kind[count] = -1
@@ -499,7 +516,7 @@ def hits_in_packets(tile, shapes, eye_rows, rays, ts, hits, formula):
 @njit(cache=True, error_model="numpy", inline="always")
 def hit_at(ts, hits, c):
     """Pixel ``c``'s primary hit (t, scene index, kind, row), as keep_hit stored it."""
-    return ts[c], hits[3 * c], hits[3 * c + 1], hits[3 * c + 2]
+    return ts[c], np.int64(hits[0][c]), np.int64(hits[0][TILE_RAYS + c]), hits[1][c]
 
 
 @njit(cache=True, error_model="numpy", _nrt=False)
@@ -547,7 +564,7 @@ def render_tile(view, world, eye_rows, settings, cast, path, packets, buffers, o
     one = lit(1, camera_row[0])
     rays = tile_rays(one)
     ts = tile_values(one)
-    hits = tile_hits(np.int64)
+    hits = (tile_hits(np.int32), tile_rows(np.int64))
     zero = lit(0, one)
     for s in range(first, end):
         camera_rays(tile, camera_kind, camera_row, sampler, s, seed, rays)
