@@ -302,6 +302,15 @@ def _scan(k: int, kind) -> str:
                        eye_free="\n".join(start + _branches(cases) + end), absent_on="index")
 
 
+def _inlined(signature: str, doc: list, body: list) -> str:
+    """A generated function that numba inlines into its caller: ``def signature:``, its
+    docstring lines ``doc`` and its ``body`` lines."""
+    quoted = ['    """' + doc[0]] + ["    " + line for line in doc[1:]]
+    quoted[-1] += '"""'
+    return "\n".join(['@njit(cache=True, error_model="numpy", inline="always")', "def %s:" % signature]
+                     + quoted + body)
+
+
 def _eye_scan(k: int, kind) -> str:
     """eye_scan_<kind>: the from-eye kind's culled candidates tested against every primary ray
     of a tile at once, candidate by candidate (render.hits_one_by_one). Each ray meets the
@@ -612,28 +621,20 @@ def source() -> str:
                     "hits, rows, formula)" % (eye.name, a, a + 1)]
     else:
         after, eye_scan = calls[eye_at:], []
-    parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def intersect_scene_before_eye(shapes, origin, direction, tmin, hit, formula):",
-        '    """intersect_scene\'s kinds before the from-eye kind, given the nearest hit so far."""']
-        + calls[:eye_at] + ["    return hit"]))
-    parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def eye_scan(shapes, terms, candidates, n_candidates, rays, count, stride, ts, hits, rows, formula):",
-        '    """The from-eye kind\'s candidates against a tile\'s primary rays (eye_scan_ of the kind)."""']
-        + eye_scan + ["    return 0"]))
-    parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def intersect_scene_after_eye(shapes, terms, candidates, n_candidates, origin, direction, tmin, hit, "
-        "formula, given=None):",
-        '    """intersect_scene\'s from-eye kind where eye_scan did not test it, and the kinds after it,',
-        '    given the nearest hit so far."""']
-        + after + ["    return hit"]))
-    parts.append("\n".join([
-        "@njit(cache=True, error_model=\"numpy\", inline=\"always\")",
-        "def in_shadow(shapes, position, w_i, tmin, tmax, formula):",
-        '    """A shadow ray: is any shape hit in [tmin, tmax)? (Light.in_shadow, rtfgu/lights/light.py)"""']
-        + shadow_calls + ["    return False"]))
+    parts.append(_inlined("intersect_scene_before_eye(shapes, origin, direction, tmin, hit, formula)",
+                          ["intersect_scene's kinds before the from-eye kind, given the nearest hit so far."],
+                          calls[:eye_at] + ["    return hit"]))
+    parts.append(_inlined("eye_scan(shapes, terms, candidates, n_candidates, rays, count, stride, ts, hits, rows, formula)",
+                          ["The from-eye kind's candidates against a tile's primary rays (eye_scan_ of the kind)."],
+                          eye_scan + ["    return 0"]))
+    parts.append(_inlined("intersect_scene_after_eye(shapes, terms, candidates, n_candidates, origin, direction, tmin, "
+                          "hit, formula, given=None)",
+                          ["intersect_scene's from-eye kind where eye_scan did not test it, and the kinds after it,",
+                           "given the nearest hit so far."],
+                          after + ["    return hit"]))
+    parts.append(_inlined("in_shadow(shapes, position, w_i, tmin, tmax, formula)",
+                          ["A shadow ray: is any shape hit in [tmin, tmax)? (Light.in_shadow, rtfgu/lights/light.py)"],
+                          shadow_calls + ["    return False"]))
     parts.append(_by_kind("shape_normal", "normal_row_", "hit_normal(position, direction)", "position",
                           (0, 1, 2), extra=", direction"))
     parts.append(_by_kind("shape_texcoord", "texcoord_row_", "Shape.texcoord(position)",
