@@ -43,6 +43,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import operator
 import weakref
 from types import SimpleNamespace
 from dataclasses import dataclass, field
@@ -304,17 +305,47 @@ def _vec(v) -> list:
     return [v.x, v.y, v.z]
 
 
-def pack_row(record: str, obj) -> list:
-    """The row of ``record`` holding the attributes of ``obj`` named by its fields."""
-    size, fields = RECORDS[record]
-    row = [0.0] * size
-    for name, components, column in fields:
-        value = getattr(obj, name)
-        if components == 3:
-            row[column], row[column + 1], row[column + 2] = value.x, value.y, value.z
-        else:
-            row[column] = float(value)
-    return row
+def _packer(record: str) -> tuple:
+    """(row width, a getter of the record's values from an object, each value's column), made
+    once per record: operator.attrgetter reads every field (a Float3's x, y, z) in one call."""
+    packer = _PACKERS.get(record)
+    if packer is None:
+        size, fields = RECORDS[record]
+        paths, columns = [], []
+        for name, components, column in fields:
+            if components == 3:
+                paths += [name + ".x", name + ".y", name + ".z"]
+                columns += [column, column + 1, column + 2]
+            else:
+                paths.append(name)
+                columns.append(column)
+        if len(paths) > 1:
+            getter = operator.attrgetter(*paths)
+        else:   # attrgetter of one name gives the value, not a tuple
+            getter = (lambda obj, one=operator.attrgetter(*paths): (one(obj),)) if paths else (lambda obj: ())
+        packer = _PACKERS[record] = (size, getter, tuple(columns))
+    return packer
+
+
+_PACKERS = {}
+
+
+def row_values(record: str, obj) -> tuple:
+    """The values of ``obj``'s attributes named by the fields of ``record``, in their order
+    (a Float3 as its x, y, z): what pack_table places in a row."""
+    return _packer(record)[1](obj)
+
+
+def pack_table(record: str, values: list, dtype) -> np.ndarray:
+    """The (len(values), width) table of ``record`` whose rows hold ``values`` (row_values
+    of each object), zero in the columns no field takes. A value beyond ``dtype`` becomes
+    inf without a warning: compile_scene refuses it, naming the table."""
+    size, _, columns = _packer(record)
+    table = np.zeros((len(values), size), dtype=dtype)
+    if values:
+        with np.errstate(over="ignore"):
+            table[:, columns] = np.array(values, dtype=np.float64)
+    return table
 
 
 class _OwnSamplers:
@@ -396,7 +427,7 @@ def compile_camera(camera) -> tuple[int, np.ndarray]:
     else:
         raise ValueError("Scene.camera: the flat layout knows %s, got %s"
                          % (", ".join(CAMERA_RECORDS.values()), type(camera).__name__))
-    return kind, np.array(pack_row(record, source), dtype=np.float64).reshape(CAMERA_ROWS, 4)
+    return kind, pack_table(record, [row_values(record, source)], np.float64).reshape(CAMERA_ROWS, 4)
 
 
 def _leaves(shapes):
@@ -472,7 +503,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                                              offset=len(texels) // 3, width=m.texture.texels.shape[1])
                     texels.extend(m.texture.texels.reshape(-1).tolist())
                 placed[id(m.texture)] = (k, len(texture_rows[tkind.name]))
-                texture_rows[tkind.name].append(pack_row(tkind.record, source))
+                texture_rows[tkind.name].append(row_values(tkind.record, source))
                 features.update((tkind.name, "textures"))
                 if hasattr(m.texture, "noise_features"):
                     features.update(m.texture.noise_features)   # which noise WGSL assembles
@@ -482,7 +513,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         limit = m.flat_limit(scene.tracer)
         if limit is not None:
             raise ValueError("%s.material (%r): %s" % (where, m, limit))
-        unique_rows.append(pack_row("Material", SimpleNamespace(
+        unique_rows.append(row_values("Material", SimpleNamespace(
             color=m.cd if isinstance(m.cd, Float3) else color, kd=m.kd, specular=m.specular,
             shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
             absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt,
@@ -510,7 +541,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                 instanced_rows[id(obj)] = len(instanced_meshes)
                 instanced_meshes.append(obj)
             features.add("instanced_mesh")
-            return pack_row(kind.record, SimpleNamespace(
+            return row_values(kind.record, SimpleNamespace(
                 **{name: getattr(shape, name) for name, _ in kind.fields if not name.startswith("object_")},
                 object_kind=SHAPE_IDS[MESH_KIND.name], object_row=instanced_rows[id(obj)]))
         k, obj_kind = shape_kind_of(obj)
@@ -520,9 +551,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                              % (where, ", ".join(o.record for o in INSTANCED), type(obj).__name__))
         if id(obj) not in instanced_rows:
             instanced_rows[id(obj)] = len(instanced[obj_kind.name])
-            instanced[obj_kind.name].append(pack_row(obj_kind.record, obj))
+            instanced[obj_kind.name].append(row_values(obj_kind.record, obj))
             features.add("instanced_" + obj_kind.name)
-        return pack_row(kind.record, SimpleNamespace(
+        return row_values(kind.record, SimpleNamespace(
             **{name: getattr(shape, name) for name, _ in kind.fields if not name.startswith("object_")},
             object_kind=k, object_row=instanced_rows[id(obj)]))
 
@@ -566,7 +597,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
                 i += mesh.num_triangles
                 continue
         else:
-            rows[kind.name][0].append(pack_row(kind.record, shape))
+            rows[kind.name][0].append(row_values(kind.record, shape))
         rows[kind.name][1].append(i)
         features.add(kind.name)
         material_of_shape.append(material_row(where, shape.material, shape.color))
@@ -575,7 +606,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         material_of = np.array(material_of_shape, dtype=np.int32)
     else:
         material_of = np.concatenate([np.atleast_1d(np.asarray(x, dtype=np.int32)) for x in material_of_shape])
-    materials = np.array(unique_rows, dtype=dtype).reshape(len(unique_rows), MATERIAL_WIDTH)
+    materials = pack_table("Material", unique_rows, dtype)
     shaders = np.array(unique_shaders, dtype=np.int32)
 
     lights = {kind.name: [] for kind in LIGHTS}
@@ -590,7 +621,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         if kind.area:
             light = SimpleNamespace(**{name: getattr(light, name) for name, _ in kind.fields if name != "light_sampler"},
                                     light_sampler=own.place(light.sampler))
-        lights[kind.name].append(pack_row(kind.record, light))
+        lights[kind.name].append(row_values(kind.record, light))
         features.add(kind.name)
     if scene.lights:
         features.add("lights")
@@ -606,7 +637,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         features.add("environment")
 
     def table(rows, record):
-        return np.array(rows, dtype=dtype).reshape(len(rows), width(record))
+        return pack_table(record, rows, dtype)
 
     shapes = {kind.name: (table(rows[kind.name][0], kind.record),
                           np.array(rows[kind.name][1], dtype=np.int32)) for kind in ROW_SHAPES}
@@ -685,7 +716,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     arrays += [(kind.table, flat.lights[kind.name]) for kind in LIGHTS]
     arrays += [(kind.table, flat.textures[kind.name]) for kind in TEXTURES] + [("texels", flat.texels)]
     for name, array in arrays:
-        if not np.all(np.isfinite(array)):
+        if array.size and not np.isfinite(array).all():
             raise ValueError("Scene: %s is not finite in %s (a value overflows the precision)"
                              % (name, precision))
     return flat

@@ -420,3 +420,22 @@ def test_a_float64_render_of_one_sample_whose_radiance_overflows_is_refused():
     scene.lights[0] = PointLight(Float3(0, 0.1, 0), Float3(1e307))   # 1e309 at the plane: beyond float64
     with pytest.raises(ValueError, match="the numba backend produced non-finite pixels"):
         rtfgu.render(scene, 8, 8, backend="numba", precision="float64")
+
+
+@pytest.mark.parametrize("where", ["sphere", "material", "light"])
+def test_a_value_beyond_float32_is_refused_by_the_layout_naming_its_table(where):
+    """compile_scene checks every table it lays out: a number that float32 cannot hold
+    (here 1e39) names the table in float32, and lays out as given in float64."""
+    from rtfgu.layout import compile_scene
+
+    scene = Scene(PinholeCamera(Float3(0, 0, 5), Float3(0, 0, 0), Float3(0, 1, 0)))
+    big = 1e39
+    scene.shapes.append(Sphere(Float3(0, 0, 0), big if where == "sphere" else 1.0, Float3(0.5),
+                               material=Matte(kd=big if where == "material" else 0.5)))
+    scene.lights.append(PointLight(Float3(0, 5, 0), Float3(big if where == "light" else 1.0)))
+    table = {"sphere": "sphere", "material": "materials", "light": "light"}[where]
+    with pytest.raises(ValueError, match=r"Scene: \S*%s\S* is not finite in float32" % table):
+        compile_scene(scene, "float32")
+    flat = compile_scene(scene, "float64")
+    assert big in np.concatenate([flat.table("sphere").ravel(), flat.materials.ravel(),
+                                  flat.lights["point_light"].ravel()])

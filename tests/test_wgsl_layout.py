@@ -9,6 +9,7 @@ writes back must be the values numpy put there.
 from __future__ import annotations
 
 import math
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -80,6 +81,32 @@ def test_named_offsets_pick_the_compiled_values():
     for name, value in (("left", -1), ("right", 2), ("bottom", -3), ("top", 4),
                         ("hither", 0.5), ("yon", 9), ("tmin", 1e-5)):
         assert _field(ortho, name, "OrthographicCamera") == [value]
+
+
+@pytest.mark.parametrize("record", sorted(layout.RECORDS))
+def test_pack_table_puts_each_value_in_its_fields_columns_and_zero_elsewhere(record):
+    width, fields = layout.RECORDS[record]
+    # Each component its own value (a Float3's x, y, z differ), none of them zero.
+    values, expected, k = {}, np.zeros(width), 1.0
+    for name, components, column in fields:
+        if components == 3:
+            values[name] = Float3(k, k + 0.25, k + 0.5)
+            expected[column:column + 3] = (k, k + 0.25, k + 0.5)
+        else:
+            values[name] = k
+            expected[column] = k
+        k += 1.0
+    objects = [SimpleNamespace(**values), SimpleNamespace(**values)]
+    table = layout.pack_table(record, [layout.row_values(record, o) for o in objects], np.float32)
+    assert table.shape == (2, width) and table.dtype == np.float32
+    assert table.tolist() == [expected.tolist()] * 2
+    assert layout.pack_table(record, [], np.float64).shape == (0, width)
+
+
+def test_pack_table_refuses_a_vector_where_its_record_holds_a_number():
+    obj = SimpleNamespace(center=Float3(1.0, 2.0, 3.0), radius=Float3(1.0))
+    with pytest.raises((TypeError, ValueError)):
+        layout.pack_table("Sphere", [layout.row_values("Sphere", obj)], np.float64)
 
 
 # WGSL's alignment and size rules for the types the records use.
