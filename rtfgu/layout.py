@@ -305,6 +305,10 @@ def _vec(v) -> list:
     return [v.x, v.y, v.z]
 
 
+# record -> what _packer makes of it, made on first use.
+_PACKERS = {}
+
+
 def _packer(record: str) -> tuple:
     """(row width, a getter of the record's values from an object, each value's column), made
     once per record: operator.attrgetter reads every field (a Float3's x, y, z) in one call."""
@@ -325,9 +329,6 @@ def _packer(record: str) -> tuple:
             getter = (lambda obj, one=operator.attrgetter(*paths): (one(obj),)) if paths else (lambda obj: ())
         packer = _PACKERS[record] = (size, getter, tuple(columns))
     return packer
-
-
-_PACKERS = {}
 
 
 def row_values(record: str, obj) -> tuple:
