@@ -323,10 +323,9 @@ def _packer(record: str) -> tuple:
             else:
                 paths.append(name)
                 columns.append(column)
-        if len(paths) > 1:
-            getter = operator.attrgetter(*paths)
-        else:   # attrgetter of one name gives the value, not a tuple
-            getter = (lambda obj, one=operator.attrgetter(*paths): (one(obj),)) if paths else (lambda obj: ())
+        getter = operator.attrgetter(*paths)
+        if len(paths) == 1:   # attrgetter of one name gives the value, not a tuple
+            getter = lambda obj, one=getter: (one(obj),)   # noqa: E731
         packer = _PACKERS[record] = (size, getter, tuple(columns))
     return packer
 
