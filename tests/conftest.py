@@ -94,3 +94,30 @@ def fast_path(request) -> RenderPath:
     samples per pixel); numba float64 stands in for the lecture layer there, which it
     equals within 1e-9 (tests/test_numba_parity.py). WGSL skipped as in ``path``."""
     return _available(*request.param)
+
+
+# Test files whose numba tests compile the same kernels (the image and solid textures: the same
+# debugger kernel in both precisions) run on one pytest-xdist worker, one after the other, so
+# the second loads from numba's cache what the first compiled; on two workers at once, each
+# compiled it (docs/compile_time.md, "Kernels compiled twice"). Every other file is its own
+# scope, as under --dist loadfile.
+SAME_WORKER = {"test_textures.py": "textures", "test_solid_textures.py": "textures"}
+
+try:
+    from xdist.scheduler import LoadFileScheduling
+except ImportError:  # pytest without pytest-xdist: one process, nothing to share out
+    LoadFileScheduling = None
+
+if LoadFileScheduling is not None:
+    class SharedKernelScheduling(LoadFileScheduling):
+        """--dist loadfile, the files of SAME_WORKER's values one scope each."""
+
+        def _split_scope(self, nodeid: str) -> str:
+            file = super()._split_scope(nodeid)
+            return SAME_WORKER.get(file.rsplit("/", 1)[-1], file)
+
+    @pytest.hookimpl(optionalhook=True)  # pytest -p no:xdist: no such hook
+    def pytest_xdist_make_scheduler(config, log):
+        if config.getvalue("dist") == "loadfile":
+            return SharedKernelScheduling(config, log)
+        return None
