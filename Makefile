@@ -58,7 +58,8 @@ montage: $(STAMP)
 	$(PY) -m rtfgu.montage docs/homework_renders.png docs/samplers.png
 
 # One pytest worker per core (pytest-xdist): most of a cold run is numba compiling kernels,
-# one process at a time; a test file stays on one worker, in its order.
+# one process at a time; a test file stays on one worker, in its order (files that compile
+# the same kernels share one: SAME_WORKER in tests/conftest.py).
 test: $(STAMP) $(SANDBOX_STAMP)
 	$(PY) -m pytest -n auto --dist loadfile --durations=15
 

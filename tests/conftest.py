@@ -110,7 +110,7 @@ except ImportError:  # pytest without pytest-xdist: one process, nothing to shar
 
 if LoadFileScheduling is not None:
     class SharedKernelScheduling(LoadFileScheduling):
-        """--dist loadfile, the files of SAME_WORKER's values one scope each."""
+        """--dist loadfile, except that the files SAME_WORKER maps to one name are one scope."""
 
         def _split_scope(self, nodeid: str) -> str:
             file = super()._split_scope(nodeid)
