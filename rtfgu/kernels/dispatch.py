@@ -34,7 +34,8 @@ from pathlib import Path
 
 from .. import layout
 from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_IDS, SHAPES, TEXTURES
-from .inline_typing import cache_inline_typing
+from .inline_typing import cache_inline_typing, compile_inline_bodies_once
+from .liveness import use_bitset_liveness
 
 # The texels' place in the kernels' ``scene`` tuple; a table per texture kind follows.
 TEXELS = 3
@@ -806,6 +807,8 @@ def load():
 
 use_versioned_cache()
 cache_inline_typing()
+compile_inline_bodies_once()
+use_bitset_liveness()
 _quiet_inlined_loops()
 _generated = load()
 intersect_scene = _generated.intersect_scene

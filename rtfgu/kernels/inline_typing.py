@@ -18,6 +18,16 @@ inliner copies that IR at each call site before changing it (``InlineWorker.inli
 so one typing serves every site. Only the ``inline="always"`` case is cached; numba's own
 path is used for every other overload, and wherever its internals are not the ones this
 was written against (the patch then does nothing).
+
+Besides typing it, numba compiles such a body to machine code on its own when the
+template first meets a signature (``_OverloadFunctionTemplate._build_impl``: "Make sure
+that the implementation can be fully compiled", and ``generic``'s ``get_call_template``),
+although the template then marks it "always inlined" and no call ever reaches that code:
+every body typed, lowered, optimised by LLVM and made machine code for nothing, and
+each body inlined inside it compiled so again. ``compile_inline_bodies_once()`` hands such
+a template a dispatcher that does not compile; the body is still typed (``generic``'s
+``type_inference_stage``), where a typing error is reported as before, and inlined. A
+render kernel's compile is then the kernel's alone.
 """
 from __future__ import annotations
 
@@ -65,4 +75,42 @@ def cache_inline_typing() -> bool:
     cached_generic.numba_generic = generic   # numba's own, for the tests to compare with
     cached_generic.__doc__ = generic.__doc__
     _OverloadFunctionTemplate.generic = cached_generic
+    return True
+
+
+def compile_inline_bodies_once() -> bool:
+    """Give each ``inline="always"`` overload template a jit decorator whose dispatchers do
+    not compile (``_can_compile``, as ``Dispatcher.disable_compile`` sets it); True when installed (or already
+    installed), False where numba's template does not have the expected shape."""
+    try:
+        from numba.core.typing.templates import _OverloadFunctionTemplate
+    except ImportError:
+        return False
+    get_jit_decorator = getattr(_OverloadFunctionTemplate, "_get_jit_decorator", None)
+    if get_jit_decorator is None:
+        return False
+    if getattr(get_jit_decorator, "_rtfgu_no_compile", False):
+        return True
+
+    def inline_jit_decorator(self):
+        jitter = get_jit_decorator(self)
+        inline = getattr(self, "_inline", None)
+        if inline is None or not inline.is_always_inline:
+            return jitter
+
+        def typed_only(**options):
+            decorate = jitter(**options)
+
+            def wrap(pyfunc):
+                dispatcher = decorate(pyfunc)
+                # What Dispatcher.disable_compile sets; it asserts a compiled signature, and
+                # this dispatcher has none and needs none.
+                dispatcher._can_compile = False
+                return dispatcher
+            return wrap
+        return typed_only
+
+    inline_jit_decorator._rtfgu_no_compile = True
+    inline_jit_decorator.numba_get_jit_decorator = get_jit_decorator
+    _OverloadFunctionTemplate._get_jit_decorator = inline_jit_decorator
     return True
