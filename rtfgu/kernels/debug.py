@@ -16,13 +16,6 @@ after one bounce as in a render. Primary rays test every sphere with intersect_s
 rather than the render's per-frame eye terms and culled candidates: the terms are the same
 operations on the same numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling
 drops only spheres the ray cannot hit.
-
-The kernel traces a few rays a call, so LLVM does not optimise it (numba's
-``_dbg_optnone``, LLVM's ``optnone``): its compile is the part that costs, and LLVM's
-passes were half of it (docs/compile_time.md). Without fast-math every floating-point
-operation rounds as IEEE 754 says at any optimisation level, so its numbers are the
-render's, bit for bit (tests/test_debug_pixel.py adds the bounces up to the rendered
-pixel); the plain ``njit`` functions it calls are compiled and cached as for the renders.
 """
 from __future__ import annotations
 
@@ -38,7 +31,7 @@ from .float3 import add, lit, scale
 from .render import RECORD_FIELDS, record_bounce, scene_tuple, search_hit, shape_arrays, trace
 
 
-@njit(cache=True, error_model="numpy", _dbg_optnone=True)
+@njit(cache=True, error_model="numpy")
 def trace_records(camera, pixel, rays, shapes, lights, scene, settings, records):
     """With ``pixel`` = (ix, iy, width, height), iy counted from the bottom as in
     render_tile: that pixel's camera ray into ``records[0]``. With ix < 0: every row of
