@@ -80,8 +80,9 @@ def cache_inline_typing() -> bool:
 
 def compile_inline_bodies_once() -> bool:
     """Give each ``inline="always"`` overload template a jit decorator whose dispatchers do
-    not compile (``_can_compile``, as ``Dispatcher.disable_compile`` sets it); True when installed (or already
-    installed), False where numba's template does not have the expected shape."""
+    not compile (``_can_compile``, as ``Dispatcher.disable_compile`` sets it); True when
+    installed (or already installed), False where numba's template does not have the
+    expected shape."""
     try:
         from numba.core.typing.templates import _OverloadFunctionTemplate
     except ImportError:

@@ -5,9 +5,9 @@ numba finds which variables are live at the entry of each block of a function's 
 variable names: the definitions that reach each block, then liveness pushed backwards.
 Dead-code elimination runs it after every round of inlining (``ir_utils.remove_dead``),
 and the post-processor once more (``postproc.VariableLifetime.livemap``). A kernel here
-is one function with every overload inlined into it, thousands of blocks and tens of
+is one function with every overload inlined into it, up to a thousand blocks and tens of
 thousands of variables, and the sets of reaching definitions hold most of them: each
-union copies thousands of strings, and the first fixed point alone was 17 % of a pixel
+union copies thousands of strings, and the first fixed point alone was 11-17 % of a pixel
 debugger kernel's compile (sampled with py-spy; docs/compile_time.md).
 
 ``compute_live_map`` below makes the same passes in the same order, each set a Python
