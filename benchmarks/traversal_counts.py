@@ -12,8 +12,9 @@ that time over the nodes entered. A mesh whose tree fits the caches gives the tr
 cost per node; the 1.31 M-triangle one adds what its fetches from memory cost.
 
 ``counted`` is rtfgu.kernels.mesh._wide_closest with counters, built from the same pieces
-(enter_node, leaf_span, _leaf_closest), so it makes the same steps: the script checks that
-it finds every ray's face and t of mesh_closest. A measurement to read, not a test.
+(enter_node, leaf_span, _leaf_closest, pop_within), so it makes the same steps: the script
+checks that it finds every ray's face and t of mesh_closest. A measurement to read, not a
+test.
 """
 from __future__ import annotations
 
@@ -62,14 +63,9 @@ def counted(vertices, faces, nodes, links, origin, direction, tmin, counts):
             counts[FACES] += count
             state = _leaf_closest(vertices, faces, None, (None, None, None), first, count, frame, origin, direction,
                                   tmin, state, 0)
-        found = False
-        while sp > 0:
-            sp -= 1
-            if entry_stack[sp] <= state[0] * widen:
-                code = stack[sp]
-                found = True
-                break
-            counts[DROPPED] += 1
+        before = sp
+        code, found, sp = wide_bvh.pop_within(stack, entry_stack, sp, state[0] * widen)
+        counts[DROPPED] += before - sp - found
         if not found:
             break
     return state

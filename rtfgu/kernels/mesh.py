@@ -285,13 +285,7 @@ def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmi
             first, count = wide_bvh.leaf_span(code)
             state = _leaf_closest(vertices, faces, spheres, instances, first, count, frame, origin, direction,
                                   tmin, state, formula)
-        found = False
-        while sp > 0:
-            sp -= 1
-            if entry_stack[sp] <= state[0] * widen:
-                code = stack[sp]
-                found = True
-                break
+        code, found, sp = wide_bvh.pop_within(stack, entry_stack, sp, state[0] * widen)
         if not found:
             break
     return state

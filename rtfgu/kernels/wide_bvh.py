@@ -184,3 +184,15 @@ def leaf_span(code):
     leaf = ~code
     return leaf >> LEAF_BITS, (leaf & ((1 << LEAF_BITS) - 1)) + 1
 
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def pop_within(stack, entry_stack, sp, reach):
+    """The next stack entry the ray enters within ``reach`` (the best t so far, widened):
+    (its code, True, the stack size below it); the entries popped beyond ``reach`` are
+    dropped. (0, False, 0) when none is left."""
+    while sp > 0:
+        sp -= 1
+        if entry_stack[sp] <= reach:
+            return stack[sp], True, sp
+    return 0, False, 0
