@@ -132,6 +132,9 @@ NOISE_SEED, RAY_SEED = 2562, 1
 PRIMARY, QUICK_PRIMARY = 1024, 128
 INCOHERENT, QUICK_INCOHERENT = 1 << 20, 1 << 14
 RUNS = 5
+# A render of the 64 spheres takes about 10 ms, whose time moves by a third between calls:
+# its rows take more rounds (each costs about 0.1 s).
+SPHERE_RUNS = 25
 BUILD_RUNS = 3
 TOL = 1e-4
 EMBREE_CHUNKS = 64
@@ -1301,8 +1304,9 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
     render_rows = bench_render(meshes, QUICK_SUBDIVISIONS if quick else ICOSPHERE_SUBDIVISIONS,
                                sphere_size, builds, runs, log)
     log("meshes: the 64 spheres at %dx%d" % (sphere_size, sphere_size))
+    sphere_runs = 1 if quick else SPHERE_RUNS
     sphere_rows = bench_spheres(mitsuba or "not run: %s" % missing.get(Mitsuba.name),
-                                sphere_size, runs, log)
+                                sphere_size, sphere_runs, log)
     load_end = os.getloadavg()
 
     machine = "%s, %d cores, numba %d threads" % (cpu_model(), os.cpu_count(), threads)
@@ -1404,9 +1408,9 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
         "random_spheres_64 (benchmarks/scenes.py) at %dx%d, primary rays only (flat colours); "
         "rtfgu's rows are the paths of the first table, timed again here in the same run. "
         "Mitsuba traces the camera's rays made by rtfgu.kernels.camera.gen_ray, rounded to "
-        "float32, through 64 `sphere` shapes. Time: median of the rounds, each timing every "
+        "float32, through 64 `sphere` shapes. Time: median of %d rounds, each timing every "
         "row once in an order shuffled per round, the second of two calls in a row." % (
-            sphere_size, sphere_size),
+            sphere_size, sphere_size, sphere_runs),
         "",
         *sphere_table(sphere_rows, sphere_size),
         "",
