@@ -52,7 +52,7 @@ sys.path.insert(0, str(HERE))
 from rtfgu.accelerators.wide_bvh import CODE_ROW, LEAF_BITS, WIDTH  # noqa: E402
 from rtfgu.kernels import wide_bvh  # noqa: E402
 from rtfgu.kernels.float3 import lit  # noqa: E402
-from rtfgu.kernels.mesh import NO_REFCOUNT, _wide_start, intersect_face  # noqa: E402
+from rtfgu.kernels.mesh import _wide_start, intersect_face  # noqa: E402
 
 import meshes  # noqa: E402
 
@@ -127,7 +127,9 @@ def _take(state, t, idx, f):
     return state
 
 
-@njit(**NO_REFCOUNT)
+# As mesh_closest (NO_REFCOUNT), but not cached: a test loads this script under a name no
+# import finds, and numba's cache of it could not be loaded again.
+@njit(error_model="numpy", _nrt=False)
 def closest_blocks(vertices, faces, nodes, links, blocks, block_links, first_block, origin, direction, tmin):
     """mesh_closest's wide traversal (no spheres, no instances, root 0) where a code
     >= ``first_block`` is the block code - first_block, tested by tri8."""

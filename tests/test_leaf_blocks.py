@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from benchmark_scripts import benchmark_script
-from test_wide_bvh import closed_mesh, hard_rays, traced, traversal_mesh, tree_of
+from test_wide_bvh import hard_rays, rays_from_inside, traced, traversal_mesh, tree_of
 
 
 def blocks_traced(vertices, rows, wide, origins, directions, all_leaves):
@@ -38,11 +38,7 @@ def test_the_blocks_find_mesh_closests_face_and_t(mesh, all_leaves):
 
 @pytest.mark.parametrize("all_leaves", [False, True], ids=["pure nodes", "all leaves"])
 def test_no_ray_from_inside_a_closed_mesh_leaks_between_the_blocks_faces(all_leaves):
-    vertices, faces = closed_mesh(3)
-    _, wide, rows = tree_of(vertices, faces)
-    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in faces for a in range(3)}
-    targets = np.concatenate([vertices, [(vertices[i] + vertices[j]) * 0.5 for i, j in sorted(edges)]])
-    for origin in ((0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)):
-        origins = np.tile(origin, (len(targets), 1))
-        _, face, _, _ = blocks_traced(vertices, rows, wide, origins, targets - origins, all_leaves)
-        assert (face >= 0).all(), "%d of %d rays leak" % ((face < 0).sum(), len(targets))
+    vertices, rows, wide, rays = rays_from_inside()
+    for origins, directions in rays:
+        _, face, _, _ = blocks_traced(vertices, rows, wide, origins, directions, all_leaves)
+        assert (face >= 0).all(), "%d of %d rays leak" % ((face < 0).sum(), len(origins))

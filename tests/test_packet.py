@@ -17,7 +17,7 @@ from rtfgu.kernels.mesh import WIDEN32, WIDEN64, _inverse, mesh_closest
 from rtfgu.kernels.packet import OX, PACKET, REACH, RAY_ROWS, box_rays, mesh_closest_packet, _rays_of
 from rtfgu.kernels.wide_bvh import box8, lanes_of
 
-from test_wide_bvh import PRECISIONS, closed_mesh, hard_rays, looped, soup, traversal_mesh, tree_of
+from test_wide_bvh import PRECISIONS, hard_rays, looped, rays_from_inside, soup, traversal_mesh, tree_of
 
 
 @njit(error_model="numpy")
@@ -175,14 +175,10 @@ def test_a_packet_keeps_each_rays_bound_and_tie_rule(dtype):
 
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 def test_no_ray_of_a_packet_from_inside_a_closed_mesh_leaks(dtype):
-    vertices, faces = closed_mesh(3)
-    _, wide, rows = tree_of(vertices, faces)
-    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in faces for a in range(3)}
-    targets = np.concatenate([vertices, [(vertices[i] + vertices[j]) * 0.5 for i, j in sorted(edges)]])
-    for origin in ((0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)):
-        origins = np.tile(origin, (len(targets), 1))
-        hits = run(_packets, vertices, rows, wide, origins, targets - origins, dtype)
-        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(targets))
+    vertices, rows, wide, rays = rays_from_inside()
+    for origins, directions in rays:
+        hits = run(_packets, vertices, rows, wide, origins, directions, dtype)
+        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))
 
 
 @njit(error_model="numpy")

@@ -110,6 +110,21 @@ def closed_mesh(subdivisions=3):
     return np.asarray(sphere.vertices, dtype=np.float64), np.asarray(sphere.faces, dtype=np.int64)
 
 
+def rays_from_inside(subdivisions=3):
+    """A closed icosphere's tree, and rays from two points inside it through each of its
+    vertices and edge midpoints, where a leak between faces would be: (vertices, rows, wide,
+    [(origins, directions) per inside point])."""
+    vertices, faces = closed_mesh(subdivisions)
+    _, wide, rows = tree_of(vertices, faces)
+    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in faces for a in range(3)}
+    targets = np.concatenate([vertices, [(vertices[i] + vertices[j]) * 0.5 for i, j in sorted(edges)]])
+    rays = []
+    for origin in ((0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)):
+        origins = np.tile(origin, (len(targets), 1))
+        rays.append((origins, targets - origins))
+    return vertices, rows, wide, rays
+
+
 def hard_rays(vertices, count, seed):
     """Rays from around the mesh at random points of it, and rays along the axes (zero
     direction components, negative zeros) and through vertices: the slab test's NaN and
@@ -341,14 +356,10 @@ def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dt
 
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 def test_no_ray_from_inside_a_closed_mesh_leaks_through_the_wide_tree(dtype):
-    vertices, faces = closed_mesh(3)
-    _, wide, rows = tree_of(vertices, faces)
-    edges = {tuple(sorted((int(f[a]), int(f[(a + 1) % 3])))) for f in faces for a in range(3)}
-    targets = np.concatenate([vertices, [(vertices[i] + vertices[j]) * 0.5 for i, j in sorted(edges)]])
-    for origin in ((0.0, 0.0, 0.0), (0.125, -0.0625, 0.25)):
-        origins = np.tile(origin, (len(targets), 1))
-        hits, _ = traced(vertices, rows, wide.nodes, origins, targets - origins, dtype)
-        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(targets))
+    vertices, rows, wide, rays = rays_from_inside()
+    for origins, directions in rays:
+        hits, _ = traced(vertices, rows, wide.nodes, origins, directions, dtype)
+        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))
 
 
 def test_the_traversals_called_once_a_ray_count_no_references():
