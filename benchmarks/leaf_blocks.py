@@ -58,7 +58,6 @@ import meshes  # noqa: E402
 
 BLOCK_ROWS = 10
 FACE_ROW = 9
-BLOCK_BYTES = BLOCK_ROWS * WIDTH * 4
 
 
 @intrinsic

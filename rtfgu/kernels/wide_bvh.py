@@ -185,7 +185,6 @@ def leaf_span(code):
     return leaf >> LEAF_BITS, (leaf & ((1 << LEAF_BITS) - 1)) + 1
 
 
-
 @njit(cache=True, error_model="numpy", inline="always")
 def pop_within(stack, entry_stack, sp, reach):
     """The next stack entry the ray enters within ``reach`` (the best t so far, widened):
