@@ -14,9 +14,13 @@ the only way before a scene could hold a Mesh). Printed, in seconds, as one JSON
     construct   Mesh(...) and the scene (with --triangles: the MeshTriangle per face);
     first       the first rtfgu.render: compile_scene (the packing and the BVH build) and
                 the trace;
-    second      rtfgu.render of the same scene again (the median of ``--runs``, 1);
-    kernel      one call of a NumbaAccumulator made beforehand: the trace alone (the median
-                of ``--runs``).
+    second      rtfgu.render of the same scene again (the median of ``--runs``, 1), each
+                image dropped before the next render;
+    kernel      NumbaAccumulator.add on one made beforehand: the kernel alone, its sums
+                (of one sample, the image) not made an image (the median of ``--runs``).
+    layout      the first render's layout and build alone: compile_scene and the kernel's
+                arguments (the wide tree's collapse) of a new scene holding a new Mesh of
+                the same arrays, so nothing is cached (the median of ``--runs``).
 
 numba compiles the kernels before anything is timed (a render of a 80-face icosphere); with
 ``--cold`` it does not, and ``first`` includes loading the compiled kernels from numba's
@@ -45,7 +49,8 @@ sys.path.insert(0, str(HERE))
 import rtfgu  # noqa: E402
 from rtfgu.float3 import Float3  # noqa: E402
 from rtfgu.accelerators import flat_bvh  # noqa: E402
-from rtfgu.kernels import NumbaAccumulator  # noqa: E402
+from rtfgu.kernels import NumbaAccumulator, kernel_arguments  # noqa: E402
+from rtfgu.layout import compile_scene  # noqa: E402
 
 from meshes import bunny, displaced_icosphere  # noqa: E402
 
@@ -97,18 +102,33 @@ def main(argv=None) -> None:
     scene, construct = timed(lambda: mesh_scene(
         rtfgu.Mesh(arrays.vertices, arrays.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()), args.triangles))
     first_image, first = timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
-    seconds = [timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
-               for _ in range(max(1, args.runs))]
-    second_image, second = seconds[0][0], statistics.median(s for _, s in seconds)
+    # Each image is dropped before the next call (a user's loop that shows or saves a frame):
+    # images kept would each be new memory from the system, whose first touch took 48-53 ms
+    # per 1024 x 1024 float64 image on the machine of docs/bench.md's run (docs/bvh.md).
+    second_image, times = None, []
+    for _ in range(max(1, args.runs)):
+        image, seconds = timed(rtfgu.render, scene, size, size, backend="numba", precision=args.precision)
+        second_image = image if second_image is None else second_image
+        del image
+        times.append(seconds)
+    second = statistics.median(times)
     accumulate = NumbaAccumulator(scene, size, size, args.precision)
-    kernels = [timed(accumulate, (0, 1)) for _ in range(max(1, args.runs))]
-    kernel_image, kernel = kernels[0][0], statistics.median(s for _, s in kernels)
+    kernel = statistics.median(timed(accumulate.add, (0, 1))[1] for _ in range(max(1, args.runs)))
+    kernel_image = accumulate.sums
+
+    def layout():
+        fresh = mesh_scene(rtfgu.Mesh(arrays.vertices, arrays.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()),
+                           args.triangles)
+        start = time.perf_counter()
+        kernel_arguments(compile_scene(fresh, args.precision), size, size)
+        return time.perf_counter() - start
+    layout_time = statistics.median(layout() for _ in range(max(1, args.runs)))
     if args.save:
         np.save(args.save, first_image)
     result = {"mesh": arrays.name, "triangles": len(arrays.faces),
               "held": "triangles" if args.triangles else "Mesh", "precision": args.precision,
               "size": size, "cold": args.cold, "construct": construct, "first": first,
-              "second": second, "kernel": kernel,
+              "second": second, "kernel": kernel, "layout": layout_time,
               "same_images": bool(np.array_equal(first_image, second_image)
                                   and np.array_equal(first_image, kernel_image))}
     if args.precision != "float64":

@@ -1014,10 +1014,11 @@ def bench_spheres(mitsuba, size, runs, log):
         accumulate = NumbaAccumulator(scene, size, size, precision)
 
         def run_accumulate(_, accumulate=accumulate):
-            return accumulate((0, 1))
+            accumulate.add((0, 1))
+            return accumulate.sums      # of one sample, the image
         rows.append(["rtfgu numba kernel (slide)", precision, numba.get_num_threads(),
                      run_accumulate, None, [], differ(run_accumulate(None)),
-                     "the render's kernel alone: one NumbaAccumulator call", ""])
+                     "the render's kernel alone: NumbaAccumulator.add", ""])
         flat_p = compile_scene(scene, precision)
 
         def run_kernel(_, flat_p=flat_p):
@@ -1097,25 +1098,25 @@ def bench_render(meshes, subdivisions, size, builds, runs, log) -> list:
 
 def render_table(rows) -> list:
     lines = ["| mesh | triangles | kernels | `Mesh(...)` | first render | `Mesh` + first render "
-             "| second render | kernel alone | second / kernel | first - kernel: layout, build "
-             "| Embree build | (first - kernel) / Embree build | pixels differing from float64 "
-             "| largest difference |",
-             "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "| second render | kernel alone | second / kernel | first - kernel "
+             "| layout and build alone | Embree build | layout and build / Embree build "
+             "| pixels differing from float64 | largest difference |",
+             "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         kernels = "from disk (cold)" if r["cold"] else "compiled before"
         if r.get("failed"):
-            lines.append("| %s | %d | %s | not run: %s |||||||||||" % (
+            lines.append("| %s | %d | %s | not run: %s ||||||||||||" % (
                 r["mesh"], r["triangles"], kernels, " ".join(r["failed"])))
             continue
         embree = r.get("embree_build")
         setup = r["first"] - r["kernel"]
         lines.append("| %s | %d | %s | %.3g s | %.3g s | %.3g s | %.3g s | %.3g s | %.2f | %.3g s | "
-                     "%s | %s | %s | %.2g |" % (
+                     "%.3g s | %s | %s | %s | %.2g |" % (
                          r["mesh"], r["triangles"], kernels, r["construct"], r["first"],
                          r["construct"] + r["first"], r["second"], r["kernel"],
-                         r["second"] / r["kernel"], setup,
+                         r["second"] / r["kernel"], setup, r["layout"],
                          "%.3g s" % embree if embree else "-",
-                         "%.2f" % (setup / embree) if embree else "-",
+                         "%.2f" % (r["layout"] / embree) if embree else "-",
                          fmt_share(r["differing"]), r["largest"]))
     return lines
 
@@ -1394,12 +1395,15 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
         "Matte, a point light, a pinhole camera; float32, %dx%d, 1 sample per pixel, numba on "
         "%d threads), in a Python process of its own: `Mesh(...)` from the arrays, the first "
         "`rtfgu.render` (the layout, the BVH build and the wide tree, the trace), the second "
-        "(median of %d; nothing is built again), and the kernel alone (one NumbaAccumulator "
-        "call, median of %d). Kernels \"compiled before\": a render of another mesh ran first "
-        "in the process; \"from disk (cold)\": the first render also loads numba's compiled "
-        "kernels from its cache. Embree build: this run's (the table above). The difference "
-        "columns compare the first image with numba float64's." % (
-            sphere_size, sphere_size, threads, runs, runs),
+        "(median of %d, each image dropped before the next; nothing is built again), the "
+        "kernel alone (NumbaAccumulator.add, median of %d), and the first render's layout and "
+        "build alone (compile_scene and the kernel's arguments, the wide tree's collapse "
+        "included, of a new scene of a new Mesh of the same arrays, median of %d; first - "
+        "kernel also holds the first image's new memory). Kernels \"compiled before\": a "
+        "render of another mesh ran first in the process; \"from disk (cold)\": the first "
+        "render also loads numba's compiled kernels from its cache. Embree build: this run's "
+        "(the table above). The difference columns compare the first image with numba "
+        "float64's." % (sphere_size, sphere_size, threads, runs, runs, runs),
         "",
         *render_table(render_rows),
         "",

@@ -53,6 +53,7 @@ import numpy as np
 from .cameras import FishEye, OrthographicCamera, PinholeCamera, Spherical, StereoCamera, ThinLens
 from .float3 import Float3
 from .ray import RAY_EPSILON
+from .same_arrays import same_arrays
 from .registry import (INSTANCED, LIGHTS, MAPPING_IDS, ROW_SHAPES, SHADER_BY_ID, SHAPE_IDS, SHAPES, TEXTURES, light_kind_of,
                        shape_kind_of, texture_kind_of)
 from .shapes.mesh import Mesh
@@ -564,7 +565,9 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
             mesh_faces.append((i, shape))
             places = np.empty(shape.num_triangles, dtype=np.int32)
             for face, m, faces in shape.surfaces():
-                places[faces] = material_row("%s.faces[%d]" % (where, face), m, shape.color(face))
+                # One group of all the faces (one look) is a fill, not a scatter of m places.
+                places[faces if len(faces) < len(places) else slice(None)] = material_row(
+                    "%s.faces[%d]" % (where, face), m, shape.color(face))
             material_of_shape.append(places)
             features.add(MESH_KIND.name)
             i += shape.num_triangles
@@ -747,8 +750,7 @@ def _cached(scene, name, inputs: tuple, make):
     except TypeError:       # a scene object that cannot be weakly referenced: no cache
         store = {}
     entry = store.get(name)
-    if entry is not None and len(entry[0]) == len(inputs) and all(
-            a.dtype == b.dtype and np.array_equal(a, b) for a, b in zip(entry[0], inputs)):
+    if entry is not None and len(entry[0]) == len(inputs) and same_arrays(zip(entry[0], inputs)):
         return entry[1], True
     value = make()
     store[name] = (tuple(np.array(a, copy=True) for a in inputs), value)

@@ -204,6 +204,7 @@ def _both_renders(scene, width, height, sampler=None):
     """The float32 kernel's sums and ray counts with the pinhole's primary rays in packets and
     without (the same arguments, only ``packets`` changed)."""
     from rtfgu.kernels import hit_phases, kernel_arguments, render_kernel
+    from rtfgu.kernels.render import COUNTS
     from rtfgu.layout import compile_sampler, compile_scene
 
     flat = compile_scene(scene, "float32")
@@ -213,8 +214,10 @@ def _both_renders(scene, width, height, sampler=None):
     for packets in (None, 1):
         run = list(args)
         run[7] = args[7][:2] + (packets, hit_phases(args[7][0], packets))
-        sums = np.full((height, width, 3), np.nan, dtype=np.float32)
-        counts = np.zeros((tiles, 3), dtype=np.int64)
+        # The sums NumbaAccumulator gives the kernel: float64 for one sample (the same values).
+        one_sample = sampler is None or sampler.num_samples == 1
+        sums = np.full((height, width, 3), np.nan, dtype=np.float64 if one_sample else np.float32)
+        counts = np.zeros((tiles, COUNTS), dtype=np.int64)
         render_kernel(*run, sums, counts)
         out[packets] = (sums, counts.sum(axis=0))
     return args[7][2], out[None], out[1]

@@ -23,7 +23,7 @@ from ..tracers.whitted import MAX_DEPTH
 from .culling import cone_table
 from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
-from .render import (PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, mesh_arrays, not_finite,
+from .render import (COUNTS, NOT_FINITE, PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, mesh_arrays,
                      render_kernel, scene_tuple, shape_arrays)
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
@@ -143,16 +143,17 @@ class NumbaAccumulator:
         self.size = (width, height)
         self.formula = formula
         self.seed = seed
-        # Not zeroed: the kernel writes the sums of a range that starts at sample 0.
-        self.sums = np.empty((height, width, 3), dtype=self.flat.dtype)
+        # Not zeroed: the kernel writes the sums of a range that starts at sample 0. Of a
+        # render of one sample, the sum is the sample: float32 values stored in float64 sums
+        # are the same values, and those sums are then the image itself (no second array).
+        one_sample = sampler is None or sampler.num_samples == 1
+        self.sums = np.empty((height, width, 3), dtype=np.float64 if one_sample else self.flat.dtype)
         self.started = False
         self.counts = np.zeros(3, dtype=np.int64)
 
-    def __call__(self, samples, progress=None, last=False) -> np.ndarray:
-        """The float64 image so far, refused (check_finite_image) where not finite. With
-        ``last`` (no pass follows), float64 sums become the image, divided in place (of one
-        sample, only checked: v / 1 is v): a render then holds one image-sized array, not two,
-        and the accumulator none (a call after it is refused)."""
+    def add(self, samples) -> np.ndarray:
+        """The kernel alone: adds the samples samples[0] <= s < samples[1] of every pixel to
+        the sums (written over from sample 0) and returns its counts (tiles, COUNTS)."""
         if self.sums is None:
             raise ValueError("NumbaAccumulator: its last pass has given its sums away as the image")
         if samples[0] > 0 and not self.started:
@@ -161,9 +162,19 @@ class NumbaAccumulator:
         width, height = self.size
         args, tiles = kernel_arguments(self.flat, width, height, self.formula, self.sampler,
                                        self.seed, samples)
-        counts = np.zeros((tiles, 3), dtype=np.int64)
+        counts = np.zeros((tiles, COUNTS), dtype=np.int64)
         render_kernel(*args, self.sums, counts)
-        self.counts += counts.sum(axis=0)
+        self.counts += counts[:, :NOT_FINITE].sum(axis=0)
+        return counts
+
+    def __call__(self, samples, progress=None, last=False) -> np.ndarray:
+        """The float64 image so far (``add``, then the mean), refused (check_finite_image)
+        where not finite. With ``last`` (no pass follows), float64 sums become the image,
+        divided in place (of one sample, only checked, by the kernel's count: v / 1 is v): a
+        render then holds one image-sized array, not two, and the accumulator none (a call
+        after it is refused)."""
+        counts = self.add(samples)
+        height = self.size[1]
         if progress is not None:
             progress(height, height)
         sums = self.sums
@@ -172,9 +183,9 @@ class NumbaAccumulator:
         else:
             image = np.empty(sums.shape)
         if image is sums and samples[1] == 1:
-            bad = not_finite(image)   # the sum of one sample is its mean
+            bad = counts[:, NOT_FINITE].sum()   # the sum of one sample is its mean
         else:
-            bad = mean_image(sums, self.flat.dtype(samples[1]), image)
+            bad = mean_image(sums, sums.dtype.type(samples[1]), image)
         if bad:
             check_finite_image(image, "numba")
         return image

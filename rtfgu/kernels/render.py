@@ -64,10 +64,14 @@ TILE = 16
 
 packet_rays = on_the_stack(3 * PACKET, "A packet's origins or directions, three values a ray.")
 
-# counts columns: rays cast per tile, by kind.
+# counts columns: rays cast per tile, by kind; then the values of the tile's sums that are
+# not finite after the range's last sample (a render of one sample refuses its image by it,
+# with no pass over the image of its own).
 PRIMARY = 0
 SHADOW = 1
 SECONDARY = 2
+NOT_FINITE = 3
+COUNTS = 4
 
 # A row of record_bounce: [origin (3), direction (3), t, scene index, kind, shader,
 # normal (3), colour added (3)].
@@ -526,7 +530,8 @@ def render_tile(view, world, eye_rows, settings, cast, path, packets, buffers, o
     camera, sampler), ``tile`` = (x0, x1, y0, y1, width, height)) of the scene ``world`` =
     (shapes, lights, scene) to the image (the lecture's render loop,
     rtfgu.renderer.render_reference), each traced by the ray-cast ``trace`` (``cast``) or
-    by PathTrace (``path``): (primary, shadow, secondary) rays cast. ``eye_rows`` is (terms,
+    by PathTrace (``path``): (primary, shadow, secondary) rays cast, and how many values of
+    the tile's sums are not finite after sample end - 1. ``eye_rows`` is (terms,
     candidates, n_candidates): ``candidates[:n_candidates]`` are the from-eye kind's rows
     the tile's primary rays can hit, with their per-frame ``terms`` (None and -1 without a
     pinhole eye). ``buffers`` = (stack, image): the tile's rays waiting (trace), None where
@@ -561,6 +566,7 @@ def render_tile(view, world, eye_rows, settings, cast, path, packets, buffers, o
     show_ray_direction, seed, first, end, formula = settings[1], settings[3], settings[4], settings[5], settings[2]
     n_shadow = 0
     n_secondary = 0
+    n_not_finite = 0
     one = lit(1, camera_row[0])
     rays = tile_rays(one)
     ts = tile_values(one)
@@ -613,8 +619,11 @@ def render_tile(view, world, eye_rows, settings, cast, path, packets, buffers, o
                     out[0] += color[0]
                     out[1] += color[1]
                     out[2] += color[2]
+                if s == end - 1:
+                    n_not_finite += (not math.isfinite(out[0])) + (not math.isfinite(out[1])) \
+                        + (not math.isfinite(out[2]))
                 c += 1
-    return (x1 - x0) * (y1 - y0) * (end - first), n_shadow, n_secondary
+    return (x1 - x0) * (y1 - y0) * (end - first), n_shadow, n_secondary, n_not_finite
 
 
 @njit(parallel=True, cache=True, error_model="numpy")
@@ -622,7 +631,7 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
                   image, counts):
     """Add the samples settings[4] <= s < settings[5] of every pixel to ``image`` (height,
     width, 3), row 0 at the top (samples from 0 are written over what it held), and fill
-    ``counts`` (tiles, 3); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
+    ``counts`` (tiles, COUNTS); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
     holds its per-frame terms and culling cones, so each tile tests only the rows its
     primary rays can hit; otherwise it is None."""
     width, height = size
@@ -640,13 +649,14 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         y0 = (tile // tiles_x) * TILE
         box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
         n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
-        n_primary, n_shadow, n_secondary = render_tile((box + size, camera, sampler), (shapes, lights, scene),
-                                                       (terms, candidates[tile], n_candidates), settings, cast,
-                                                       path, packets, (tile_stack(cast, tile), image), phases[0],
-                                                       phases[1], phases[2], phases[3])
+        n_primary, n_shadow, n_secondary, n_not_finite = render_tile(
+            (box + size, camera, sampler), (shapes, lights, scene), (terms, candidates[tile], n_candidates),
+            settings, cast, path, packets, (tile_stack(cast, tile), image), phases[0], phases[1], phases[2],
+            phases[3])
         counts[tile, PRIMARY] = n_primary
         counts[tile, SHADOW] = n_shadow
         counts[tile, SECONDARY] = n_secondary
+        counts[tile, NOT_FINITE] = n_not_finite
 
 
 @njit(parallel=True, cache=True)
@@ -661,19 +671,5 @@ def mean_image(sums, n, out) -> int:
                 value = sums[y, x, c] / n
                 out[y, x, c] = value
                 if not math.isfinite(value):
-                    bad += 1
-    return bad
-
-
-@njit(parallel=True, cache=True)
-def not_finite(image) -> int:
-    """How many of ``image``'s values are not finite, all cores, reading it once: mean_image's
-    count where the mean is the sums themselves (one sample, float64: v / 1 is v, bit for
-    bit, NaN and -0 included), so the image is not written again."""
-    bad = 0
-    for y in prange(image.shape[0]):
-        for x in range(image.shape[1]):
-            for c in range(image.shape[2]):
-                if not math.isfinite(image[y, x, c]):
                     bad += 1
     return bad

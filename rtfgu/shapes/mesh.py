@@ -45,6 +45,7 @@ except ImportError:
 from ..float3 import Float3, normalize
 from ..materials.material import Material
 from ..ray import Ray
+from ..same_arrays import same_arrays
 from .shape import Shape
 from .triangle import Triangle
 
@@ -124,7 +125,7 @@ class Mesh:
         array. numpy groups the faces: no Python per face but the materials' ids. The groups
         are kept until ``materials`` is another tuple or ``colors`` changes."""
         if self._surfaces is not None and self._surfaces[0] is self.materials \
-                and np.array_equal(self._surfaces[1], self.colors) \
+                and same_arrays([(self._surfaces[1], self.colors)]) \
                 and all(isinstance(m.cd, Float3) == own for m, own in self._surfaces[3]):
             return self._surfaces[2]
         m = len(self.faces)
