@@ -14,7 +14,8 @@ from numba import njit, prange
 
 from rtfgu.kernels.float3 import lit, lit_per_precision
 from rtfgu.kernels.mesh import WIDEN32, WIDEN64, _inverse, mesh_closest
-from rtfgu.kernels.packet import OX, PACKET, REACH, RAY_ROWS, box_rays, mesh_closest_packet, _rays_of
+from rtfgu.kernels.packet import (OX, PACKET, REACH, RAY_ROWS, box_frustum, box_rays, frustum_of_packet,
+                                  mesh_closest_packet, _frustum_of, _rays_of)
 from rtfgu.kernels.wide_bvh import box8, lanes_of
 
 from test_wide_bvh import PRECISIONS, hard_rays, looped, rays_from_inside, soup, traversal_mesh, tree_of
@@ -65,6 +66,90 @@ def test_box_rays_is_box8_ray_by_ray(dtype):
                 mismatches.append((trial, j, masks[j], expected, nears[j, 0], nearest))
     assert entered > 100                      # the rays do enter boxes
     assert not mismatches, mismatches[:3]
+
+
+@njit(error_model="numpy")
+def _frustum_and_rays(nodes, n, origins, directions, count, masks):
+    """box_rays' mask of each of node n's columns for the packet (reach infinite), and
+    box_frustum's mask; -1 where the packet has no frustum."""
+    tmin = lit(0, origins[0, 0])
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    rays = _rays_of(tmin)
+    for i in range(count):
+        inv = _inverse((directions[i, 0], directions[i, 1], directions[i, 2]))[0]
+        for a in range(3):
+            rays[(OX + a) * PACKET + i] = origins[i, a]
+            rays[(OX + 3 + a) * PACKET + i] = inv[a]
+        rays[REACH * PACKET + i] = lit(math.inf, tmin)
+    live = (np.int64(1) << count) - 1
+    for j in range(8):
+        masks[j] = box_rays(nodes, n, j, rays, live, tmin, widen)[0]
+    frustum = _frustum_of(tmin)
+    if not frustum_of_packet(rays, count, frustum):
+        return -1
+    return box_frustum(nodes, n, frustum, tmin, widen)
+
+
+def grazing_packet(nodes, rng, dtype):
+    """(node, origins, directions) of a packet aimed at points on the boundary of one of the
+    node's child boxes (coordinates snapped to its planes), from one eye or from origins
+    spread around it, some on the box's planes themselves."""
+    while True:
+        n = int(rng.integers(0, len(nodes)))
+        j = int(rng.integers(0, 8))
+        lo, hi = nodes[n, 0:3, j].astype(np.float64), nodes[n, 3:6, j].astype(np.float64)
+        if np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(lo <= hi):
+            break
+    count = int(rng.integers(1, PACKET + 1))
+    targets = rng.uniform(lo, hi, (count, 3))
+    for i in range(count):
+        for a in rng.choice(3, int(rng.integers(1, 3)), replace=False):
+            targets[i, a] = (lo if rng.random() < 0.5 else hi)[a]
+    size = np.maximum(hi - lo, 1e-3)
+    eye = np.where(rng.random(3) < 0.5, lo - size * rng.uniform(0.5, 3.0, 3), hi + size * rng.uniform(0.5, 3.0, 3))
+    origins = np.tile(eye, (count, 1))
+    if rng.random() < 0.5:
+        origins += rng.normal(0.0, 0.05, (count, 3)) * size
+    if rng.random() < 0.3:
+        a = int(rng.integers(0, 3))
+        origins[:, a] = (lo if rng.random() < 0.5 else hi)[a]      # on a plane of the box
+    return n, origins.astype(dtype), (targets - origins).astype(dtype)
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_the_frustum_enters_every_box_a_ray_of_its_packet_enters(dtype):
+    # box_frustum culls a column only where box_rays, ray by ray, enters it with none: on
+    # packets aimed at a box's faces, edges and corners (the rounding of the bounds decides),
+    # and on a camera's tiles against every node of the tree.
+    vertices, faces = traversal_mesh("icosphere")
+    _, wide, _ = tree_of(vertices, faces)
+    nodes = wide.nodes
+    rng = np.random.default_rng(11)
+    masks = np.empty(8, dtype=np.int64)
+    missed, with_frustum, culled, entered = [], 0, 0, 0
+
+    def check(n, origins, directions, count):
+        nonlocal with_frustum, culled, entered
+        frustum = _frustum_and_rays(nodes, n, origins, directions, count, masks)
+        if frustum < 0:
+            return
+        with_frustum += 1
+        for j in range(8):
+            entered += masks[j] != 0
+            culled += masks[j] == 0 and not frustum >> j & 1
+            if masks[j] != 0 and not frustum >> j & 1:
+                missed.append((n, j, masks[j], origins[:count].tolist(), directions[:count].tolist()))
+
+    for _ in range(3000):
+        n, origins, directions = grazing_packet(nodes, rng, dtype)
+        check(n, origins, directions, len(origins))
+    origins, directions = camera_tiles(vertices, 32)
+    origins, directions = origins.astype(dtype), directions.astype(dtype)
+    for first in range(0, len(origins), PACKET):
+        for n in range(len(nodes)):
+            check(n, origins[first:first + PACKET], directions[first:first + PACKET], PACKET)
+    assert with_frustum > 2000 and entered > 2000 and culled > 2000     # it culls, and is checked
+    assert not missed, missed[:2]
 
 
 @njit(parallel=True, error_model="numpy")

@@ -14,15 +14,27 @@ t (times the slab's widening, as mesh_closest drops a box), and:
 
 - with at most SINGLE rays left, each finishes the subtree alone (mesh_closest from the
   entry's code, its nearest hit so far as its bound);
-- at an inner node, box_rays tests each child's box against the rays: a child is pushed with
-  the mask of the rays that enter it and their nearest entry, the children sorted by it, the
-  nearest on top;
+- at an inner node, box_frustum first tests the eight child boxes at once against the
+  packet's frustum, and box_rays tests each child's box the frustum enters against the rays:
+  a child is pushed with the mask of the rays that enter it and their nearest entry, the
+  children sorted by it, the nearest on top;
 - at a leaf, each ray tests its primitives (_leaf_closest).
 
 A ray tests a box only where it entered its parent's box within its own nearest hit so far,
 with the very operations of box8 (so it enters the same boxes), and a primitive only where it
 entered its box: it finds the face, t and tie of mesh_closest alone (tests/test_packet.py
 compares every ray).
+
+The frustum (Embree's hybrid traversal culls a node's children with one for a packet of one
+octant, Wald et al. 2014 section 4.3; Reshetov, Soupikov and Hurley 2005): where every ray of
+the packet has, on each axis, a finite 1 / direction of one sign, the packet's rays lie in
+the intervals [omin, omax] of origins and [imin, imax] of inverses. A ray's near t of a box
+is fl(fl(plane - o) * inv), and rounding is monotone, so the same operations on the ends of
+the intervals (the smaller difference times each end of [imin, imax], the smaller product
+kept) bound every ray's near t from below, and its far t from above: a box the frustum does
+not enter, no ray of the packet enters, bit for bit (test_packet.py checks it against
+box_rays). Primary rays of a tile (one origin) make a narrow frustum: most of a node's
+children are then culled by one vector test instead of a box_rays each.
 """
 from __future__ import annotations
 
@@ -38,10 +50,13 @@ from numba.extending import intrinsic
 from ..accelerators.wide_bvh import CODE_ROW, ROWS, WIDTH
 from . import wide_bvh
 from .float3 import lit, lit_per_precision
-from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, mesh_closest, ray_frame
+from ..layout import INSTANCE_ROW, MESH, SPHERE_ROW
+from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, intersect_face, mesh_closest, ray_frame
 
 # Rays of a packet: its masks are bits of an int64, its lanes one vector.
 PACKET = 16
+# box_frustum's mask where a packet has no frustum: every column.
+ALL_COLUMNS = (1 << WIDTH) - 1
 # An entry left with at most this many rays is finished by each ray alone (docs/bvh.md,
 # "Packets": measured with benchmarks/meshes.py).
 SINGLE = 2
@@ -50,9 +65,22 @@ SINGLE = 2
 OX, OY, OZ, IX, IY, IZ, REACH = range(7)
 RAY_ROWS = 7
 
+# The packet's frustum as box_frustum reads it, per axis a at FRUSTUM_AXIS * a: whether its
+# inverses are negative (1) or positive (0), the origin bound for the near plane and for the
+# far plane, and the smallest and largest inverse.
+NEGATIVE, O_NEAR, O_FAR, I_MIN, I_MAX = range(5)
+FRUSTUM_AXIS = 5
+
+# The rays' frames (rtfgu.kernels.mesh.ray_frame) a lane a ray, as face_rays reads them:
+# PACKET lanes of each of these rows.
+SX, SY, SZ, OKX, OKY, OKZ = range(6)
+FRAME_ROWS = 6
+
 _rays_of = wide_bvh.on_the_stack(RAY_ROWS * PACKET, "A packet's rays, RAY_ROWS rows of PACKET lanes.")
 _per_ray = wide_bvh.on_the_stack(3 * PACKET, "Three values per ray of a packet.")
 lanes_of = wide_bvh.on_the_stack(PACKET, "A value per ray of a packet.")
+_frustum_of = wide_bvh.on_the_stack(3 * FRUSTUM_AXIS, "A packet's frustum, FRUSTUM_AXIS values an axis.")
+_frames_of = wide_bvh.on_the_stack(FRAME_ROWS * PACKET, "A packet's ray frames, FRAME_ROWS rows of PACKET lanes.")
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -162,6 +190,160 @@ def rays_within(typingctx, rays, mask, near):
     return types.UniTuple(types.int64, 2)(rays, mask, near), codegen
 
 
+@intrinsic
+def box_frustum(typingctx, nodes, n, frustum, tmin, widen):
+    """The bit mask of node ``n``'s WIDTH child boxes (nodes (N, ROWS, WIDTH) float32) that
+    the packet's frustum enters at or beyond ``tmin`` (``frustum``: a pointer to 3 x
+    FRUSTUM_AXIS values of tmin's type, frustum_of_packet's): box8's slab test with, on each
+    axis, the near plane's t the smaller of (plane - o_near) * imin and (plane - o_near) *
+    imax, the far plane's the larger of (plane - o_far) * imin and ... * imax, times
+    ``widen``. A superset of the boxes any ray of the packet enters (the module docstring)."""
+    if not (isinstance(nodes, types.Array) and nodes.ndim == 3 and nodes.dtype == types.float32):
+        return None
+    if not isinstance(tmin, types.Float) or not isinstance(frustum, types.CPointer):
+        return None
+    real = tmin
+
+    def codegen(context, builder, signature, args):
+        nodes_v, n_v, frustum_v, tmin_v, widen_v = args
+        nodes_t, n_t, _, tmin_t, widen_t = signature.args
+        ft = context.get_value_type(real)
+        vt = ir.VectorType(ft, WIDTH)
+        vf32 = ir.VectorType(ir.FloatType(), WIDTH)
+        i64 = ir.IntType(64)
+        i32 = ir.IntType(32)
+        array = context.make_array(nodes_t)(context, builder, nodes_v)
+        n64 = context.cast(builder, n_v, n_t, types.int64)
+        base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, ROWS * WIDTH))])
+
+        def splat(x):
+            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
+            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
+                                          ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+
+        def value(a, field):
+            return builder.load(builder.gep(frustum_v, [ir.Constant(i64, a * FRUSTUM_AXIS + field)]))
+
+        def row(index):
+            p = builder.gep(base, [builder.mul(index, ir.Constant(i64, WIDTH))])
+            v = builder.load(builder.bitcast(p, vf32.as_pointer()), align=4)
+            return v if real.bitwidth == 32 else builder.fpext(v, vt)
+
+        def smaller(x, y):
+            return builder.select(builder.fcmp_ordered("<", y, x), y, x)
+
+        def larger(x, y):
+            return builder.select(builder.fcmp_ordered(">", y, x), y, x)
+
+        t0 = splat(context.cast(builder, tmin_v, tmin_t, real))
+        t1 = ir.Constant(vt, [math.inf] * WIDTH)
+        w = splat(context.cast(builder, widen_v, widen_t, real))
+        for a in range(3):
+            negative = builder.fcmp_ordered(">", value(a, NEGATIVE), ir.Constant(ft, 0.0))
+            near_row = builder.select(negative, ir.Constant(i64, 3 + a), ir.Constant(i64, a))
+            far_row = builder.select(negative, ir.Constant(i64, a), ir.Constant(i64, 3 + a))
+            i_min, i_max = splat(value(a, I_MIN)), splat(value(a, I_MAX))
+            d = builder.fsub(row(near_row), splat(value(a, O_NEAR)))
+            near = smaller(builder.fmul(d, i_min), builder.fmul(d, i_max))
+            e = builder.fsub(row(far_row), splat(value(a, O_FAR)))
+            far = builder.fmul(larger(builder.fmul(e, i_min), builder.fmul(e, i_max)), w)
+            t0 = builder.select(builder.fcmp_ordered(">", near, t0), near, t0)
+            t1 = builder.select(builder.fcmp_ordered("<", far, t1), far, t1)
+        entered = builder.xor(builder.fcmp_ordered(">", t0, t1), ir.Constant(ir.VectorType(ir.IntType(1), WIDTH),
+                                                                              [1] * WIDTH))
+        return builder.zext(builder.bitcast(entered, ir.IntType(WIDTH)), i64)
+    return types.int64(nodes, n, frustum, tmin, widen), codegen
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def frustum_of_packet(rays, count, frustum):
+    """Fill ``frustum`` (box_frustum's) from the rays 0 <= i < count of ``rays`` (box_rays'
+    rows); False where a packet has none: on some axis an inverse that is not finite (a
+    direction's zero component) or inverses of both signs."""
+    for a in range(3):
+        o_min = o_max = rays[(OX + a) * PACKET]
+        i_min = i_max = rays[(IX + a) * PACKET]
+        for i in range(1, count):
+            o = rays[(OX + a) * PACKET + i]
+            v = rays[(IX + a) * PACKET + i]
+            o_min = min(o_min, o)
+            o_max = max(o_max, o)
+            i_min = min(i_min, v)
+            i_max = max(i_max, v)
+        if not (math.isfinite(i_min) and math.isfinite(i_max) and (i_min > 0 or i_max < 0)):
+            return False
+        negative = i_max < 0
+        frustum[a * FRUSTUM_AXIS + NEGATIVE] = 1 if negative else 0
+        # inv > 0: near = (lo - o) * inv grows with lo - o, smallest at o_max; far at o_min.
+        # inv < 0: near = (hi - o) * inv shrinks as hi - o grows, smallest at o_min.
+        frustum[a * FRUSTUM_AXIS + O_NEAR] = o_min if negative else o_max
+        frustum[a * FRUSTUM_AXIS + O_FAR] = o_max if negative else o_min
+        frustum[a * FRUSTUM_AXIS + I_MIN] = i_min
+        frustum[a * FRUSTUM_AXIS + I_MAX] = i_max
+    return True
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _frame(axes, frames, i):
+    """Ray i's frame (ray_frame) from the packet's rows."""
+    return ((axes[3 * i], axes[3 * i + 1], axes[3 * i + 2],
+             frames[SX * PACKET + i], frames[SY * PACKET + i], frames[SZ * PACKET + i]),
+            (frames[OKX * PACKET + i], frames[OKY * PACKET + i], frames[OKZ * PACKET + i]))
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def face_rays(vertices, faces, f, axes, frames, count, live, tmin, hits, rays, widen):
+    """Face ``f`` (a mesh's) against the rays of ``live`` (a bit a ray, 0 <= r < count)
+    that all have the frame axes ``axes`` = (kx, ky, kz): rtfgu.kernels.mesh.intersect_face
+    lane by lane, the same operations in the same order, and each ray's nearest hit (``hits``
+    = (t, best, kind, row)) and reach kept by mesh_closest's tie rule. The loop over the rays
+    has no branch, so LLVM's loop vectoriser tests several rays an instruction. Returns the
+    bits of the rays whose edge function rounded to zero: the scalar test, which recomputes
+    it in double, decides those."""
+    kx, ky, kz = axes
+    t_best, best, kind, row = hits
+    zero = lit(0, tmin)
+    i0, i1, i2 = faces[f, 0], faces[f, 1], faces[f, 2]
+    idx = faces[f, 3]
+    a_x, a_y, a_z = vertices[i0, kx], vertices[i0, ky], vertices[i0, kz]
+    b_x, b_y, b_z = vertices[i1, kx], vertices[i1, ky], vertices[i1, kz]
+    c_x, c_y, c_z = vertices[i2, kx], vertices[i2, ky], vertices[i2, kz]
+    redo = 0
+    for r in range(count):
+        Sx, Sy, Sz = frames[SX * PACKET + r], frames[SY * PACKET + r], frames[SZ * PACKET + r]
+        okx, oky, okz = frames[OKX * PACKET + r], frames[OKY * PACKET + r], frames[OKZ * PACKET + r]
+        Az = a_z - okz
+        Bz = b_z - okz
+        Cz = c_z - okz
+        ax = (a_x - okx) - Sx * Az
+        ay = (a_y - oky) - Sy * Az
+        bx = (b_x - okx) - Sx * Bz
+        by = (b_y - oky) - Sy * Bz
+        cx = (c_x - okx) - Sx * Cz
+        cy = (c_y - oky) - Sy * Cz
+        U = cx * by - cy * bx
+        V = ax * cy - ay * cx
+        W = bx * ay - by * ax
+        flat = (U == zero) | (V == zero) | (W == zero)
+        outside = ((U < zero) | (V < zero) | (W < zero)) & ((U > zero) | (V > zero) | (W > zero))
+        det = U + V + W
+        T = U * (Sz * Az) + V * (Sz * Bz) + W * (Sz * Cz)
+        t = T / det
+        tmax = t_best[r]
+        on = ((live >> r) & 1) == 1
+        # intersect_face's t in [tmin, limit) and mesh_closest's keep, as one rule: t < tmax,
+        # or t == tmax for a face earlier in Scene.shapes.
+        keep = on & (flat ^ True) & (outside ^ True) & (det != zero) & (t >= tmin) \
+            & ((t < tmax) | ((t == tmax) & (idx < best[r])))
+        t_best[r] = t if keep else tmax
+        best[r] = idx if keep else best[r]
+        kind[r] = MESH if keep else kind[r]
+        row[r] = f if keep else row[r]
+        rays[REACH * PACKET + r] = t * widen if keep else rays[REACH * PACKET + r]
+        redo |= (1 << r) if on & flat else 0
+    return redo
+
+
 @njit(**NO_REFCOUNT)
 def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, formula, root=0,
                         instances=(None, None, None)):
@@ -179,8 +361,7 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
     inf = lit(math.inf, tmin)
     rays = _rays_of(tmin)
     axes = _per_ray(np.int64)
-    shear = _per_ray(tmin)
-    o_k = _per_ray(tmin)
+    frames = _frames_of(tmin)
     for i in range(count):
         origin = (origins[3 * i], origins[3 * i + 1], origins[3 * i + 2])
         direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
@@ -191,8 +372,17 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
             rays[(IX + a) * PACKET + i] = inv[a]
         rays[REACH * PACKET + i] = t[i] * widen
         axes[3 * i], axes[3 * i + 1], axes[3 * i + 2] = kx, ky, kz
-        shear[3 * i], shear[3 * i + 1], shear[3 * i + 2] = sx, sy, sz
-        o_k[3 * i], o_k[3 * i + 1], o_k[3 * i + 2] = ox, oy, oz
+        frames[SX * PACKET + i], frames[SY * PACKET + i], frames[SZ * PACKET + i] = sx, sy, sz
+        frames[OKX * PACKET + i], frames[OKY * PACKET + i], frames[OKZ * PACKET + i] = ox, oy, oz
+    frustum = _frustum_of(tmin)
+    cull = frustum_of_packet(rays, count, frustum)
+    # Whether every ray has the first one's frame axes: its leaves' faces then go against
+    # all the rays at once (face_rays).
+    shared = True
+    for i in range(1, count):
+        for a in range(3):
+            shared = shared and axes[3 * i + a] == axes[a]
+    kxyz = (axes[0], axes[1], axes[2])
     codes = wide_bvh.stack_of(np.int32)
     masks = wide_bvh.stack_of(np.int64)
     nears = wide_bvh.stack_of(tmin)
@@ -207,6 +397,22 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
         live, n_live = rays_within(rays, masks[sp], near)
         if n_live == 0:
             continue
+        if code < 0 and shared and n_live > SINGLE:
+            start, size = wide_bvh.leaf_span(code)
+            for f in range(start, start + size):
+                mesh_face = faces[f, 0] != SPHERE_ROW and faces[f, 0] != INSTANCE_ROW
+                each = live if not mesh_face else face_rays(vertices, faces, f, kxyz, frames, count, live, tmin,
+                                                            hits, rays, widen)
+                while each != 0:    # a sphere or an instance, or a face whose edge rounded to zero
+                    i = trailing_zeros(each)
+                    each &= each - 1
+                    origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
+                    direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
+                    hit = _leaf_closest(vertices, faces, spheres, instances, f, 1, _frame(axes, frames, i), origin,
+                                        direction, tmin, (t[i], best[i], kind[i], row[i]), formula)
+                    t[i], best[i], kind[i], row[i] = hit
+                    rays[REACH * PACKET + i] = hit[0] * widen
+            continue
         if n_live <= SINGLE or code < 0:
             while live != 0:
                 i = trailing_zeros(live)
@@ -218,19 +424,20 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
                                        (t[i], best[i], kind[i], row[i]), formula, code, instances)
                 else:
                     start, size = wide_bvh.leaf_span(code)
-                    frame = ((axes[3 * i], axes[3 * i + 1], axes[3 * i + 2],
-                              shear[3 * i], shear[3 * i + 1], shear[3 * i + 2]),
-                             (o_k[3 * i], o_k[3 * i + 1], o_k[3 * i + 2]))
-                    hit = _leaf_closest(vertices, faces, spheres, instances, start, size, frame, origin, direction,
+                    hit = _leaf_closest(vertices, faces, spheres, instances, start, size, _frame(axes, frames, i),
+                                        origin, direction,
                                         tmin, (t[i], best[i], kind[i], row[i]), formula)
                 t[i], best[i], kind[i], row[i] = hit
                 rays[REACH * PACKET + i] = hit[0] * widen
             continue
         base = sp
+        candidates = box_frustum(nodes, code, frustum, tmin, widen) if cull else ALL_COLUMNS
         for j in range(WIDTH):
             child = links[code, CODE_ROW, j]
             if child == 0:      # an empty column: the columns after it are empty too
                 break
+            if not candidates >> j & 1:
+                continue
             entered, tj = box_rays(nodes, code, j, rays, live, tmin, widen)
             if entered != 0:
                 k = sp
