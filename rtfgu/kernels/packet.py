@@ -18,15 +18,21 @@ t (times the slab's widening, as mesh_closest drops a box), and:
   packet's frustum, and box_rays tests each child's box the frustum enters against the rays:
   a child is pushed with the mask of the rays that enter it and their nearest entry, the
   children sorted by it, the nearest on top;
-- at a leaf, each ray tests its primitives (_leaf_closest).
+- at a leaf, where every ray of the packet has the same frame axes (ray_frame's kx, ky, kz:
+  the rays of a tile nearly always), each face is tested against all the entry's rays at
+  once (face_rays, intersect_face lane by lane); a sphere, an instance, and a ray whose edge
+  function rounds to zero are tested ray by ray (_leaf_closest); without a shared frame,
+  each ray tests the leaf's primitives alone.
 
 A ray tests a box only where it entered its parent's box within its own nearest hit so far,
 with the very operations of box8 (so it enters the same boxes), and a primitive only where it
 entered its box: it finds the face, t and tie of mesh_closest alone (tests/test_packet.py
 compares every ray).
 
-The frustum (Embree's hybrid traversal culls a node's children with one for a packet of one
-octant, Wald et al. 2014 section 4.3; Reshetov, Soupikov and Hurley 2005): where every ray of
+The frustum (Embree's coherent packets, BVHNIntersectorKHybrid::intersectCoherent in
+kernels/bvh/bvh_intersector_hybrid.cpp, test a node's children against a Frustum of each
+octant of the packet before the rays' own box tests; Reshetov, Soupikov and Hurley 2005,
+"Multi-Level Ray Tracing Algorithm"): where every ray of
 the packet has, on each axis, a finite 1 / direction of one sign, the packet's rays lie in
 the intervals [omin, omax] of origins and [imin, imax] of inverses. A ray's near t of a box
 is fl(fl(plane - o) * inv), and rounding is monotone, so the same operations on the ends of
@@ -58,8 +64,9 @@ PACKET = 16
 # box_frustum's mask where a packet has no frustum: every column.
 ALL_COLUMNS = (1 << WIDTH) - 1
 # An entry left with at most this many rays is finished by each ray alone (docs/bvh.md,
-# "Packets": measured with benchmarks/meshes.py).
-SINGLE = 2
+# "Packets": measured with benchmarks/meshes.py; 1 since the leaves' faces go against the
+# rays at once, face_rays).
+SINGLE = 1
 
 # The packet's rays as box_rays reads them: PACKET lanes of each of these rows.
 OX, OY, OZ, IX, IY, IZ, REACH = range(7)
