@@ -21,18 +21,26 @@ from rtfgu.kernels.wide_bvh import box8, lanes_of
 from test_wide_bvh import PRECISIONS, hard_rays, looped, rays_from_inside, soup, traversal_mesh, tree_of
 
 
-@njit(error_model="numpy")
-def _both(nodes, n, origins, directions, count, reach, masks, nears, single):
-    tmin = lit(0, origins[0, 0])
-    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
-    rays = _rays_of(tmin)
-    entry = lanes_of(tmin)
+@njit(error_model="numpy", inline="always")
+def _fill_rays(rays, origins, directions, count, reach):
+    """The packet's rows as mesh_closest_packet lays them out, ray i's reach reach[i]."""
     for i in range(count):
         inv = _inverse((directions[i, 0], directions[i, 1], directions[i, 2]))[0]
         for a in range(3):
             rays[(OX + a) * PACKET + i] = origins[i, a]
             rays[(OX + 3 + a) * PACKET + i] = inv[a]
         rays[REACH * PACKET + i] = reach[i]
+
+
+@njit(error_model="numpy")
+def _both(nodes, n, origins, directions, count, reach, masks, nears, single):
+    tmin = lit(0, origins[0, 0])
+    widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
+    rays = _rays_of(tmin)
+    entry = lanes_of(tmin)
+    _fill_rays(rays, origins, directions, count, reach)
+    for i in range(count):
+        inv = _inverse((directions[i, 0], directions[i, 1], directions[i, 2]))[0]
         single[i] = box8(nodes, n, (origins[i, 0], origins[i, 1], origins[i, 2]), inv, tmin, reach[i], widen, entry)
         for j in range(8):
             nears[j, 1 + i] = entry[j]
@@ -75,12 +83,7 @@ def _frustum_and_rays(nodes, n, origins, directions, count, masks):
     tmin = lit(0, origins[0, 0])
     widen = lit_per_precision(WIDEN32, WIDEN64, tmin)
     rays = _rays_of(tmin)
-    for i in range(count):
-        inv = _inverse((directions[i, 0], directions[i, 1], directions[i, 2]))[0]
-        for a in range(3):
-            rays[(OX + a) * PACKET + i] = origins[i, a]
-            rays[(OX + 3 + a) * PACKET + i] = inv[a]
-        rays[REACH * PACKET + i] = lit(math.inf, tmin)
+    _fill_rays(rays, origins, directions, count, np.full(count, math.inf, dtype=origins.dtype))
     live = (np.int64(1) << count) - 1
     for j in range(8):
         masks[j] = box_rays(nodes, n, j, rays, live, tmin, widen)[0]

@@ -54,10 +54,10 @@ from numba.cpython.unsafe.numbers import trailing_zeros
 from numba.extending import intrinsic
 
 from ..accelerators.wide_bvh import CODE_ROW, ROWS, WIDTH
+from ..layout import INSTANCE_ROW, MESH, SPHERE_ROW
 from . import wide_bvh
 from .float3 import lit, lit_per_precision
-from ..layout import INSTANCE_ROW, MESH, SPHERE_ROW
-from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, intersect_face, mesh_closest, ray_frame
+from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, mesh_closest, ray_frame
 
 # Rays of a packet: its masks are bits of an int64, its lanes one vector.
 PACKET = 16
@@ -215,26 +215,11 @@ def box_frustum(typingctx, nodes, n, frustum, tmin, widen):
         nodes_v, n_v, frustum_v, tmin_v, widen_v = args
         nodes_t, n_t, _, tmin_t, widen_t = signature.args
         ft = context.get_value_type(real)
-        vt = ir.VectorType(ft, WIDTH)
-        vf32 = ir.VectorType(ir.FloatType(), WIDTH)
         i64 = ir.IntType(64)
-        i32 = ir.IntType(32)
-        array = context.make_array(nodes_t)(context, builder, nodes_v)
-        n64 = context.cast(builder, n_v, n_t, types.int64)
-        base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, ROWS * WIDTH))])
-
-        def splat(x):
-            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
-            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
-                                          ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+        vt, splat, row = wide_bvh.node_lanes(context, builder, nodes_t, nodes_v, n_t, n_v, real)
 
         def value(a, field):
             return builder.load(builder.gep(frustum_v, [ir.Constant(i64, a * FRUSTUM_AXIS + field)]))
-
-        def row(index):
-            p = builder.gep(base, [builder.mul(index, ir.Constant(i64, WIDTH))])
-            v = builder.load(builder.bitcast(p, vf32.as_pointer()), align=4)
-            return v if real.bitwidth == 32 else builder.fpext(v, vt)
 
         def smaller(x, y):
             return builder.select(builder.fcmp_ordered("<", y, x), y, x)

@@ -81,6 +81,30 @@ stack_of = on_the_stack(STACK, "A traversal's stack: STACK elements.")
 lanes_of = on_the_stack(WIDTH, "box8's entry ts: WIDTH elements.")
 
 
+def node_lanes(context, builder, nodes_t, nodes_v, n_t, n_v, real):
+    """For the codegen of a test of node ``n``'s WIDTH columns (nodes (N, ROWS, WIDTH)
+    float32): (vt, splat, row), the vector type of WIDTH values of ``real``, a value of
+    ``real`` splatted across it, and row(index) the node's row ``index`` (an i64 value) as
+    such a vector (float32 widened exactly in a float64 test)."""
+    vt = ir.VectorType(context.get_value_type(real), WIDTH)
+    vf32 = ir.VectorType(ir.FloatType(), WIDTH)
+    i64 = ir.IntType(64)
+    i32 = ir.IntType(32)
+    array = context.make_array(nodes_t)(context, builder, nodes_v)
+    n64 = context.cast(builder, n_v, n_t, types.int64)
+    base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, ROWS * WIDTH))])
+
+    def splat(x):
+        v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
+        return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined), ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+
+    def row(index):
+        p = builder.gep(base, [builder.mul(index, ir.Constant(i64, WIDTH))])
+        v = builder.load(builder.bitcast(p, vf32.as_pointer()), align=4)
+        return v if real.bitwidth == 32 else builder.fpext(v, vt)
+    return vt, splat, row
+
+
 @intrinsic
 def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
     """The slab test of node ``n``'s WIDTH child boxes (nodes (N, ROWS, WIDTH) float32): a bit
@@ -100,25 +124,11 @@ def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
         nodes_v, n_v, origin_v, inv_v, tmin_v, tmax_v, widen_v, entry_v = args
         nodes_t, n_t, origin_t, inv_t, tmin_t, tmax_t, widen_t, _ = signature.args
         ft = context.get_value_type(real)
-        vt = ir.VectorType(ft, WIDTH)
-        vf32 = ir.VectorType(ir.FloatType(), WIDTH)
         i64 = ir.IntType(64)
-        i32 = ir.IntType(32)
-        array = context.make_array(nodes_t)(context, builder, nodes_v)
-        n64 = context.cast(builder, n_v, n_t, types.int64)
-        base = builder.gep(array.data, [builder.mul(n64, ir.Constant(i64, ROWS * WIDTH))])
+        vt, splat, row = node_lanes(context, builder, nodes_t, nodes_v, n_t, n_v, real)
 
         def scalar(value, typ):
             return context.cast(builder, value, typ, real)
-
-        def splat(x):
-            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
-            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined), ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
-
-        def row(index):
-            p = builder.gep(base, [builder.mul(index, ir.Constant(i64, WIDTH))])
-            v = builder.load(builder.bitcast(p, vf32.as_pointer()), align=4)
-            return v if real.bitwidth == 32 else builder.fpext(v, vt)
 
         zero = ir.Constant(ft, 0.0)
         t0 = splat(scalar(tmin_v, tmin_t))
