@@ -111,9 +111,7 @@ def box_rays(typingctx, nodes, n, j, rays, live, tmin, widen):
     (plane - o) * inv, far the same times ``widen``; t0 the largest of tmin and the nears,
     t1 the smallest of the reach and the fars, a NaN narrowing neither; entered where not
     t0 > t1."""
-    if not (isinstance(nodes, types.Array) and nodes.ndim == 3 and nodes.dtype == types.float32):
-        return None
-    if not isinstance(tmin, types.Float) or not isinstance(rays, types.CPointer):
+    if not wide_bvh.typed_for_nodes(nodes, tmin, rays):
         return None
     real = tmin
 
@@ -205,9 +203,7 @@ def box_frustum(typingctx, nodes, n, frustum, tmin, widen):
     axis, the near plane's t the smaller of (plane - o_near) * imin and (plane - o_near) *
     imax, the far plane's the larger of (plane - o_far) * imin and ... * imax, times
     ``widen``. A superset of the boxes any ray of the packet enters (the module docstring)."""
-    if not (isinstance(nodes, types.Array) and nodes.ndim == 3 and nodes.dtype == types.float32):
-        return None
-    if not isinstance(tmin, types.Float) or not isinstance(frustum, types.CPointer):
+    if not wide_bvh.typed_for_nodes(nodes, tmin, frustum):
         return None
     real = tmin
 

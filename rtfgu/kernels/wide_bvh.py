@@ -81,6 +81,14 @@ stack_of = on_the_stack(STACK, "A traversal's stack: STACK elements.")
 lanes_of = on_the_stack(WIDTH, "box8's entry ts: WIDTH elements.")
 
 
+def typed_for_nodes(nodes, tmin, *pointers) -> bool:
+    """Whether an intrinsic on the wide nodes types for these arguments: ``nodes`` a (N,
+    ROWS, WIDTH) float32 array, ``tmin`` a float (the test's precision), each of
+    ``pointers`` a pointer."""
+    return (isinstance(nodes, types.Array) and nodes.ndim == 3 and nodes.dtype == types.float32
+            and isinstance(tmin, types.Float) and all(isinstance(p, types.CPointer) for p in pointers))
+
+
 def node_lanes(context, builder, nodes_t, nodes_v, n_t, n_v, real):
     """For the codegen of a test of node ``n``'s WIDTH columns (nodes (N, ROWS, WIDTH)
     float32): (vt, splat, row), the vector type of WIDTH values of ``real``, a value of
@@ -114,9 +122,7 @@ def box8(typingctx, nodes, n, origin, inv, tmin, tmax, widen, entry):
     where its inv < 0, lo otherwise. As box_entry: near = (plane - o) * inv, far the same
     times ``widen``; t0 the largest of tmin and the nears, t1 the smallest of tmax and the
     fars, a NaN (0 * inf) narrowing neither; entered where not t0 > t1."""
-    if not (isinstance(nodes, types.Array) and nodes.ndim == 3 and nodes.dtype == types.float32):
-        return None
-    if not isinstance(tmin, types.Float):
+    if not typed_for_nodes(nodes, tmin):
         return None
     real = tmin
 
