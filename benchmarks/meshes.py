@@ -34,7 +34,7 @@ The paths (``System.paths``):
                  prange kernel (closest_hits); float64 and float32 on the one node table.
   rtfgu numba packets  the same wide tree and faces, a camera's rays traced 4 x 4 neighbours
                  at a time (closest_hits_packets, rtfgu.kernels.packet.mesh_closest_packet),
-                 float32; on the primary rays only (incoherent rays are not a camera's
+                 float64 and float32; on the primary rays only (incoherent rays are not a camera's
                  tiles: the row says so). Each tile's rays are copied into a packet and
                  their t and face back, within the timed call.
   rtfgu WGSL     the same build's node table, faces and float32 vertices in storage buffers
@@ -405,7 +405,8 @@ class Rtfgu(System):
             return Path_(self.name + " packets", precision, self.threads, run,
                          note="the wide tree, packets of %dx%d rays (rtfgu.kernels.packet)" % (TILE_W, TILE_H))
         binary = "the binary tree (the render's where the CPU has no AVX)"
-        return [path("float64", self.wide.nodes), path("float32", self.wide.nodes), packets("float32"),
+        return [path("float64", self.wide.nodes), packets("float64"), path("float32", self.wide.nodes),
+                packets("float32"),
                 path("float64", self.bvh.nodes, binary), path("float32", self.bvh.nodes, binary)]
 
     def bytes_per_triangle(self):

@@ -288,15 +288,15 @@ def test_a_packet_of_no_rays_or_too_many_is_refused(count):
 
 # --- through the render -------------------------------------------------------------------
 
-def _both_renders(scene, width, height, sampler=None):
-    """The float32 kernel's sums and ray counts with the pinhole's primary rays in packets and
+def _both_renders(scene, width, height, sampler=None, precision="float32"):
+    """The kernel's sums and ray counts with the pinhole's primary rays in packets and
     without (the same arguments, only ``packets`` changed)."""
     from rtfgu.kernels import hit_phases, kernel_arguments, render_kernel
     from rtfgu.kernels.render import COUNTS
     from rtfgu.layout import compile_sampler, compile_scene
 
-    flat = compile_scene(scene, "float32")
-    args, tiles = kernel_arguments(flat, width, height, sampler=compile_sampler(sampler, "float32"),
+    flat = compile_scene(scene, precision)
+    args, tiles = kernel_arguments(flat, width, height, sampler=compile_sampler(sampler, precision),
                                    samples=(0, 1 if sampler is None else sampler.num_samples))
     out = {}
     for packets in (None, 1):
@@ -304,7 +304,7 @@ def _both_renders(scene, width, height, sampler=None):
         run[7] = args[7][:2] + (packets, hit_phases(args[7][0], packets))
         # The sums NumbaAccumulator gives the kernel: float64 for one sample (the same values).
         one_sample = sampler is None or sampler.num_samples == 1
-        sums = np.full((height, width, 3), np.nan, dtype=np.float64 if one_sample else np.float32)
+        sums = np.full((height, width, 3), np.nan, dtype=np.float64 if one_sample else flat.dtype)
         counts = np.zeros((tiles, COUNTS), dtype=np.int64)
         render_kernel(*run, sums, counts)
         out[packets] = (sums, counts.sum(axis=0))
@@ -316,8 +316,9 @@ def _vector_cpu() -> bool:
     return vector_cpu()
 
 
+@pytest.mark.parametrize("precision", ["float64", "float32"])
 @pytest.mark.parametrize("name", ["cornell_box_spheres", "suffern_18_area_lighting"])
-def test_the_render_gives_the_same_image_with_packets_as_without(name):
+def test_the_render_gives_the_same_image_with_packets_as_without(name, precision):
     # Spheres the tree holds, with a mirror and a Transparent (a tile's stack of second
     # rays); area lights sampled, several samples a pixel: the pixels are traced in another
     # order, the sums must be the same bits.
@@ -325,7 +326,7 @@ def test_the_render_gives_the_same_image_with_packets_as_without(name):
     from rtfgu.scenes import SCENES
 
     scene = SCENES[name]()
-    chosen, single, packed = _both_renders(scene, 37, 29, pixel_sampler(scene, None))   # blocks cut by the edges
+    chosen, single, packed = _both_renders(scene, 37, 29, pixel_sampler(scene, None), precision)  # blocks cut by edges
     assert chosen == (1 if _vector_cpu() else None)     # packets where the numba path has the wide tree
     if not _vector_cpu():
         pytest.skip("this CPU has no AVX: the numba path traverses the binary tree, which has no packets")

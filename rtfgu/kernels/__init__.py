@@ -115,9 +115,9 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
     if flat.max_depth:
         cast, path = None, (flat.max_depth, flat.lights_at_every_vertex)
     # A pinhole's primary rays through the scene's wide BVH in packets (render.hits_in_packets),
-    # for the ray-cast tracer in float32 (float64 packets measured no faster: docs/bvh.md).
+    # for the ray-cast tracer, in both precisions (docs/bvh.md, "Packets").
     packets = 1 if (cast is not None and flat.camera_kind == PINHOLE and not flat.show_ray_direction
-                    and flat.dtype == np.float32 and flat.mesh is not None and flat.mesh.scene_tree
+                    and flat.mesh is not None and flat.mesh.scene_tree
                     and mesh_arrays(flat)[3].ndim == 3) else None
     scene = scene_tuple(flat)
     phases = hit_phases(cast, packets)
