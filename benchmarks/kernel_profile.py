@@ -65,7 +65,7 @@ def main(argv=None):
     Path("/tmp/perf-%d.map" % os.getpid()).write_text("".join("%x %x %s\n" % row for row in rows))
     start = time.perf_counter()
     for _ in range(args.calls):
-        accumulate((0, 1))
+        accumulate.add((0, 1))
     print("%d calls, %.2f ms a call; object code in %s/" % (args.calls, (time.perf_counter() - start) / args.calls * 1e3,
                                                           out))
 

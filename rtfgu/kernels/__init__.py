@@ -131,6 +131,15 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             settings, (cast, path, packets, phases), sampler, _coprime_stride(tiles)), tiles
 
 
+def sums_dtype(flat, sampler) -> np.dtype:
+    """The dtype of the sums a render of ``flat`` with ``sampler`` (None: one sample at each
+    pixel's centre) adds its samples to: float64 for one sample, in either precision (the sum
+    of one sample is the sample, and a float32 value is exactly a float64 one, so those sums
+    are the image itself, with no second array), else the scene's own (the passes of a
+    progressive render add in it)."""
+    return np.dtype(np.float64) if sampler is None or sampler.num_samples == 1 else flat.dtype
+
+
 class NumbaAccumulator:
     """A numba render in passes: each call adds a range of samples to every pixel's sum
     and returns the mean image so far (rtfgu.renderer.render_passes)."""
@@ -143,11 +152,8 @@ class NumbaAccumulator:
         self.size = (width, height)
         self.formula = formula
         self.seed = seed
-        # Not zeroed: the kernel writes the sums of a range that starts at sample 0. Of a
-        # render of one sample, the sum is the sample: float32 values stored in float64 sums
-        # are the same values, and those sums are then the image itself (no second array).
-        one_sample = sampler is None or sampler.num_samples == 1
-        self.sums = np.empty((height, width, 3), dtype=np.float64 if one_sample else self.flat.dtype)
+        # Not zeroed: the kernel writes the sums of a range that starts at sample 0.
+        self.sums = np.empty((height, width, 3), dtype=sums_dtype(self.flat, sampler))
         self.started = False
         self.counts = np.zeros(3, dtype=np.int64)
 
