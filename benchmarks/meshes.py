@@ -362,6 +362,31 @@ def bvh_of(mesh: MeshArrays):
     return bvh, faces4
 
 
+def _reached(wide):
+    """(nodes, block codes) reached from the wide tree's roots."""
+    from rtfgu.accelerators.wide_bvh import BLOCK_BIT, CODE_ROW, WIDTH
+    links, stack, nodes, blocks = wide.links, list(wide.roots), 0, 0
+    while stack:
+        n = stack.pop()
+        nodes += 1
+        for j in range(WIDTH):
+            code = int(links[n, CODE_ROW, j])
+            if np.isfinite(wide.nodes[n, 0, j]):
+                if code >= 0:
+                    stack.append(code)
+                elif (~code) >> BLOCK_BIT:
+                    blocks += 1
+    return nodes, blocks
+
+
+def count_nodes(wide):
+    return _reached(wide)[0]
+
+
+def count_blocks(wide):
+    return _reached(wide)[1]
+
+
 class Rtfgu(System):
     name = "rtfgu numba"
 
@@ -375,11 +400,15 @@ class Rtfgu(System):
         start = time.perf_counter()
         bvh, faces4 = bvh_of(mesh)
         wide = bvh.wide()
-        seconds = time.perf_counter() - start
-        self.tree_seconds.append((bvh.build_seconds, wide.build_seconds))
-        self.bvh, self.wide, self.faces4 = bvh, wide, faces4
         self.vertices = {"float64": np.ascontiguousarray(mesh.vertices, dtype=np.float64),
                          "float32": np.ascontiguousarray(mesh.vertices, dtype=np.float32)}
+        blocks_start = time.perf_counter()
+        blocked = bvh.wide_with_blocks((0,), self.vertices["float32"], faces4)
+        seconds = time.perf_counter() - start
+        self.tree_seconds.append((bvh.build_seconds, wide.build_seconds, time.perf_counter() - blocks_start))
+        self.bvh, self.faces4 = bvh, faces4
+        # The tree each precision's render traverses (rtfgu.kernels.render.numba_tree).
+        self.wide = {"float64": wide, "float32": blocked}
         return seconds
 
     def paths(self):
@@ -399,28 +428,31 @@ class Rtfgu(System):
                 origins, directions = rays.of(precision)
                 t = np.empty(len(origins), dtype=origins.dtype)
                 face = np.empty(len(origins), dtype=np.int64)
-                closest_hits_packets(self.vertices[precision], self.faces4, self.wide.nodes, self.wide.links,
-                                     origins, directions, rays.grid, t, face)
+                closest_hits_packets(self.vertices[precision], self.faces4, self.wide[precision].nodes,
+                                     self.wide[precision].links, origins, directions, rays.grid, t, face)
                 return t, face
             return Path_(self.name + " packets", precision, self.threads, run,
                          note="the wide tree, packets of %dx%d rays (rtfgu.kernels.packet)" % (TILE_W, TILE_H))
         binary = "the binary tree (the render's where the CPU has no AVX)"
-        return [path("float64", self.wide.nodes), packets("float64"), path("float32", self.wide.nodes),
+        return [path("float64", self.wide["float64"].nodes), packets("float64"),
+                path("float32", self.wide["float32"].nodes, "the wide tree with blocks (the render's in float32)"),
                 packets("float32"),
                 path("float64", self.bvh.nodes, binary), path("float32", self.bvh.nodes, binary)]
 
     def bytes_per_triangle(self):
         n = len(self.faces4)
-        return {p: (self.wide.nbytes + self.faces4.nbytes + v.nbytes) / n
+        return {p: (self.wide[p].nbytes + self.faces4.nbytes + v.nbytes) / n
                 for p, v in self.vertices.items()}
 
     def build_note(self):
-        binary, wide = zip(*(self.tree_seconds[1:] or self.tree_seconds))
-        return ("flat_bvh.build alone: %.3g s, the collapse to the wide tree %.3g s (medians); %d binary nodes, "
-                "depth %d; %d wide nodes (%d bytes each); the binary table (%.1f bytes per triangle, the WGSL "
-                "path's) is not counted" % (
-                    statistics.median(binary), statistics.median(wide), self.bvh.num_nodes, self.bvh.depth(),
-                    len(self.wide.nodes), self.wide.nodes[0].nbytes, self.bvh.nbytes / len(self.faces4)))
+        binary, wide, blocks = zip(*(self.tree_seconds[1:] or self.tree_seconds))
+        return ("flat_bvh.build alone: %.3g s, the collapse to the wide tree %.3g s, its blocks %.3g s (medians); "
+                "%d binary nodes, depth %d; %d wide nodes (%d bytes each), in float32 %d with %d blocks; the "
+                "binary table (%.1f bytes per triangle, the WGSL path's) is not counted" % (
+                    statistics.median(binary), statistics.median(wide), statistics.median(blocks),
+                    self.bvh.num_nodes, self.bvh.depth(), len(self.wide["float64"].nodes),
+                    self.wide["float64"].nodes[0].nbytes, count_nodes(self.wide["float32"]),
+                    count_blocks(self.wide["float32"]), self.bvh.nbytes / len(self.faces4)))
 
 
 class Embree(System):

@@ -12,7 +12,8 @@ that time over the nodes entered. A mesh whose tree fits the caches gives the tr
 cost per node; the 1.31 M-triangle one adds what its fetches from memory cost.
 
 ``counted`` is rtfgu.kernels.mesh._wide_closest with counters, built from the same pieces
-(enter_node, leaf_span, _leaf_closest, pop_within), so it makes the same steps: the script
+(enter_node, leaf_span, _leaf_closest, block_closest, pop_within; the float32 tree with its
+blocks, as a float32 render's), so it makes the same steps: the script
 checks that it finds every ray's face and t of mesh_closest. A measurement to read, not a
 test.
 """
@@ -34,7 +35,7 @@ sys.path.insert(0, str(HERE))
 
 from rtfgu.kernels import wide_bvh  # noqa: E402
 from rtfgu.kernels.float3 import lit  # noqa: E402
-from rtfgu.kernels.mesh import _leaf_closest, _wide_start  # noqa: E402
+from rtfgu.kernels.mesh import _leaf_closest, _wide_start, block_closest  # noqa: E402
 
 import meshes  # noqa: E402
 
@@ -58,11 +59,15 @@ def counted(vertices, faces, nodes, links, origin, direction, tmin, counts):
                                      entry_stack, sp)
             counts[PUSHED] += sp - before
         else:
-            first, count = wide_bvh.leaf_span(code)
+            first, count = wide_bvh.leaf_span(code, links)
             counts[LEAVES] += 1
             counts[FACES] += count
-            state = _leaf_closest(vertices, faces, None, (None, None, None), first, count, frame, origin, direction,
-                                  tmin, state, 0)
+            if wide_bvh.is_block(code):
+                state = block_closest(vertices, faces, nodes, wide_bvh.block_at(code), first, count, frame, tmin,
+                                      state, entry)
+            else:
+                state = _leaf_closest(vertices, faces, None, (None, None, None), first, count, frame, origin,
+                                      direction, tmin, state, 0)
         before = sp
         code, found, sp = wide_bvh.pop_within(stack, entry_stack, sp, state[0] * widen)
         counts[DROPPED] += before - sp - found
@@ -100,8 +105,9 @@ def main(argv=None) -> None:
             counts = np.zeros((len(origins), 5), dtype=np.int64)
             t = np.empty(len(origins), dtype=np.float32)
             face = np.empty(len(origins), dtype=np.int64)
-            count_all(system.vertices["float32"], system.faces4, system.wide.nodes, system.wide.links, origins,
-                      directions, counts, t, face)
+            tree = system.wide["float32"]
+            count_all(system.vertices["float32"], system.faces4, tree.nodes, tree.links, origins, directions, counts,
+                      t, face)
             set_num_threads(1)
             try:
                 t_ref, face_ref = single.run(rays)
@@ -116,7 +122,7 @@ def main(argv=None) -> None:
             per_ray = counts.mean(axis=0)
             ns = 1e9 * statistics.median(seconds) / len(origins)
             print("| %s | %d | %d | %.1f | %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.0f | %.0f | %s |" % (
-                mesh.name, len(mesh.faces), len(system.wide.nodes), system.wide.nbytes / 2 ** 20, label,
+                mesh.name, len(mesh.faces), len(tree.nodes), tree.nbytes / 2 ** 20, label,
                 per_ray[NODES], per_ray[PUSHED], per_ray[LEAVES], per_ray[FACES], per_ray[DROPPED], ns,
                 ns / per_ray[NODES], "yes" if same else "NO"), flush=True)
 

@@ -345,6 +345,12 @@ def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dt
     assert binary[0].tobytes() == truth.tobytes()
     assert wider[0].tobytes() == truth.tobytes()
     assert np.array_equal(binary[1], wider[1])
+    if dtype == np.float32:     # the float32 render's tree: its bottom nodes made blocks
+        blocked = wide_bvh.with_blocks(wide, vertices.astype(np.float32), rows)
+        assert len(block_codes(blocked)) > 0
+        with_blocks = traced(vertices, rows, blocked.nodes, origins, directions, dtype)
+        assert with_blocks[0].tobytes() == truth.tobytes()
+        assert np.array_equal(binary[1], with_blocks[1])
     if mesh == "coincident":
         first = {}
         for k, f in enumerate(faces.tolist()):
@@ -357,9 +363,101 @@ def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dt
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 def test_no_ray_from_inside_a_closed_mesh_leaks_through_the_wide_tree(dtype):
     vertices, rows, wide, rays = rays_from_inside()
-    for origins, directions in rays:
-        hits, _ = traced(vertices, rows, wide.nodes, origins, directions, dtype)
-        assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))
+    trees = [wide.nodes]
+    if dtype == np.float32:
+        trees.append(wide_bvh.with_blocks(wide, vertices.astype(np.float32), rows).nodes)
+    for nodes in trees:
+        for origins, directions in rays:
+            hits, _ = traced(vertices, rows, nodes, origins, directions, dtype)
+            assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))
+
+
+def block_codes(wide):
+    """The block codes of the tree's nodes (those reached from its roots)."""
+    links, out, stack = wide.links, [], list(wide.roots)
+    while stack:
+        n = stack.pop()
+        for j in range(wide_bvh.WIDTH):
+            code = int(links[n, wide_bvh.CODE_ROW, j])
+            if code >= 0 and np.isfinite(wide.nodes[n, 0, j]):
+                stack.append(code)
+            elif code < 0 and (~code) >> wide_bvh.BLOCK_BIT:
+                out.append(code)
+    return out
+
+
+def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once_with_its_corners():
+    """with_blocks: every face of the wide tree is in one leaf or one block, as before; a
+    block's header names consecutive faces and its rows are their corners, copied; the
+    roots stay nodes; the table is the nodes then the blocks, in about the bytes it had."""
+    vertices, faces = traversal_mesh("soup")
+    _, wide, rows = tree_of(vertices, faces)
+    v32 = vertices.astype(np.float32)
+    blocked = wide_bvh.with_blocks(wide, v32, rows)
+    assert blocked.nodes.dtype == np.float32 and blocked.nodes.nbytes < 1.1 * wide.nodes.nbytes
+    flat = blocked.nodes.reshape(-1)
+    seen = []
+    for code in block_codes(blocked):
+        at = ((~code) & ((1 << wide_bvh.BLOCK_BIT) - 1)) >> wide_bvh.LEAF_BITS
+        first, count = int(flat[at:at + 1].view(np.int32)[0]), ((~code) & 7) + 1
+        corners = flat[at + 1:at + 1 + 9 * count].reshape(9, count)
+        assert corners.T.tobytes() == v32[rows[first:first + count, :3]].reshape(count, 9).tobytes()
+        seen += range(first, first + count)
+    links, stack = blocked.links, list(blocked.roots)
+    while stack:
+        n = stack.pop()
+        for j in range(wide_bvh.WIDTH):
+            code = int(links[n, wide_bvh.CODE_ROW, j])
+            if not np.isfinite(blocked.nodes[n, 0, j]):
+                continue
+            if code >= 0:
+                stack.append(code)
+            elif not (~code) >> wide_bvh.BLOCK_BIT:
+                leaf = ~code
+                first, count = leaf >> wide_bvh.LEAF_BITS, (leaf & 7) + 1
+                seen += range(first, first + count)
+    assert sorted(seen) == list(range(len(rows)))
+    assert len(block_codes(blocked)) > 0
+    assert blocked.roots == (0,)
+
+
+def test_a_block_test_reads_only_its_own_lanes():
+    """A block of fewer than eight faces is followed by other values (no padding): its masked
+    rows must not take them as faces. The block's faces are hit at t = 1 and what follows it
+    holds faces at t = 0.5 that the ray would hit, in every lane."""
+    from rtfgu.kernels.wide_bvh import block_test
+
+    near = [-1.0, -1.0, 0.5, 3.0, -1.0, 0.5, -1.0, 3.0, 0.5]     # v0, v1, v2: hit at t = 0.5
+    far = [-1.0, -1.0, 1.0, 3.0, -1.0, 1.0, -1.0, 3.0, 1.0]      # hit at t = 1
+
+    @njit
+    def test(nodes, at, count, origin, direction):
+        lanes = lanes_of(np.float32)
+        mask = block_test(nodes, at, count, ray_frame(origin, direction), np.float32(0), np.float32(np.inf), lanes)
+        out = np.empty(8, dtype=np.float32)
+        for j in range(8):
+            out[j] = lanes[j]
+        return mask, out
+
+    origin = (np.float32(0.25), np.float32(0.25), np.float32(0))
+    direction = (np.float32(0), np.float32(0), np.float32(1))
+    for count in range(1, 9):
+        for at in (0, 5):
+            values = np.zeros(wide_bvh.ROWS * wide_bvh.WIDTH * 4, dtype=np.float32)
+            values[at:at + 9 * count] = np.repeat(np.array(far, dtype=np.float32), count)
+            values[at + 9 * count:at + 9 * count + 9 * 8] = np.repeat(np.array(near, dtype=np.float32), 8)
+            mask, out = test(values.reshape(-1, wide_bvh.ROWS, wide_bvh.WIDTH), at, count, origin, direction)
+            assert mask & 0xFF == (1 << count) - 1 and mask >> 8 == 0, (count, at, bin(mask))
+            assert (out[:count] == 1).all(), (count, at, out)
+
+
+def test_a_float64_scene_traverses_no_blocks_and_a_float32_one_does():
+    from rtfgu.layout import compile_scene
+    from rtfgu.scenes import SCENES
+
+    scene = SCENES["suffern_29_uv_mesh"]()
+    assert block_codes(render_kernels.numba_tree(compile_scene(scene, "float64").mesh)) == []
+    assert len(block_codes(render_kernels.numba_tree(compile_scene(scene, "float32").mesh))) > 0
 
 
 def test_the_traversals_called_once_a_ray_count_no_references():

@@ -49,6 +49,7 @@ class FlatBVH:
     build_seconds: float
     boxes: np.ndarray          # (P, 6) float32: each primitive's box in leaf order, rounded out
     _wide: tuple = field(default=None, repr=False, compare=False)
+    _blocked: tuple = field(default=None, repr=False, compare=False)
 
     @property
     def links(self) -> np.ndarray:
@@ -62,6 +63,16 @@ class FlatBVH:
         if self._wide is None or self._wide[0] != roots:
             self._wide = (roots, collapse(self, roots))
         return self._wide[1]
+
+    def wide_with_blocks(self, roots, vertices, faces):
+        """The wide tree with its bottom nodes made blocks of the float32 ``vertices``' corners
+        (rtfgu.accelerators.wide_bvh.with_blocks): ``vertices`` and ``faces`` those this table
+        was built over (a FlatMesh's), made at the first call and kept with the table."""
+        from .wide_bvh import with_blocks
+        roots = tuple(int(r) for r in roots)
+        if self._blocked is None or self._blocked[0] != roots:
+            self._blocked = (roots, with_blocks(self.wide(roots), vertices, faces))
+        return self._blocked[1]
 
     @property
     def num_nodes(self) -> int:

@@ -11,7 +11,8 @@ column per child:
     rows 3-5  hi.x, hi.y, hi.z
     row 6     int32 bits: the child's code, what the traversal pushes: an inner child's node
               (>= 0), or a leaf child's ~(first << LEAF_BITS | count - 1) (< 0), its first
-              primitive and its count (leaf_code)
+              primitive and its count (leaf_code), or in a float32 render's tree a block's
+              code (with_blocks: a node of single triangles made one vector test)
 
 A column no child fills has the empty box (lo = +inf, hi = -inf), which no ray enters. The
 boxes are the binary tree's own or its primitives' (FlatBVH.boxes), rounded outward to
@@ -39,7 +40,13 @@ from .flat_bvh import FlatBVH, njit
 WIDTH = 8
 # A leaf's code is ~(first << LEAF_BITS | count - 1): LEAF_SIZE <= 2^LEAF_BITS.
 LEAF_BITS = 3
-MAX_FIRST = 2 ** (31 - LEAF_BITS)
+# A block's code is ~(1 << BLOCK_BIT | where << LEAF_BITS | count - 1) (with_blocks), so a
+# leaf's first and a block's place stay below 2^(BLOCK_BIT - LEAF_BITS).
+BLOCK_BIT = 30
+MAX_FIRST = 2 ** (BLOCK_BIT - LEAF_BITS)
+# A block: a header, its first face (int32), then its corners.
+BLOCK_HEADER = 1
+CORNER_ROWS = 9
 # A node's rows: six of box planes and the children's codes (CODE_ROW).
 ROWS = 7
 CODE_ROW = 6
@@ -150,6 +157,72 @@ def _collapse(nodes, links, boxes, roots, out, out_links, wide_roots, width, lea
                     top += 1
                     done += 1
     return done
+
+
+def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideBVH:
+    """The tree ``wide`` with its bottom nodes made blocks, for float32 ``vertices`` (the
+    corners are their copies): a node whose every column is one triangle, those triangles
+    being the rows first .. first + count - 1 of ``faces``, becomes a **block** of ``count``
+    faces stored per coordinate, as Embree's ``Triangle4`` leaves are (Wald et al. 2014,
+    section 4.2), so that one vector test tests them all (rtfgu.kernels.wide_bvh.block_test)
+    instead of their eight boxes and then each face entered.
+
+    The blocks follow the nodes in the same float32 table, without padding: at float
+    ``where`` (counted from the table's start) the block's first face (int32 bits), then
+    nine rows of ``count`` values, v0.x of its faces, v0.y, v0.z, v1.x, ... v2.z: 4 + 36 *
+    count bytes, where the node was 224. Its parent's column holds the code ~(1 << BLOCK_BIT
+    | where << LEAF_BITS | count - 1): the test needs nothing from the block before its
+    corners. A root stays a node; a node whose columns hold a sphere or an instance, or whose
+    faces are not consecutive rows, stays a node. The nodes left are numbered again in their
+    order. A table past MAX_FIRST floats gets no blocks."""
+    nodes = wide.nodes
+    links = nodes.view(np.int32)
+    n = len(nodes)
+    codes = links[:, CODE_ROW, :]
+    empty = np.isposinf(nodes[:, 0, :])
+    one = (codes < 0) & ((~codes & (2 ** LEAF_BITS - 1)) == 0) & ~empty
+    first_of = np.where(one, ~codes >> LEAF_BITS, 0).astype(np.int64)
+    count = one.sum(axis=1)
+    pure = np.all(one | empty, axis=1) & (count > 0)
+    pure[list(wide.roots)] = False
+    big = np.iinfo(np.int64).max
+    lo = np.where(one, first_of, big).min(axis=1)
+    hi = np.where(one, first_of, -1).max(axis=1)
+    pure &= hi - lo == count - 1                 # consecutive rows (each once: a leaf's rows are its own)
+    triangles = faces[:, 0] >= 0
+    pure[pure] = [triangles[a:b + 1].all() for a, b in zip(lo[pure], hi[pure])]
+    if not pure.any():
+        return wide
+    kept = ~pure
+    number = np.cumsum(kept) - 1                 # a kept node's new number
+    firsts, counts = lo[pure], count[pure]
+    sizes = BLOCK_HEADER + CORNER_ROWS * counts
+    where = len(number[kept]) * ROWS * WIDTH + np.cumsum(sizes) - sizes
+    total = int(where[-1] + sizes[-1])
+    if total >= MAX_FIRST:
+        return wide                               # beyond what a code holds: no blocks
+    out = np.empty(-(-total // (ROWS * WIDTH)) * ROWS * WIDTH, dtype=np.float32)
+    m = int(kept.sum())
+    table = out[:m * ROWS * WIDTH].reshape(m, ROWS, WIDTH)
+    table[:] = nodes[kept]
+    new_codes = table.view(np.int32)[:, CODE_ROW, :]
+    inner = new_codes >= 0
+    block_code = np.full(n, 0, dtype=np.int64)
+    block_code[pure] = ~((1 << BLOCK_BIT) | where << LEAF_BITS | (counts - 1))
+    to_block = inner & pure[np.where(inner, new_codes, 0)]
+    new_codes[to_block] = block_code[new_codes[to_block]]
+    renumber = inner & ~to_block
+    new_codes[renumber] = number[new_codes[renumber]]
+    flat = out.view(np.int32)
+    flat[where] = firsts
+    # Each block's faces at once: face k of the blocks is lane j of block b.
+    b = np.repeat(np.arange(len(counts)), counts)
+    j = np.arange(len(b)) - np.repeat(np.cumsum(counts) - counts, counts)
+    at = (where[b] + BLOCK_HEADER + j)[:, None] + np.arange(CORNER_ROWS)[None, :] * counts[b][:, None]
+    out[at] = vertices[faces[firsts[b] + j, :3]].reshape(-1, CORNER_ROWS)
+    out[int(total):] = 0
+    blocked = out.reshape(-1, ROWS, WIDTH)
+    return WideBVH(blocked, tuple(int(number[r]) for r in wide.roots), wide.build_seconds)
 
 
 def collapse(bvh: FlatBVH, roots=(0,)) -> WideBVH:

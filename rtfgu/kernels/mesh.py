@@ -42,6 +42,7 @@ from .intersect import intersect_sphere, intersect_sphere_robust
 from .robust import _pick, ray_shear
 from .float3 import add, cross, dot, lit, lit_per_precision, normalize, scale, sub
 from . import wide_bvh
+from ..accelerators.wide_bvh import BLOCK_HEADER, WIDTH
 
 # 1 + 2 gamma_3 (PBRT-v4 section 6.1.2): the far end of a slab interval is widened by it, so
 # that rounding never drops a box whose face the triangle test would hit (BBox.hit).
@@ -270,6 +271,51 @@ def _wide_start(origin, direction, tmin):
             wide_bvh.stack_of(np.int32), wide_bvh.stack_of(tmin), wide_bvh.lanes_of(tmin))
 
 
+def block_closest(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
+    """The nearest of a block's faces faces[first:first + count] (their corners at float
+    ``at`` of ``nodes``: rtfgu.accelerators.wide_bvh.with_blocks) and the best so far
+    ``state``, by the tie rule (mesh_closest); ``lanes``: WIDTH floats for the test's ts.
+    Blocks are made for float32 trees only; a float64 test (never given one) types the
+    scalar faces' loop."""
+    return as_python(_typed_block_closest, vertices, faces, nodes, at, first, count, frame, tmin, state, lanes)
+
+
+@overload(block_closest, inline="always")
+def _typed_block_closest(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
+    if tmin != types.float32:
+        def scalar(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
+            tmax, best, best_kind, best_row = state
+            inf = lit(math.inf, tmin)
+            for f in range(first, first + count):
+                idx = faces[f, 3]
+                t = intersect_face(vertices, faces, f, frame, tmin, tmax if idx > best else np.nextafter(tmax, inf))
+                if t < tmax or (t == tmax and idx < best):
+                    tmax, best, best_kind, best_row = t, idx, MESH, f
+            return tmax, best, best_kind, best_row
+        return scalar
+
+    def vector(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
+        tmax, best, best_kind, best_row = state
+        inf = lit(math.inf, tmin)
+        # Every lane hit in [tmin, the float above the best t), then the tie rule lane by lane:
+        # the lexicographic least (t, scene index), whatever the lanes' order.
+        mask = wide_bvh.block_test(nodes, at + BLOCK_HEADER, count, frame, tmin, np.nextafter(tmax, inf), lanes)
+        zeroed = mask >> WIDTH
+        mask = (mask | zeroed) & ((1 << WIDTH) - 1)
+        for j in range(WIDTH):
+            if mask >> j & 1:
+                f = first + j
+                idx = faces[f, 3]
+                t = lanes[j]
+                if zeroed >> j & 1:
+                    t = intersect_face(vertices, faces, f, frame, tmin, tmax if idx > best else np.nextafter(tmax, inf))
+                if t < tmax or (t == tmax and idx < best):
+                    tmax, best, best_kind, best_row = t, idx, MESH, f
+        return tmax, best, best_kind, best_row
+    return vector
+
+
+
 def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
     """mesh_closest on the wide table (N, ROWS, WIDTH): rtfgu.kernels.wide_bvh's box8 and stack.
     ``bound``: the best hit so far (mesh_closest's ``hit``)."""
@@ -282,9 +328,13 @@ def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmi
             sp = wide_bvh.enter_node(nodes, links, code, origin, inv, tmin, state[0] * widen, widen, entry, stack,
                                      entry_stack, sp)
         else:
-            first, count = wide_bvh.leaf_span(code)
-            state = _leaf_closest(vertices, faces, spheres, instances, first, count, frame, origin, direction,
-                                  tmin, state, formula)
+            first, count = wide_bvh.leaf_span(code, links)
+            if wide_bvh.is_block(code):
+                state = block_closest(vertices, faces, nodes, wide_bvh.block_at(code), first, count, frame, tmin,
+                                      state, entry)
+            else:
+                state = _leaf_closest(vertices, faces, spheres, instances, first, count, frame, origin, direction,
+                                      tmin, state, formula)
         code, found, sp = wide_bvh.pop_within(stack, entry_stack, sp, state[0] * widen)
         if not found:
             break
@@ -389,7 +439,7 @@ def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, b
         if code >= 0:
             sp = wide_bvh.enter_node_any(nodes, links, code, origin, inv, tmin, bound, widen, entry, stack, sp)
         else:
-            first, count = wide_bvh.leaf_span(code)
+            first, count = wide_bvh.leaf_span(code, links)
             if _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, bound,
                          formula):
                 return True

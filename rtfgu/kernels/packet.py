@@ -386,7 +386,7 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
         if n_live == 0:
             continue
         if code < 0 and shared and n_live > SINGLE:
-            start, size = wide_bvh.leaf_span(code)
+            start, size = wide_bvh.leaf_span(code, links)
             for f in range(start, start + size):
                 mesh_face = faces[f, 0] != SPHERE_ROW and faces[f, 0] != INSTANCE_ROW
                 each = live if not mesh_face else face_rays(vertices, faces, f, kxyz, frames, count, live, tmin,
@@ -411,7 +411,7 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
                     hit = mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin,
                                        (t[i], best[i], kind[i], row[i]), formula, code, instances)
                 else:
-                    start, size = wide_bvh.leaf_span(code)
+                    start, size = wide_bvh.leaf_span(code, links)
                     hit = _leaf_closest(vertices, faces, spheres, instances, start, size, _frame(axes, frames, i),
                                         origin, direction,
                                         tmin, (t[i], best[i], kind[i], row[i]), formula)

@@ -109,12 +109,21 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
     return shapes
 
 
+def numba_tree(mesh):
+    """The wide tree (rtfgu.accelerators.wide_bvh) the numba path traverses for a FlatMesh:
+    in float32 with its bottom nodes made blocks of their faces' corners (with_blocks; their
+    corners are the float32 vertices), in float64 without."""
+    if mesh.vertices.dtype == np.float32:
+        return mesh.bvh.wide_with_blocks(mesh.tree_roots, mesh.vertices, mesh.faces)
+    return mesh.bvh.wide(mesh.tree_roots)
+
+
 def mesh_arrays(flat) -> tuple:
     """The FlatMesh's arrays in MESH_SLOTS order, with the tree the numba path traverses: the
-    wide one (rtfgu.accelerators.wide_bvh) where the CPU has vector units
-    (rtfgu.kernels.wide_bvh.WIDE), else the binary one."""
+    wide one (numba_tree) where the CPU has vector units (rtfgu.kernels.wide_bvh.WIDE), else
+    the binary one."""
     mesh = flat.mesh
-    nodes = mesh.bvh.wide(mesh.tree_roots).nodes if WIDE else mesh.bvh.nodes
+    nodes = numba_tree(mesh).nodes if WIDE else mesh.bvh.nodes
     return mesh.vertices, mesh.faces, mesh.normals, nodes, nodes.view(np.int32), mesh.uvs
 
 
@@ -125,7 +134,7 @@ def instance_table(flat, kind: str) -> np.ndarray:
     if "instanced_mesh" not in flat.features or not WIDE:
         return table
     mesh = flat.mesh
-    wide_roots = dict(zip(mesh.tree_roots, mesh.bvh.wide(mesh.tree_roots).roots))
+    wide_roots = dict(zip(mesh.tree_roots, numba_tree(mesh).roots))
     column, kind_column = offset("Instance", "object_row"), offset("Instance", "object_kind")
     table = table.copy()
     of_mesh = table[:, kind_column] == SHAPE_IDS[MESH_KIND.name]

@@ -26,7 +26,7 @@ from numba.core import cgutils
 from numba.extending import intrinsic, overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
-from ..accelerators.wide_bvh import CODE_ROW, LEAF_BITS, ROWS, WIDTH
+from ..accelerators.wide_bvh import BLOCK_BIT, CODE_ROW, LEAF_BITS, ROWS, WIDTH
 
 # A traversal pushes at most WIDTH - 1 entries per level it descends.
 STACK = MAX_DEPTH * WIDTH
@@ -195,10 +195,105 @@ def enter_node_any(nodes, links, node, origin, inv, tmin, reach, widen, entry, s
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def leaf_span(code):
-    """(first, count) of a leaf's stack entry."""
+def _flat_int(links, at):
+    """The int32 value at float ``at`` of the (N, ROWS, WIDTH) table ``links``."""
+    node = at // (ROWS * WIDTH)
+    k = at - node * (ROWS * WIDTH)
+    return links[node, k // WIDTH, k % WIDTH]
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def is_block(code):
+    """Whether a leaf's stack entry names a block (rtfgu.accelerators.wide_bvh.with_blocks)."""
+    return (~code) >> BLOCK_BIT != 0
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def block_at(code):
+    """Where a block's header lies in the table (a float's index from its start)."""
+    return ((~code) & ((1 << BLOCK_BIT) - 1)) >> LEAF_BITS
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def leaf_span(code, links):
+    """(first, count) of a leaf's stack entry, a block's first read from its header."""
     leaf = ~code
-    return leaf >> LEAF_BITS, (leaf & ((1 << LEAF_BITS) - 1)) + 1
+    count = (leaf & ((1 << LEAF_BITS) - 1)) + 1
+    if leaf >> BLOCK_BIT:
+        return np.int64(_flat_int(links, block_at(code))), count
+    return leaf >> LEAF_BITS, count
+
+
+@intrinsic
+def block_test(typingctx, nodes, at, count, frame, tmin, limit, out):
+    """The watertight test of a block's ``count`` (1-8) faces (with_blocks), their corners'
+    nine rows from float ``at`` of the table ``nodes`` on, in a float32 test: each lane's t
+    at ``out`` (a pointer to WIDTH floats); returns a bit mask, bits 0-7 the lanes hit in
+    [tmin, limit), bits 8-15 the lanes whose U, V or W rounds to zero (the scalar test
+    recomputes those in double). It is rtfgu.kernels.mesh.intersect_face lane by lane: the
+    same operations in the same order, on the ray frame's axes kx, ky, kz picked as rows,
+    so a lane's t is the scalar test's bit for bit. A row is read by a masked load of its
+    ``count`` lanes, so nothing past the block is read."""
+    if not (typed_for_nodes(nodes, tmin, out) and tmin == types.float32 and isinstance(at, types.Integer)
+            and isinstance(count, types.Integer)):
+        return None
+
+    def codegen(context, builder, signature, args):
+        nodes_v, at_v, count_v, frame_v, tmin_v, limit_v, out_v = args
+        ft = ir.FloatType()
+        vt = ir.VectorType(ft, WIDTH)
+        i64, i32 = ir.IntType(64), ir.IntType(32)
+        lanes = ir.VectorType(ir.IntType(1), WIDTH)
+        array = context.make_array(signature.args[0])(context, builder, nodes_v)
+        count64 = context.cast(builder, count_v, signature.args[2], types.int64)
+        base = builder.gep(array.data, [context.cast(builder, at_v, signature.args[1], types.int64)])
+        shear, origin = builder.extract_value(frame_v, 0), builder.extract_value(frame_v, 1)
+        kx, ky, kz = (context.cast(builder, builder.extract_value(shear, a), signature.args[3].types[0].types[a],
+                                   types.int64) for a in range(3))
+
+        def splat(x, typ=vt):
+            v = builder.insert_element(ir.Constant(typ, ir.Undefined), x, ir.Constant(i32, 0))
+            return builder.shuffle_vector(v, ir.Constant(typ, ir.Undefined),
+                                          ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+
+        valid = builder.icmp_signed("<", ir.Constant(ir.VectorType(i64, WIDTH), list(range(WIDTH))),
+                                    splat(count64, ir.VectorType(i64, WIDTH)))
+        load = cgutils.get_or_insert_function(
+            builder.module, ir.FunctionType(vt, [vt.as_pointer(), i32, lanes, vt]), "llvm.masked.load.v8f32.p0")
+        nan = ir.Constant(vt, [math.nan] * WIDTH)
+
+        def corner(vertex, k):
+            row = builder.add(k, ir.Constant(i64, 3 * vertex))
+            p = builder.gep(base, [builder.mul(row, count64)])
+            return builder.call(load, [builder.bitcast(p, vt.as_pointer()), ir.Constant(i32, 4), valid, nan])
+
+        Sx, Sy, Sz = (splat(builder.extract_value(shear, 3 + a)) for a in range(3))
+        okx, oky, okz = (splat(builder.extract_value(origin, a)) for a in range(3))
+        sub, mul, add = builder.fsub, builder.fmul, builder.fadd
+        Az, Bz, Cz = (sub(corner(v, kz), okz) for v in range(3))
+        ax, ay = sub(sub(corner(0, kx), okx), mul(Sx, Az)), sub(sub(corner(0, ky), oky), mul(Sy, Az))
+        bx, by = sub(sub(corner(1, kx), okx), mul(Sx, Bz)), sub(sub(corner(1, ky), oky), mul(Sy, Bz))
+        cx, cy = sub(sub(corner(2, kx), okx), mul(Sx, Cz)), sub(sub(corner(2, ky), oky), mul(Sy, Cz))
+        U = sub(mul(cx, by), mul(cy, bx))
+        V = sub(mul(ax, cy), mul(ay, cx))
+        W = sub(mul(bx, ay), mul(by, ax))
+        zero = ir.Constant(vt, [0.0] * WIDTH)
+
+        def cmp(op, a, b=zero):
+            return builder.fcmp_ordered(op, a, b)
+
+        any3 = lambda op: builder.or_(builder.or_(cmp(op, U), cmp(op, V)), cmp(op, W))
+        zeroed = builder.and_(any3("=="), valid)
+        det = add(add(U, V), W)
+        missed = builder.or_(builder.and_(any3("<"), any3(">")), cmp("==", det))
+        t = builder.fdiv(add(add(mul(U, mul(Sz, Az)), mul(V, mul(Sz, Bz))), mul(W, mul(Sz, Cz))), det)
+        within = builder.and_(cmp(">=", t, splat(tmin_v)), cmp("<", t, splat(limit_v)))
+        hit = builder.and_(builder.and_(builder.xor(builder.or_(missed, zeroed), ir.Constant(lanes, [1] * WIDTH)),
+                                        within), valid)
+        builder.store(t, builder.bitcast(out_v, vt.as_pointer()), align=4)
+        bits = lambda m: builder.zext(builder.bitcast(m, ir.IntType(WIDTH)), i64)
+        return builder.or_(bits(hit), builder.shl(bits(zeroed), ir.Constant(i64, WIDTH)))
+    return types.int64(nodes, at, count, frame, tmin, limit, out), codegen
 
 
 @njit(cache=True, error_model="numpy", inline="always")
