@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 from numba import njit, prange
 
+from rtfgu.accelerators import wide_bvh
 from rtfgu.kernels.float3 import lit, lit_per_precision
 from rtfgu.kernels.mesh import WIDEN32, WIDEN64, _inverse, mesh_closest
 from rtfgu.kernels.packet import (OX, PACKET, REACH, RAY_ROWS, box_frustum, box_rays, frustum_of_packet,
@@ -199,6 +200,17 @@ def run(kernel, vertices, rows, wide, origins, directions, dtype, bound=None):
     return hits
 
 
+def render_tree(wide, vertices, rows, dtype):
+    """The wide tree a render of ``dtype`` traverses: in float32 with its blocks
+    (rtfgu.kernels.render.numba_tree), which the packets test face by face against their
+    rays or ray by ray."""
+    if dtype != np.float32:
+        return wide
+    blocked = wide_bvh.with_blocks(wide, vertices.astype(np.float32), rows)
+    assert len(blocked.nodes) != len(wide.nodes) or blocked.nodes.tobytes() != wide.nodes.tobytes()
+    return blocked
+
+
 def camera_tiles(vertices, size):
     """A pinhole's size x size rays at the mesh, ordered a 4 x 4 tile after another (each
     tile one packet), from a corner so that rays graze it."""
@@ -222,6 +234,7 @@ def camera_tiles(vertices, size):
 def test_a_packet_finds_every_rays_face_and_t_of_mesh_closest(rays, mesh, dtype):
     vertices, faces = traversal_mesh(mesh)
     _, wide, rows = tree_of(vertices, faces)
+    wide = render_tree(wide, vertices, rows, dtype)
     if rays == "tiles":
         origins, directions = camera_tiles(vertices, 64)
     else:
@@ -240,6 +253,7 @@ def test_a_packet_keeps_each_rays_bound_and_tie_rule(dtype):
     # index): a face beyond it is not taken, one at its t is taken only if its index is lower.
     vertices, faces = soup(2000, seed=3)
     _, wide, rows = tree_of(vertices, faces)
+    wide = render_tree(wide, vertices, rows, dtype)
     origins, directions = camera_tiles(vertices, 48)
     free = run(_singles, vertices, rows, wide, origins, directions, dtype)
     hit = free[:, 1] >= 0
@@ -264,6 +278,7 @@ def test_a_packet_keeps_each_rays_bound_and_tie_rule(dtype):
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 def test_no_ray_of_a_packet_from_inside_a_closed_mesh_leaks(dtype):
     vertices, rows, wide, rays = rays_from_inside()
+    wide = render_tree(wide, vertices, rows, dtype)
     for origins, directions in rays:
         hits = run(_packets, vertices, rows, wide, origins, directions, dtype)
         assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))

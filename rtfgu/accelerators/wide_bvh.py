@@ -189,8 +189,9 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     lo = np.where(one, first_of, big).min(axis=1)
     hi = np.where(one, first_of, -1).max(axis=1)
     pure &= hi - lo == count - 1                 # consecutive rows (each once: a leaf's rows are its own)
-    triangles = faces[:, 0] >= 0
-    pure[pure] = [triangles[a:b + 1].all() for a, b in zip(lo[pure], hi[pure])]
+    # no sphere or instance row among first .. last: the count of such rows up to each
+    others = np.concatenate([[0], np.cumsum(faces[:, 0] < 0)])
+    pure[pure] = others[hi[pure] + 1] == others[lo[pure]]
     if not pure.any():
         return wide
     kept = ~pure

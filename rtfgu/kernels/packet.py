@@ -53,11 +53,11 @@ from numba.core import cgutils
 from numba.cpython.unsafe.numbers import trailing_zeros
 from numba.extending import intrinsic
 
-from ..accelerators.wide_bvh import CODE_ROW, ROWS, WIDTH
+from ..accelerators.wide_bvh import BLOCK_HEADER, CODE_ROW, ROWS, WIDTH
 from ..layout import INSTANCE_ROW, MESH, SPHERE_ROW
 from . import wide_bvh
 from .float3 import lit, lit_per_precision
-from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, mesh_closest, ray_frame
+from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, block_closest, mesh_closest, ray_frame
 
 # Rays of a packet: its masks are bits of an int64, its lanes one vector.
 PACKET = 16
@@ -100,6 +100,49 @@ def nearer_hit(hit, other):
     return hit
 
 
+def _slab_lanes(context, builder, signature, real, plane, rays_v, live_v, live_t, tmin_v, tmin_t, widen_v, widen_t):
+    """The codegen of box_rays and box_rays_of: ``plane(row)`` gives the box's plane ``row``
+    (0-2 lo, 3-5 hi) as a value of ``real``."""
+    ft = context.get_value_type(real)
+    vt = ir.VectorType(ft, PACKET)
+    i64 = ir.IntType(64)
+    i32 = ir.IntType(32)
+
+    def splat(x):
+        v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
+        return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
+                                      ir.Constant(ir.VectorType(i32, PACKET), [0] * PACKET))
+
+    def lanes(row):
+        p = builder.gep(rays_v, [ir.Constant(i64, row * PACKET)])
+        return builder.load(builder.bitcast(p, vt.as_pointer()), align=4)
+
+    zero = ir.Constant(vt, [0.0] * PACKET)
+    t0 = splat(context.cast(builder, tmin_v, tmin_t, real))
+    t1 = lanes(REACH)
+    w = splat(context.cast(builder, widen_v, widen_t, real))
+    for a in range(3):
+        o = lanes(OX + a)
+        inv = lanes(IX + a)
+        negative = builder.fcmp_ordered("<", inv, zero)
+        lo, hi = splat(plane(a)), splat(plane(3 + a))
+        near = builder.fmul(builder.fsub(builder.select(negative, hi, lo), o), inv)
+        far = builder.fmul(builder.fmul(builder.fsub(builder.select(negative, lo, hi), o), inv), w)
+        t0 = builder.select(builder.fcmp_ordered(">", near, t0), near, t0)
+        t1 = builder.select(builder.fcmp_ordered("<", far, t1), far, t1)
+    mask_t = ir.VectorType(ir.IntType(1), PACKET)
+    live_bits = builder.bitcast(builder.trunc(context.cast(builder, live_v, live_t, types.int64),
+                                              ir.IntType(PACKET)), mask_t)
+    entered = builder.and_(builder.xor(builder.fcmp_ordered(">", t0, t1),
+                                       ir.Constant(mask_t, [1] * PACKET)), live_bits)
+    mask = builder.zext(builder.bitcast(entered, ir.IntType(PACKET)), i64)
+    nearest = builder.select(entered, t0, ir.Constant(vt, [math.inf] * PACKET))
+    reduce = cgutils.get_or_insert_function(
+        builder.module, ir.FunctionType(ft, [vt]),
+        "llvm.vector.reduce.fmin.v%df%d" % (PACKET, real.bitwidth))
+    return context.make_tuple(builder, signature.return_type, [mask, builder.call(reduce, [nearest])])
+
+
 @intrinsic
 def box_rays(typingctx, nodes, n, j, rays, live, tmin, widen):
     """The slab test of child ``j``'s box of node ``n`` (nodes (N, ROWS, WIDTH) float32)
@@ -118,53 +161,41 @@ def box_rays(typingctx, nodes, n, j, rays, live, tmin, widen):
     def codegen(context, builder, signature, args):
         nodes_v, n_v, j_v, rays_v, live_v, tmin_v, widen_v = args
         nodes_t, n_t, j_t, _, live_t, tmin_t, widen_t = signature.args
-        ft = context.get_value_type(real)
-        vt = ir.VectorType(ft, PACKET)
         i64 = ir.IntType(64)
-        i32 = ir.IntType(32)
         array = context.make_array(nodes_t)(context, builder, nodes_v)
         n64 = context.cast(builder, n_v, n_t, types.int64)
         j64 = context.cast(builder, j_v, j_t, types.int64)
         base = builder.gep(array.data, [builder.add(builder.mul(n64, ir.Constant(i64, ROWS * WIDTH)), j64)])
 
-        def splat(x):
-            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
-            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
-                                          ir.Constant(ir.VectorType(i32, PACKET), [0] * PACKET))
+        def plane(row):
+            x = builder.load(builder.gep(base, [ir.Constant(i64, row * WIDTH)]))
+            return x if real.bitwidth == 32 else builder.fpext(x, context.get_value_type(real))
+        return _slab_lanes(context, builder, signature, real, plane, rays_v, live_v, live_t, tmin_v, tmin_t,
+                           widen_v, widen_t)
+    return types.Tuple((types.int64, real))(nodes, n, j, rays, live, tmin, widen), codegen
+
+
+@intrinsic
+def box_rays_of(typingctx, boxes, j, rays, live, tmin, widen):
+    """box_rays for box ``j`` of ``boxes`` (a pointer to six rows of WIDTH float32 values:
+    lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of each box, block_boxes)."""
+    if not (isinstance(boxes, types.CPointer) and boxes.dtype == types.float32 and isinstance(rays, types.CPointer)
+            and isinstance(tmin, types.Float) and isinstance(j, types.Integer)):
+        return None
+    real = tmin
+
+    def codegen(context, builder, signature, args):
+        boxes_v, j_v, rays_v, live_v, tmin_v, widen_v = args
+        _, j_t, _, live_t, tmin_t, widen_t = signature.args
+        i64 = ir.IntType(64)
+        base = builder.gep(boxes_v, [context.cast(builder, j_v, j_t, types.int64)])
 
         def plane(row):
             x = builder.load(builder.gep(base, [ir.Constant(i64, row * WIDTH)]))
-            return splat(x if real.bitwidth == 32 else builder.fpext(x, ft))
-
-        def lanes(row):
-            p = builder.gep(rays_v, [ir.Constant(i64, row * PACKET)])
-            return builder.load(builder.bitcast(p, vt.as_pointer()), align=4)
-
-        zero = ir.Constant(vt, [0.0] * PACKET)
-        t0 = splat(context.cast(builder, tmin_v, tmin_t, real))
-        t1 = lanes(REACH)
-        w = splat(context.cast(builder, widen_v, widen_t, real))
-        for a in range(3):
-            o = lanes(OX + a)
-            inv = lanes(IX + a)
-            negative = builder.fcmp_ordered("<", inv, zero)
-            lo, hi = plane(a), plane(3 + a)
-            near = builder.fmul(builder.fsub(builder.select(negative, hi, lo), o), inv)
-            far = builder.fmul(builder.fmul(builder.fsub(builder.select(negative, lo, hi), o), inv), w)
-            t0 = builder.select(builder.fcmp_ordered(">", near, t0), near, t0)
-            t1 = builder.select(builder.fcmp_ordered("<", far, t1), far, t1)
-        mask_t = ir.VectorType(ir.IntType(1), PACKET)
-        live_bits = builder.bitcast(builder.trunc(context.cast(builder, live_v, live_t, types.int64),
-                                                  ir.IntType(PACKET)), mask_t)
-        entered = builder.and_(builder.xor(builder.fcmp_ordered(">", t0, t1),
-                                           ir.Constant(mask_t, [1] * PACKET)), live_bits)
-        mask = builder.zext(builder.bitcast(entered, ir.IntType(PACKET)), i64)
-        nearest = builder.select(entered, t0, ir.Constant(vt, [math.inf] * PACKET))
-        reduce = cgutils.get_or_insert_function(
-            builder.module, ir.FunctionType(ft, [vt]),
-            "llvm.vector.reduce.fmin.v%df%d" % (PACKET, real.bitwidth))
-        return context.make_tuple(builder, signature.return_type, [mask, builder.call(reduce, [nearest])])
-    return types.Tuple((types.int64, real))(nodes, n, j, rays, live, tmin, widen), codegen
+            return x if real.bitwidth == 32 else builder.fpext(x, context.get_value_type(real))
+        return _slab_lanes(context, builder, signature, real, plane, rays_v, live_v, live_t, tmin_v, tmin_t,
+                           widen_v, widen_t)
+    return types.Tuple((types.int64, real))(boxes, j, rays, live, tmin, widen), codegen
 
 
 @intrinsic
@@ -332,6 +363,9 @@ def face_rays(vertices, faces, f, axes, frames, count, live, tmin, hits, rays, w
     return redo
 
 
+_boxes_of = wide_bvh.on_the_stack(6 * WIDTH, "A block's faces' boxes: rows lo.x, lo.y, lo.z, hi.x, hi.y, hi.z.")
+
+
 @njit(**NO_REFCOUNT)
 def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, formula, root=0,
                         instances=(None, None, None)):
@@ -371,6 +405,8 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
         for a in range(3):
             shared = shared and axes[3 * i + a] == axes[a]
     kxyz = (axes[0], axes[1], axes[2])
+    lanes = wide_bvh.lanes_of(tmin)
+    boxes = _boxes_of(np.float32)
     codes = wide_bvh.stack_of(np.int32)
     masks = wide_bvh.stack_of(np.int64)
     nears = wide_bvh.stack_of(tmin)
@@ -384,6 +420,40 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
         near = nears[sp]
         live, n_live = rays_within(rays, masks[sp], near)
         if n_live == 0:
+            continue
+        if code < 0 and wide_bvh.is_block(code) and shared and n_live > SINGLE:
+            # A block (a float32 tree's node of single triangles) entered by several rays: each
+            # face's box, made from its corners, against the rays, and the face against those
+            # that enter it, as the node it replaces had its faces' boxes.
+            start, size = wide_bvh.leaf_span(code, links)
+            wide_bvh.block_boxes(nodes, wide_bvh.block_at(code) + BLOCK_HEADER, size, boxes)
+            for j in range(size):
+                entered, _ = box_rays_of(boxes, j, rays, live, tmin, widen)
+                if entered == 0:
+                    continue
+                f = start + j
+                each = face_rays(vertices, faces, f, kxyz, frames, count, entered, tmin, hits, rays, widen)
+                while each != 0:    # a face whose edge rounded to zero
+                    i = trailing_zeros(each)
+                    each &= each - 1
+                    origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
+                    direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
+                    hit = _leaf_closest(vertices, faces, spheres, instances, f, 1, _frame(axes, frames, i), origin,
+                                        direction, tmin, (t[i], best[i], kind[i], row[i]), formula)
+                    t[i], best[i], kind[i], row[i] = hit
+                    rays[REACH * PACKET + i] = hit[0] * widen
+            continue
+        if code < 0 and wide_bvh.is_block(code):
+            # A block entered by few rays, or by rays of other frame axes: its faces tested at
+            # once for each ray, as a single ray does (block_closest).
+            start, size = wide_bvh.leaf_span(code, links)
+            while live != 0:
+                i = trailing_zeros(live)
+                live &= live - 1
+                hit = block_closest(vertices, faces, nodes, wide_bvh.block_at(code), start, size,
+                                    _frame(axes, frames, i), tmin, (t[i], best[i], kind[i], row[i]), lanes)
+                t[i], best[i], kind[i], row[i] = hit
+                rays[REACH * PACKET + i] = hit[0] * widen
             continue
         if code < 0 and shared and n_live > SINGLE:
             start, size = wide_bvh.leaf_span(code, links)

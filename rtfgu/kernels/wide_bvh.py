@@ -195,11 +195,12 @@ def enter_node_any(nodes, links, node, origin, inv, tmin, reach, widen, entry, s
 
 
 @njit(cache=True, error_model="numpy", inline="always")
-def _flat_int(links, at):
-    """The int32 value at float ``at`` of the (N, ROWS, WIDTH) table ``links``."""
+def flat_value(table, at):
+    """The value at ``at`` of the (N, ROWS, WIDTH) table, counted from its start (a block's
+    header and corners: rtfgu.accelerators.wide_bvh.with_blocks)."""
     node = at // (ROWS * WIDTH)
     k = at - node * (ROWS * WIDTH)
-    return links[node, k // WIDTH, k % WIDTH]
+    return table[node, k // WIDTH, k % WIDTH]
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -220,8 +221,61 @@ def leaf_span(code, links):
     leaf = ~code
     count = (leaf & ((1 << LEAF_BITS) - 1)) + 1
     if leaf >> BLOCK_BIT:
-        return np.int64(_flat_int(links, block_at(code))), count
+        return np.int64(flat_value(links, block_at(code))), count
     return leaf >> LEAF_BITS, count
+
+
+def _block_rows(context, builder, signature, nodes_v, at_v, count_v):
+    """For the codegen of a block's test: (corner(k), valid, vt): corner(k) the block's
+    corners' row k (0-8: v0.x, v0.y, v0.z, v1.x, ...; an i64 value) as WIDTH float32 lanes,
+    each a masked load of its ``count`` lanes (NaN in the others), valid the mask of the
+    lanes below ``count``."""
+    ft = ir.FloatType()
+    vt = ir.VectorType(ft, WIDTH)
+    i64, i32 = ir.IntType(64), ir.IntType(32)
+    lanes = ir.VectorType(ir.IntType(1), WIDTH)
+    array = context.make_array(signature.args[0])(context, builder, nodes_v)
+    count64 = context.cast(builder, count_v, signature.args[2], types.int64)
+    base = builder.gep(array.data, [context.cast(builder, at_v, signature.args[1], types.int64)])
+    i64v = ir.VectorType(i64, WIDTH)
+    splat = builder.shuffle_vector(builder.insert_element(ir.Constant(i64v, ir.Undefined), count64, ir.Constant(i32, 0)),
+                                   ir.Constant(i64v, ir.Undefined), ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+    valid = builder.icmp_signed("<", ir.Constant(i64v, list(range(WIDTH))), splat)
+    load = cgutils.get_or_insert_function(
+        builder.module, ir.FunctionType(vt, [vt.as_pointer(), i32, lanes, vt]), "llvm.masked.load.v8f32.p0")
+    nan = ir.Constant(vt, [math.nan] * WIDTH)
+
+    def corner(k):
+        p = builder.gep(base, [builder.mul(k, count64)])
+        return builder.call(load, [builder.bitcast(p, vt.as_pointer()), ir.Constant(i32, 4), valid, nan])
+    return corner, valid, vt
+
+
+@intrinsic
+def block_boxes(typingctx, nodes, at, count, out):
+    """The boxes of a block's ``count`` faces (their corners' nine rows from float ``at`` of
+    ``nodes``) into ``out`` (a pointer to six rows of WIDTH float32: lo.x, lo.y, lo.z, hi.x,
+    hi.y, hi.z of each face): the smallest and largest of each coordinate of its three
+    corners, exact (a face's points lie in it)."""
+    if not (typed_for_nodes(nodes, types.float32, out) and isinstance(at, types.Integer)
+            and isinstance(count, types.Integer)):
+        return None
+
+    def codegen(context, builder, signature, args):
+        nodes_v, at_v, count_v, out_v = args
+        corner, _, vt = _block_rows(context, builder, signature, nodes_v, at_v, count_v)
+        i64 = ir.IntType(64)
+        for a in range(3):
+            c = [corner(ir.Constant(i64, 3 * v + a)) for v in range(3)]
+            lo = builder.select(builder.fcmp_ordered("<", c[1], c[0]), c[1], c[0])
+            lo = builder.select(builder.fcmp_ordered("<", c[2], lo), c[2], lo)
+            hi = builder.select(builder.fcmp_ordered(">", c[1], c[0]), c[1], c[0])
+            hi = builder.select(builder.fcmp_ordered(">", c[2], hi), c[2], hi)
+            for row, value in ((a, lo), (3 + a, hi)):
+                p = builder.gep(out_v, [ir.Constant(i64, row * WIDTH)])
+                builder.store(value, builder.bitcast(p, vt.as_pointer()), align=4)
+        return context.get_dummy_value()
+    return types.none(nodes, at, count, out), codegen
 
 
 @intrinsic
@@ -240,32 +294,20 @@ def block_test(typingctx, nodes, at, count, frame, tmin, limit, out):
 
     def codegen(context, builder, signature, args):
         nodes_v, at_v, count_v, frame_v, tmin_v, limit_v, out_v = args
-        ft = ir.FloatType()
-        vt = ir.VectorType(ft, WIDTH)
+        rows, valid, vt = _block_rows(context, builder, signature, nodes_v, at_v, count_v)
         i64, i32 = ir.IntType(64), ir.IntType(32)
         lanes = ir.VectorType(ir.IntType(1), WIDTH)
-        array = context.make_array(signature.args[0])(context, builder, nodes_v)
-        count64 = context.cast(builder, count_v, signature.args[2], types.int64)
-        base = builder.gep(array.data, [context.cast(builder, at_v, signature.args[1], types.int64)])
         shear, origin = builder.extract_value(frame_v, 0), builder.extract_value(frame_v, 1)
         kx, ky, kz = (context.cast(builder, builder.extract_value(shear, a), signature.args[3].types[0].types[a],
                                    types.int64) for a in range(3))
 
-        def splat(x, typ=vt):
-            v = builder.insert_element(ir.Constant(typ, ir.Undefined), x, ir.Constant(i32, 0))
-            return builder.shuffle_vector(v, ir.Constant(typ, ir.Undefined),
+        def splat(x):
+            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
+            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
                                           ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
 
-        valid = builder.icmp_signed("<", ir.Constant(ir.VectorType(i64, WIDTH), list(range(WIDTH))),
-                                    splat(count64, ir.VectorType(i64, WIDTH)))
-        load = cgutils.get_or_insert_function(
-            builder.module, ir.FunctionType(vt, [vt.as_pointer(), i32, lanes, vt]), "llvm.masked.load.v8f32.p0")
-        nan = ir.Constant(vt, [math.nan] * WIDTH)
-
         def corner(vertex, k):
-            row = builder.add(k, ir.Constant(i64, 3 * vertex))
-            p = builder.gep(base, [builder.mul(row, count64)])
-            return builder.call(load, [builder.bitcast(p, vt.as_pointer()), ir.Constant(i32, 4), valid, nan])
+            return rows(builder.add(k, ir.Constant(i64, 3 * vertex)))
 
         Sx, Sy, Sz = (splat(builder.extract_value(shear, 3 + a)) for a in range(3))
         okx, oky, okz = (splat(builder.extract_value(origin, a)) for a in range(3))
