@@ -363,6 +363,25 @@ def face_rays(vertices, faces, f, axes, frames, count, live, tmin, hits, rays, w
     return redo
 
 
+@njit(cache=True, error_model="numpy", inline="always")
+def _alone(each, f, scene, packet, tmin, hits, formula, widen):
+    """Row ``f`` of ``faces`` tested by each ray of the bits ``each`` alone (_leaf_closest),
+    its hit and reach kept: ``scene`` = (vertices, faces, spheres, instances), ``packet`` =
+    (axes, frames, rays, directions) as mesh_closest_packet has them."""
+    vertices, faces, spheres, instances = scene
+    axes, frames, rays, directions = packet
+    t, best, kind, row = hits
+    while each != 0:
+        i = trailing_zeros(each)
+        each &= each - 1
+        origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
+        direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
+        hit = _leaf_closest(vertices, faces, spheres, instances, f, 1, _frame(axes, frames, i), origin, direction,
+                            tmin, (t[i], best[i], kind[i], row[i]), formula)
+        t[i], best[i], kind[i], row[i] = hit
+        rays[REACH * PACKET + i] = hit[0] * widen
+
+
 _boxes_of = wide_bvh.on_the_stack(6 * WIDTH, "A block's faces' boxes: rows lo.x, lo.y, lo.z, hi.x, hi.y, hi.z.")
 
 
@@ -433,15 +452,8 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
                     continue
                 f = start + j
                 each = face_rays(vertices, faces, f, kxyz, frames, count, entered, tmin, hits, rays, widen)
-                while each != 0:    # a face whose edge rounded to zero
-                    i = trailing_zeros(each)
-                    each &= each - 1
-                    origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
-                    direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
-                    hit = _leaf_closest(vertices, faces, spheres, instances, f, 1, _frame(axes, frames, i), origin,
-                                        direction, tmin, (t[i], best[i], kind[i], row[i]), formula)
-                    t[i], best[i], kind[i], row[i] = hit
-                    rays[REACH * PACKET + i] = hit[0] * widen
+                _alone(each, f, (vertices, faces, spheres, instances), (axes, frames, rays, directions), tmin, hits,
+                       formula, widen)     # a face whose edge rounded to zero
             continue
         if code < 0 and wide_bvh.is_block(code):
             # A block entered by few rays, or by rays of other frame axes: its faces tested at
@@ -461,15 +473,9 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
                 mesh_face = faces[f, 0] != SPHERE_ROW and faces[f, 0] != INSTANCE_ROW
                 each = live if not mesh_face else face_rays(vertices, faces, f, kxyz, frames, count, live, tmin,
                                                             hits, rays, widen)
-                while each != 0:    # a sphere or an instance, or a face whose edge rounded to zero
-                    i = trailing_zeros(each)
-                    each &= each - 1
-                    origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
-                    direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
-                    hit = _leaf_closest(vertices, faces, spheres, instances, f, 1, _frame(axes, frames, i), origin,
-                                        direction, tmin, (t[i], best[i], kind[i], row[i]), formula)
-                    t[i], best[i], kind[i], row[i] = hit
-                    rays[REACH * PACKET + i] = hit[0] * widen
+                # a sphere or an instance, or a face whose edge rounded to zero
+                _alone(each, f, (vertices, faces, spheres, instances), (axes, frames, rays, directions), tmin, hits,
+                       formula, widen)
             continue
         if n_live <= SINGLE or code < 0:
             while live != 0:
