@@ -403,12 +403,11 @@ class Rtfgu(System):
         self.vertices = {"float64": np.ascontiguousarray(mesh.vertices, dtype=np.float64),
                          "float32": np.ascontiguousarray(mesh.vertices, dtype=np.float32)}
         blocks_start = time.perf_counter()
-        blocked = bvh.wide_with_blocks((0,), self.vertices["float32"], faces4)
+        # The tree each precision's render traverses (rtfgu.kernels.render.numba_tree).
+        self.wide = {p: bvh.wide_with_blocks((0,), self.vertices[p], faces4) for p in ("float64", "float32")}
         seconds = time.perf_counter() - start
         self.tree_seconds.append((bvh.build_seconds, wide.build_seconds, time.perf_counter() - blocks_start))
         self.bvh, self.faces4 = bvh, faces4
-        # The tree each precision's render traverses (rtfgu.kernels.render.numba_tree).
-        self.wide = {"float64": wide, "float32": blocked}
         return seconds
 
     def paths(self):
@@ -434,7 +433,8 @@ class Rtfgu(System):
             return Path_(self.name + " packets", precision, self.threads, run,
                          note="the wide tree, packets of %dx%d rays (rtfgu.kernels.packet)" % (TILE_W, TILE_H))
         binary = "the binary tree (the render's where the CPU has no AVX)"
-        return [path("float64", self.wide["float64"].nodes), packets("float64"),
+        return [path("float64", self.wide["float64"].nodes, "the wide tree with blocks of gathered corners (the "
+                     "render's in float64)"), packets("float64"),
                 path("float32", self.wide["float32"].nodes, "the wide tree with blocks (the render's in float32)"),
                 packets("float32"),
                 path("float64", self.bvh.nodes, binary), path("float32", self.bvh.nodes, binary)]
@@ -446,13 +446,14 @@ class Rtfgu(System):
 
     def build_note(self):
         binary, wide, blocks = zip(*(self.tree_seconds[1:] or self.tree_seconds))
-        return ("flat_bvh.build alone: %.3g s, the collapse to the wide tree %.3g s, its blocks %.3g s (medians); "
-                "%d binary nodes, depth %d; %d wide nodes (%d bytes each), in float32 %d with %d blocks; the "
-                "binary table (%.1f bytes per triangle, the WGSL path's) is not counted" % (
+        return ("flat_bvh.build alone: %.3g s, the collapse to the wide tree %.3g s, its blocks in both precisions "
+                "%.3g s (medians); %d binary nodes, depth %d; %d wide nodes (%d bytes each) and %d blocks (with "
+                "their corners in float32); the binary table (%.1f bytes per triangle, the WGSL path's) is not "
+                "counted" % (
                     statistics.median(binary), statistics.median(wide), statistics.median(blocks),
-                    self.bvh.num_nodes, self.bvh.depth(), len(self.wide["float64"].nodes),
-                    self.wide["float64"].nodes[0].nbytes, count_nodes(self.wide["float32"]),
-                    count_blocks(self.wide["float32"]), self.bvh.nbytes / len(self.faces4)))
+                    self.bvh.num_nodes, self.bvh.depth(), count_nodes(self.wide["float32"]),
+                    self.wide["float32"].nodes[0].nbytes, count_blocks(self.wide["float32"]),
+                    self.bvh.nbytes / len(self.faces4)))
 
 
 class Embree(System):

@@ -201,12 +201,10 @@ def run(kernel, vertices, rows, wide, origins, directions, dtype, bound=None):
 
 
 def render_tree(wide, vertices, rows, dtype):
-    """The wide tree a render of ``dtype`` traverses: in float32 with its blocks
-    (rtfgu.kernels.render.numba_tree), which the packets test face by face against their
-    rays or ray by ray."""
-    if dtype != np.float32:
-        return wide
-    blocked = wide_bvh.with_blocks(wide, vertices.astype(np.float32), rows)
+    """The wide tree a render of ``dtype`` traverses: with its blocks
+    (rtfgu.kernels.render.numba_tree; their corners copied in float32, gathered in float64),
+    which the packets test face by face against their rays or ray by ray."""
+    blocked = wide_bvh.with_blocks(wide, vertices.astype(dtype), rows)
     assert len(blocked.nodes) != len(wide.nodes) or blocked.nodes.tobytes() != wide.nodes.tobytes()
     return blocked
 

@@ -345,12 +345,12 @@ def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dt
     assert binary[0].tobytes() == truth.tobytes()
     assert wider[0].tobytes() == truth.tobytes()
     assert np.array_equal(binary[1], wider[1])
-    if dtype == np.float32:     # the float32 render's tree: its bottom nodes made blocks
-        blocked = wide_bvh.with_blocks(wide, vertices.astype(np.float32), rows)
-        assert len(block_codes(blocked)) > 0
-        with_blocks = traced(vertices, rows, blocked.nodes, origins, directions, dtype)
-        assert with_blocks[0].tobytes() == truth.tobytes()
-        assert np.array_equal(binary[1], with_blocks[1])
+    # the render's tree: its bottom nodes made blocks (corners copied in float32, gathered in float64)
+    blocked = wide_bvh.with_blocks(wide, vertices.astype(dtype), rows)
+    assert len(block_codes(blocked)) > 0
+    with_blocks = traced(vertices, rows, blocked.nodes, origins, directions, dtype)
+    assert with_blocks[0].tobytes() == truth.tobytes()
+    assert np.array_equal(binary[1], with_blocks[1])
     if mesh == "coincident":
         first = {}
         for k, f in enumerate(faces.tolist()):
@@ -363,10 +363,7 @@ def test_the_wide_traversal_finds_the_binary_ones_face_and_t_and_shadow(mesh, dt
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 def test_no_ray_from_inside_a_closed_mesh_leaks_through_the_wide_tree(dtype):
     vertices, rows, wide, rays = rays_from_inside()
-    trees = [wide.nodes]
-    if dtype == np.float32:
-        trees.append(wide_bvh.with_blocks(wide, vertices.astype(np.float32), rows).nodes)
-    for nodes in trees:
+    for nodes in (wide.nodes, wide_bvh.with_blocks(wide, vertices.astype(dtype), rows).nodes):
         for origins, directions in rays:
             hits, _ = traced(vertices, rows, nodes, origins, directions, dtype)
             assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))
@@ -386,26 +383,37 @@ def block_codes(wide):
     return out
 
 
-def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once_with_its_corners():
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
     """with_blocks: every face of the wide tree is in one leaf or one block, as before; a
-    block's header names consecutive faces and its rows are their corners, copied; the
-    roots stay nodes; the table is the nodes then the blocks, in about the bytes it had."""
+    block's header names consecutive faces; in float32 its rows are their corners, copied,
+    in float64 it is the header alone; the roots stay nodes; the table is the nodes then the
+    blocks, in about the bytes it had in float32 and fewer in float64."""
     vertices, faces = traversal_mesh("soup")
     _, wide, rows = tree_of(vertices, faces)
-    v32 = vertices.astype(np.float32)
-    blocked = wide_bvh.with_blocks(wide, v32, rows)
-    assert blocked.nodes.dtype == np.float32 and blocked.nodes.nbytes < 1.1 * wide.nodes.nbytes
+    corners = vertices.astype(dtype)
+    blocked = wide_bvh.with_blocks(wide, corners, rows)
+    assert blocked.nodes.dtype == np.float32
+    if dtype == np.float32:
+        assert blocked.nodes.nbytes < 1.1 * wide.nodes.nbytes
+    else:
+        assert blocked.nodes.nbytes < 0.8 * wide.nodes.nbytes
     flat = blocked.nodes.reshape(-1)
-    seen = []
+    seen, ends = [], []
     for code in block_codes(blocked):
         at = ((~code) & ((1 << wide_bvh.BLOCK_BIT) - 1)) >> wide_bvh.LEAF_BITS
         first, count = int(flat[at:at + 1].view(np.int32)[0]), ((~code) & 7) + 1
-        corners = flat[at + 1:at + 1 + 9 * count].reshape(9, count)
-        assert corners.T.tobytes() == v32[rows[first:first + count, :3]].reshape(count, 9).tobytes()
+        if dtype == np.float32:
+            stored = flat[at + 1:at + 1 + 9 * count].reshape(9, count)
+            assert stored.T.tobytes() == corners[rows[first:first + count, :3]].reshape(count, 9).tobytes()
+        ends.append((at, at + wide_bvh.BLOCK_HEADER + (9 * count if dtype == np.float32 else 0)))
         seen += range(first, first + count)
+    ends.sort()
+    assert all(b[0] >= a[1] for a, b in zip(ends, ends[1:]))     # the blocks do not overlap
     links, stack = blocked.links, list(blocked.roots)
     while stack:
         n = stack.pop()
+        assert (n + 1) * wide_bvh.ROWS * wide_bvh.WIDTH <= ends[0][0]     # the nodes before the blocks
         for j in range(wide_bvh.WIDTH):
             code = int(links[n, wide_bvh.CODE_ROW, j])
             if not np.isfinite(blocked.nodes[n, 0, j]):
@@ -419,6 +427,15 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once_with_its_corne
     assert sorted(seen) == list(range(len(rows)))
     assert len(block_codes(blocked)) > 0
     assert blocked.roots == (0,)
+
+
+def test_the_float64_blocks_refuse_faces_they_cannot_read_as_rows():
+    vertices, faces = traversal_mesh("soup")
+    _, wide, rows = tree_of(vertices, faces)
+    with pytest.raises(ValueError, match="int32 rows of 4"):
+        wide_bvh.with_blocks(wide, vertices, rows[:, :3].copy())
+    with pytest.raises(ValueError, match="int32 rows of 4"):
+        wide_bvh.with_blocks(wide, vertices, rows.astype(np.int64))
 
 
 def test_a_block_test_reads_only_its_own_lanes():
@@ -451,13 +468,47 @@ def test_a_block_test_reads_only_its_own_lanes():
             assert (out[:count] == 1).all(), (count, at, out)
 
 
-def test_a_float64_scene_traverses_no_blocks_and_a_float32_one_does():
+def test_a_gathered_block_test_reads_only_its_own_faces():
+    """A float64 block's faces are rows of the faces table followed by other rows: the
+    block's rows must not take them as faces. Its faces are hit at t = 1 and the rows after
+    them are faces at t = 0.5 that the ray would hit, in every lane; each lane's t is the
+    scalar test's."""
+    from rtfgu.kernels.wide_bvh import block_test_gathered
+
+    @njit
+    def test(vertices, faces, first, count, origin, direction):
+        lanes = lanes_of(np.float64)
+        mask = block_test_gathered(vertices, faces, first, count, ray_frame(origin, direction), 0.0, np.inf, lanes)
+        out = np.empty(8, dtype=np.float64)
+        for j in range(8):
+            out[j] = lanes[j]
+        return mask, out
+
+    # vertices 0-2: a triangle at z = 1, 3-5 one at z = 0.5, both under the ray
+    corners = np.array([[-1.0, -1.0, 1.0], [3.0, -1.0, 1.0], [-1.0, 3.0, 1.0],
+                        [-1.0, -1.0, 0.5], [3.0, -1.0, 0.5], [-1.0, 3.0, 0.5]])
+    origin, direction = (0.25, 0.25, 0.0), (0.0, 0.0, 1.0)
+    for count in range(1, 9):
+        for first in (0, 3):
+            rows = np.array([[3, 4, 5, 0]] * 24, dtype=np.int32)
+            rows[first:first + count] = [0, 1, 2, 0]
+            mask, out = test(corners, rows, first, count, origin, direction)
+            assert mask == (1 << count) - 1, (count, first, bin(mask))
+            assert (out[:count] == 1).all(), (count, first, out)
+
+
+def test_a_scene_traverses_blocks_in_both_precisions_with_corners_in_float32_only():
     from rtfgu.layout import compile_scene
     from rtfgu.scenes import SCENES
 
     scene = SCENES["suffern_29_uv_mesh"]()
-    assert block_codes(render_kernels.numba_tree(compile_scene(scene, "float64").mesh)) == []
-    assert len(block_codes(render_kernels.numba_tree(compile_scene(scene, "float32").mesh))) > 0
+    trees = {p: render_kernels.numba_tree(compile_scene(scene, p).mesh) for p in ("float32", "float64")}
+    for tree in trees.values():
+        assert len(block_codes(tree)) > 0
+    faces = sum(((~c) & 7) + 1 for c in block_codes(trees["float64"]))
+    # the same blocks; float32's hold 36 bytes of corners a face
+    assert len(block_codes(trees["float32"])) == len(block_codes(trees["float64"]))
+    assert trees["float32"].nodes.nbytes - trees["float64"].nodes.nbytes >= 36 * faces - wide_bvh.ROWS * wide_bvh.WIDTH * 4
 
 
 def test_the_traversals_called_once_a_ray_count_no_references():

@@ -65,14 +65,17 @@ class FlatBVH:
         return self._wide[1]
 
     def wide_with_blocks(self, roots, vertices, faces):
-        """The wide tree with its bottom nodes made blocks of the float32 ``vertices``' corners
-        (rtfgu.accelerators.wide_bvh.with_blocks): ``vertices`` and ``faces`` those this table
-        was built over (a FlatMesh's), made at the first call and kept with the table."""
+        """The wide tree with its bottom nodes made blocks of faces
+        (rtfgu.accelerators.wide_bvh.with_blocks; their corners copied where ``vertices`` are
+        float32): ``vertices`` and ``faces`` those this table was built over (a FlatMesh's),
+        made at the first call for their precision and kept with the table."""
         from .wide_bvh import with_blocks
-        roots = tuple(int(r) for r in roots)
-        if self._blocked is None or self._blocked[0] != roots:
-            self._blocked = (roots, with_blocks(self.wide(roots), vertices, faces))
-        return self._blocked[1]
+        key = (tuple(int(r) for r in roots), np.dtype(vertices.dtype))
+        if self._blocked is None or self._blocked[0] != key[0]:
+            self._blocked = (key[0], {})
+        if key[1] not in self._blocked[1]:
+            self._blocked[1][key[1]] = with_blocks(self.wide(key[0]), vertices, faces)
+        return self._blocked[1][key[1]]
 
     @property
     def num_nodes(self) -> int:

@@ -11,8 +11,8 @@ column per child:
     rows 3-5  hi.x, hi.y, hi.z
     row 6     int32 bits: the child's code, what the traversal pushes: an inner child's node
               (>= 0), or a leaf child's ~(first << LEAF_BITS | count - 1) (< 0), its first
-              primitive and its count (leaf_code), or in a float32 render's tree a block's
-              code (with_blocks: a node of single triangles made one vector test)
+              primitive and its count (leaf_code), or in a render's tree a block's code
+              (with_blocks: a node of single triangles made one vector test)
 
 A column no child fills has the empty box (lo = +inf, hi = -inf), which no ray enters. The
 boxes are the binary tree's own or its primitives' (FlatBVH.boxes), rounded outward to
@@ -46,6 +46,9 @@ BLOCK_BIT = 30
 MAX_FIRST = 2 ** (BLOCK_BIT - LEAF_BITS)
 # A block: a header, its first face (int32), then its corners.
 BLOCK_HEADER = 1
+# A face's row in the faces table: its three vertices' rows and its place in Scene.shapes
+# (a float64 block's test loads its faces' rows at once).
+FACE_COLUMNS = 4
 CORNER_ROWS = 9
 # A node's rows: six of box planes and the children's codes (CODE_ROW).
 ROWS = 7
@@ -160,21 +163,24 @@ def _collapse(nodes, links, boxes, roots, out, out_links, wide_roots, width, lea
 
 
 def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideBVH:
-    """The tree ``wide`` with its bottom nodes made blocks, for float32 ``vertices`` (the
-    corners are their copies): a node whose every column is one triangle, those triangles
-    being the rows first .. first + count - 1 of ``faces``, becomes a **block** of ``count``
-    faces stored per coordinate, as Embree's ``Triangle4`` leaves are (Wald et al. 2014,
-    section 4.2), so that one vector test tests them all (rtfgu.kernels.wide_bvh.block_test)
-    instead of their eight boxes and then each face entered.
+    """The tree ``wide`` with its bottom nodes made blocks: a node whose every column is one
+    triangle, those triangles being the rows first .. first + count - 1 of ``faces``, becomes
+    a **block** of ``count`` faces that one vector test tests at once
+    (rtfgu.kernels.wide_bvh.block_test, block_test_gathered) instead of their eight boxes and
+    then each face entered.
 
-    The blocks follow the nodes in the same float32 table, without padding: at float
-    ``where`` (counted from the table's start) the block's first face (int32 bits), then
-    nine rows of ``count`` values, v0.x of its faces, v0.y, v0.z, v1.x, ... v2.z: 4 + 36 *
-    count bytes, where the node was 224. Its parent's column holds the code ~(1 << BLOCK_BIT
-    | where << LEAF_BITS | count - 1): the test needs nothing from the block before its
-    corners. A root stays a node; a node whose columns hold a sphere or an instance, or whose
-    faces are not consecutive rows, stays a node. The nodes left are numbered again in their
-    order. A table past MAX_FIRST floats gets no blocks."""
+    The blocks follow the nodes in the same float32 table, without padding. At float
+    ``where`` (counted from the table's start), each block's first face (int32 bits); then,
+    for float32 ``vertices``, nine rows of ``count`` values, v0.x of its faces, v0.y, v0.z,
+    v1.x, ... v2.z, their corners' copies stored per coordinate as Embree's ``Triangle4``
+    leaves are (Wald et al. 2014, section 4.2): 4 + 36 * count bytes, where the node was 224.
+    For float64 ``vertices`` a block is its first face alone (4 bytes): its test gathers the
+    corners through ``faces`` ((F, 4) rows), since corners copied in float64 (72 bytes a face)
+    would take the table past 64 bytes a triangle. Its parent's column holds the code
+    ~(1 << BLOCK_BIT | where << LEAF_BITS | count - 1): the test needs nothing from the block
+    before its corners. A root stays a node; a node whose columns hold a sphere or an
+    instance, or whose faces are not consecutive rows, stays a node. The nodes left are
+    numbered again in their order. A table past MAX_FIRST floats gets no blocks."""
     nodes = wide.nodes
     links = nodes.view(np.int32)
     n = len(nodes)
@@ -197,7 +203,11 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     kept = ~pure
     number = np.cumsum(kept) - 1                 # a kept node's new number
     firsts, counts = lo[pure], count[pure]
-    sizes = BLOCK_HEADER + CORNER_ROWS * counts
+    corners = vertices.dtype == np.float32
+    if not corners and (faces.shape[1] != FACE_COLUMNS or not faces.flags.c_contiguous or faces.dtype != np.int32):
+        raise ValueError("with_blocks: the faces of a float64 tree's blocks are read as C-ordered int32 rows of "
+                         "%d, not %s %s" % (FACE_COLUMNS, faces.dtype, faces.shape))
+    sizes = BLOCK_HEADER + CORNER_ROWS * counts * corners
     where = len(number[kept]) * ROWS * WIDTH + np.cumsum(sizes) - sizes
     total = int(where[-1] + sizes[-1])
     if total >= MAX_FIRST:
@@ -216,11 +226,12 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     new_codes[renumber] = number[new_codes[renumber]]
     flat = out.view(np.int32)
     flat[where] = firsts
-    # Each block's faces at once: face k of the blocks is lane j of block b.
-    b = np.repeat(np.arange(len(counts)), counts)
-    j = np.arange(len(b)) - np.repeat(np.cumsum(counts) - counts, counts)
-    at = (where[b] + BLOCK_HEADER + j)[:, None] + np.arange(CORNER_ROWS)[None, :] * counts[b][:, None]
-    out[at] = vertices[faces[firsts[b] + j, :3]].reshape(-1, CORNER_ROWS)
+    if corners:
+        # Each block's faces at once: face k of the blocks is lane j of block b.
+        b = np.repeat(np.arange(len(counts)), counts)
+        j = np.arange(len(b)) - np.repeat(np.cumsum(counts) - counts, counts)
+        at = (where[b] + BLOCK_HEADER + j)[:, None] + np.arange(CORNER_ROWS)[None, :] * counts[b][:, None]
+        out[at] = vertices[faces[firsts[b] + j, :3]].reshape(-1, CORNER_ROWS)
     out[int(total):] = 0
     blocked = out.reshape(-1, ROWS, WIDTH)
     return WideBVH(blocked, tuple(int(number[r]) for r in wide.roots), wide.build_seconds)

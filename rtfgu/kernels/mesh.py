@@ -272,34 +272,22 @@ def _wide_start(origin, direction, tmin):
 
 
 def block_closest(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
-    """The nearest of a block's faces faces[first:first + count] (their corners at float
-    ``at`` of ``nodes``: rtfgu.accelerators.wide_bvh.with_blocks) and the best so far
-    ``state``, by the tie rule (mesh_closest); ``lanes``: WIDTH floats for the test's ts.
-    Blocks are made for float32 trees only; a float64 test (never given one) types the
-    scalar faces' loop."""
+    """The nearest of a block's faces faces[first:first + count] and the best so far
+    ``state``, by the tie rule (mesh_closest); ``lanes``: WIDTH values of tmin's type for the
+    test's ts. In float32 the block's corners are at float ``at`` of ``nodes``
+    (rtfgu.accelerators.wide_bvh.with_blocks; block_test), in float64 they are gathered
+    through ``faces`` (block_test_gathered)."""
     return as_python(_typed_block_closest, vertices, faces, nodes, at, first, count, frame, tmin, state, lanes)
 
 
 @overload(block_closest, inline="always")
 def _typed_block_closest(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
-    if tmin != types.float32:
-        def scalar(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
-            tmax, best, best_kind, best_row = state
-            inf = lit(math.inf, tmin)
-            for f in range(first, first + count):
-                idx = faces[f, 3]
-                t = intersect_face(vertices, faces, f, frame, tmin, tmax if idx > best else np.nextafter(tmax, inf))
-                if t < tmax or (t == tmax and idx < best):
-                    tmax, best, best_kind, best_row = t, idx, MESH, f
-            return tmax, best, best_kind, best_row
-        return scalar
-
     def vector(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
         tmax, best, best_kind, best_row = state
         inf = lit(math.inf, tmin)
         # Every lane hit in [tmin, the float above the best t), then the tie rule lane by lane:
         # the lexicographic least (t, scene index), whatever the lanes' order.
-        mask = wide_bvh.block_test(nodes, at + BLOCK_HEADER, count, frame, tmin, np.nextafter(tmax, inf), lanes)
+        mask = _block_lanes(vertices, faces, nodes, at, first, count, frame, tmin, np.nextafter(tmax, inf), lanes)
         zeroed = mask >> WIDTH
         mask = (mask | zeroed) & ((1 << WIDTH) - 1)
         for j in range(WIDTH):
@@ -314,6 +302,35 @@ def _typed_block_closest(vertices, faces, nodes, at, first, count, frame, tmin, 
         return tmax, best, best_kind, best_row
     return vector
 
+
+def _block_lanes(vertices, faces, nodes, at, first, count, frame, tmin, limit, lanes):
+    """The block's vector test in tmin's precision: its copied corners (float32) or its
+    corners gathered (float64)."""
+    return as_python(_typed_block_lanes, vertices, faces, nodes, at, first, count, frame, tmin, limit, lanes)
+
+
+@overload(_block_lanes, inline="always")
+def _typed_block_lanes(vertices, faces, nodes, at, first, count, frame, tmin, limit, lanes):
+    if tmin == types.float32:
+        return lambda vertices, faces, nodes, at, first, count, frame, tmin, limit, lanes: wide_bvh.block_test(
+            nodes, at + BLOCK_HEADER, count, frame, tmin, limit, lanes)
+    return lambda vertices, faces, nodes, at, first, count, frame, tmin, limit, lanes: wide_bvh.block_test_gathered(
+        vertices, faces, first, count, frame, tmin, limit, lanes)
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def block_any(vertices, faces, nodes, at, first, count, frame, tmin, tmax, lanes):
+    """Whether a face of a block (block_closest's arguments) is hit in [tmin, tmax)
+    (mesh_any): its vector test, and the scalar test for a lane whose edge function rounded
+    to zero."""
+    mask = _block_lanes(vertices, faces, nodes, at, first, count, frame, tmin, tmax, lanes)
+    if mask & ((1 << WIDTH) - 1):
+        return True
+    zeroed = mask >> WIDTH
+    for j in range(WIDTH):
+        if zeroed >> j & 1 and intersect_face(vertices, faces, first + j, frame, tmin, tmax) < tmax:
+            return True
+    return False
 
 
 def _wide_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, bound, formula, root, instances):
@@ -440,8 +457,11 @@ def _wide_any(vertices, faces, nodes, links, spheres, origin, direction, tmin, b
             sp = wide_bvh.enter_node_any(nodes, links, code, origin, inv, tmin, bound, widen, entry, stack, sp)
         else:
             first, count = wide_bvh.leaf_span(code, links)
-            if _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, bound,
-                         formula):
+            if wide_bvh.is_block(code):
+                if block_any(vertices, faces, nodes, wide_bvh.block_at(code), first, count, frame, tmin, bound, entry):
+                    return True
+            elif _leaf_any(vertices, faces, spheres, instances, first, count, frame, origin, direction, tmin, bound,
+                           formula):
                 return True
         if sp == 0:
             return False

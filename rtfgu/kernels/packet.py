@@ -51,11 +51,12 @@ from llvmlite import ir
 from numba import njit, types
 from numba.core import cgutils
 from numba.cpython.unsafe.numbers import trailing_zeros
-from numba.extending import intrinsic
+from numba.extending import intrinsic, overload
 
 from ..accelerators.wide_bvh import BLOCK_HEADER, CODE_ROW, ROWS, WIDTH
 from ..layout import INSTANCE_ROW, MESH, SPHERE_ROW
 from . import wide_bvh
+from .dispatch_support import as_python
 from .float3 import lit, lit_per_precision
 from .mesh import NO_REFCOUNT, WIDEN32, WIDEN64, _inverse, _leaf_closest, block_closest, mesh_closest, ray_frame
 
@@ -177,9 +178,9 @@ def box_rays(typingctx, nodes, n, j, rays, live, tmin, widen):
 
 @intrinsic
 def box_rays_of(typingctx, boxes, j, rays, live, tmin, widen):
-    """box_rays for box ``j`` of ``boxes`` (a pointer to six rows of WIDTH float32 values:
-    lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of each box, block_boxes)."""
-    if not (isinstance(boxes, types.CPointer) and boxes.dtype == types.float32 and isinstance(rays, types.CPointer)
+    """box_rays for box ``j`` of ``boxes`` (a pointer to six rows of WIDTH values of tmin's
+    type: lo.x, lo.y, lo.z, hi.x, hi.y, hi.z of each box, _block_boxes)."""
+    if not (isinstance(boxes, types.CPointer) and boxes.dtype == tmin and isinstance(rays, types.CPointer)
             and isinstance(tmin, types.Float) and isinstance(j, types.Integer)):
         return None
     real = tmin
@@ -191,8 +192,7 @@ def box_rays_of(typingctx, boxes, j, rays, live, tmin, widen):
         base = builder.gep(boxes_v, [context.cast(builder, j_v, j_t, types.int64)])
 
         def plane(row):
-            x = builder.load(builder.gep(base, [ir.Constant(i64, row * WIDTH)]))
-            return x if real.bitwidth == 32 else builder.fpext(x, context.get_value_type(real))
+            return builder.load(builder.gep(base, [ir.Constant(i64, row * WIDTH)]))
         return _slab_lanes(context, builder, signature, real, plane, rays_v, live_v, live_t, tmin_v, tmin_t,
                            widen_v, widen_t)
     return types.Tuple((types.int64, real))(boxes, j, rays, live, tmin, widen), codegen
@@ -300,6 +300,22 @@ def frustum_of_packet(rays, count, frustum):
         frustum[a * FRUSTUM_AXIS + I_MIN] = i_min
         frustum[a * FRUSTUM_AXIS + I_MAX] = i_max
     return True
+
+
+def _block_boxes(vertices, faces, nodes, at, first, count, boxes):
+    """The boxes of a block's faces faces[first:first + count] into ``boxes`` (six rows of
+    WIDTH values): from its corners at float ``at`` of ``nodes`` in a float32 tree
+    (block_boxes), from its faces' vertices in a float64 one (block_boxes_gathered)."""
+    return as_python(_typed_block_boxes, vertices, faces, nodes, at, first, count, boxes)
+
+
+@overload(_block_boxes, inline="always")
+def _typed_block_boxes(vertices, faces, nodes, at, first, count, boxes):
+    if vertices.dtype == types.float32:
+        return lambda vertices, faces, nodes, at, first, count, boxes: wide_bvh.block_boxes(
+            nodes, at + BLOCK_HEADER, count, boxes)
+    return lambda vertices, faces, nodes, at, first, count, boxes: wide_bvh.block_boxes_gathered(
+        vertices, faces, first, count, boxes)
 
 
 @njit(cache=True, error_model="numpy", inline="always")
@@ -425,7 +441,7 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
             shared = shared and axes[3 * i + a] == axes[a]
     kxyz = (axes[0], axes[1], axes[2])
     lanes = wide_bvh.lanes_of(tmin)
-    boxes = _boxes_of(np.float32)
+    boxes = _boxes_of(tmin)
     codes = wide_bvh.stack_of(np.int32)
     masks = wide_bvh.stack_of(np.int64)
     nears = wide_bvh.stack_of(tmin)
@@ -445,7 +461,7 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
             # face's box, made from its corners, against the rays, and the face against those
             # that enter it, as the node it replaces had its faces' boxes.
             start, size = wide_bvh.leaf_span(code, links)
-            wide_bvh.block_boxes(nodes, wide_bvh.block_at(code) + BLOCK_HEADER, size, boxes)
+            _block_boxes(vertices, faces, nodes, wide_bvh.block_at(code), start, size, boxes)
             for j in range(size):
                 entered, _ = box_rays_of(boxes, j, rays, live, tmin, widen)
                 if entered == 0:

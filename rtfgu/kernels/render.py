@@ -111,11 +111,9 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
 
 def numba_tree(mesh):
     """The wide tree (rtfgu.accelerators.wide_bvh) the numba path traverses for a FlatMesh:
-    in float32 with its bottom nodes made blocks of their faces' corners (with_blocks; their
-    corners are the float32 vertices), in float64 without."""
-    if mesh.vertices.dtype == np.float32:
-        return mesh.bvh.wide_with_blocks(mesh.tree_roots, mesh.vertices, mesh.faces)
-    return mesh.bvh.wide(mesh.tree_roots)
+    its bottom nodes made blocks (with_blocks), in float32 with copies of their faces'
+    corners, in float64 without (their test gathers the corners through the faces)."""
+    return mesh.bvh.wide_with_blocks(mesh.tree_roots, mesh.vertices, mesh.faces)
 
 
 def mesh_arrays(flat) -> tuple:

@@ -26,7 +26,7 @@ from numba.core import cgutils
 from numba.extending import intrinsic, overload
 
 from ..accelerators.flat_bvh import MAX_DEPTH
-from ..accelerators.wide_bvh import BLOCK_BIT, CODE_ROW, LEAF_BITS, ROWS, WIDTH
+from ..accelerators.wide_bvh import BLOCK_BIT, CODE_ROW, FACE_COLUMNS, LEAF_BITS, ROWS, WIDTH
 
 # A traversal pushes at most WIDTH - 1 entries per level it descends.
 STACK = MAX_DEPTH * WIDTH
@@ -251,6 +251,22 @@ def _block_rows(context, builder, signature, nodes_v, at_v, count_v):
     return corner, valid, vt
 
 
+def _corner_boxes(builder, corner, vt, out_v):
+    """For the codegen of a block's faces' boxes: the smallest and largest of each coordinate
+    of their three corners (corner(vertex, k) as in _watertight_lanes), exact, stored at
+    ``out_v`` as six rows of WIDTH values, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z."""
+    i64 = ir.IntType(64)
+    for a in range(3):
+        c = [corner(v, ir.Constant(i64, a)) for v in range(3)]
+        lo = builder.select(builder.fcmp_ordered("<", c[1], c[0]), c[1], c[0])
+        lo = builder.select(builder.fcmp_ordered("<", c[2], lo), c[2], lo)
+        hi = builder.select(builder.fcmp_ordered(">", c[1], c[0]), c[1], c[0])
+        hi = builder.select(builder.fcmp_ordered(">", c[2], hi), c[2], hi)
+        for row, value in ((a, lo), (3 + a, hi)):
+            p = builder.gep(out_v, [ir.Constant(i64, row * WIDTH)])
+            builder.store(value, builder.bitcast(p, vt.as_pointer()), align=4)
+
+
 @intrinsic
 def block_boxes(typingctx, nodes, at, count, out):
     """The boxes of a block's ``count`` faces (their corners' nine rows from float ``at`` of
@@ -263,19 +279,60 @@ def block_boxes(typingctx, nodes, at, count, out):
 
     def codegen(context, builder, signature, args):
         nodes_v, at_v, count_v, out_v = args
-        corner, _, vt = _block_rows(context, builder, signature, nodes_v, at_v, count_v)
+        rows, _, vt = _block_rows(context, builder, signature, nodes_v, at_v, count_v)
         i64 = ir.IntType(64)
-        for a in range(3):
-            c = [corner(ir.Constant(i64, 3 * v + a)) for v in range(3)]
-            lo = builder.select(builder.fcmp_ordered("<", c[1], c[0]), c[1], c[0])
-            lo = builder.select(builder.fcmp_ordered("<", c[2], lo), c[2], lo)
-            hi = builder.select(builder.fcmp_ordered(">", c[1], c[0]), c[1], c[0])
-            hi = builder.select(builder.fcmp_ordered(">", c[2], hi), c[2], hi)
-            for row, value in ((a, lo), (3 + a, hi)):
-                p = builder.gep(out_v, [ir.Constant(i64, row * WIDTH)])
-                builder.store(value, builder.bitcast(p, vt.as_pointer()), align=4)
+        _corner_boxes(builder, lambda vertex, k: rows(builder.add(k, ir.Constant(i64, 3 * vertex))), vt, out_v)
         return context.get_dummy_value()
     return types.none(nodes, at, count, out), codegen
+
+
+def _watertight_lanes(context, builder, frame_t, corner, valid, vt, frame_v, tmin_v, limit_v, out_v, zeroed_redone):
+    """For the codegen of a block's test: rtfgu.kernels.mesh.intersect_face on WIDTH faces,
+    lane by lane, the same operations in the same order, so a lane's t is the scalar test's
+    bit for bit. corner(vertex, k): the faces' corner ``vertex`` (0-2), coordinate ``k`` (an
+    i64 value), as a vector of vt; ``valid``: the mask of the lanes that hold a face;
+    ``frame_v`` the ray frame (ray_frame), of type ``frame_t``. Stores each lane's t at
+    ``out_v`` and returns the i64 mask: bits 0-7 the lanes hit in [tmin, limit), and, where
+    ``zeroed_redone`` (a float32 test), bits 8-15 the lanes whose U, V or W rounds to zero,
+    which the scalar test recomputes in double (left out of bits 0-7). In float64 that
+    recomputation is a no-op, so such lanes are decided here."""
+    i64, i32 = ir.IntType(64), ir.IntType(32)
+    lanes = ir.VectorType(ir.IntType(1), WIDTH)
+    shear, origin = builder.extract_value(frame_v, 0), builder.extract_value(frame_v, 1)
+    kx, ky, kz = (context.cast(builder, builder.extract_value(shear, a), frame_t.types[0].types[a], types.int64)
+                  for a in range(3))
+
+    def splat(x):
+        v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
+        return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
+                                      ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+
+    Sx, Sy, Sz = (splat(builder.extract_value(shear, 3 + a)) for a in range(3))
+    okx, oky, okz = (splat(builder.extract_value(origin, a)) for a in range(3))
+    sub, mul, add = builder.fsub, builder.fmul, builder.fadd
+    Az, Bz, Cz = (sub(corner(v, kz), okz) for v in range(3))
+    ax, ay = sub(sub(corner(0, kx), okx), mul(Sx, Az)), sub(sub(corner(0, ky), oky), mul(Sy, Az))
+    bx, by = sub(sub(corner(1, kx), okx), mul(Sx, Bz)), sub(sub(corner(1, ky), oky), mul(Sy, Bz))
+    cx, cy = sub(sub(corner(2, kx), okx), mul(Sx, Cz)), sub(sub(corner(2, ky), oky), mul(Sy, Cz))
+    U = sub(mul(cx, by), mul(cy, bx))
+    V = sub(mul(ax, cy), mul(ay, cx))
+    W = sub(mul(bx, ay), mul(by, ax))
+    zero = ir.Constant(vt, [0.0] * WIDTH)
+
+    def cmp(op, a, b=zero):
+        return builder.fcmp_ordered(op, a, b)
+
+    any3 = lambda op: builder.or_(builder.or_(cmp(op, U), cmp(op, V)), cmp(op, W))
+    zeroed = builder.and_(any3("=="), valid) if zeroed_redone else ir.Constant(lanes, [0] * WIDTH)
+    det = add(add(U, V), W)
+    missed = builder.or_(builder.and_(any3("<"), any3(">")), cmp("==", det))
+    t = builder.fdiv(add(add(mul(U, mul(Sz, Az)), mul(V, mul(Sz, Bz))), mul(W, mul(Sz, Cz))), det)
+    within = builder.and_(cmp(">=", t, splat(tmin_v)), cmp("<", t, splat(limit_v)))
+    hit = builder.and_(builder.and_(builder.xor(builder.or_(missed, zeroed), ir.Constant(lanes, [1] * WIDTH)),
+                                    within), valid)
+    builder.store(t, builder.bitcast(out_v, vt.as_pointer()), align=4)
+    bits = lambda m: builder.zext(builder.bitcast(m, ir.IntType(WIDTH)), i64)
+    return builder.or_(bits(hit), builder.shl(bits(zeroed), ir.Constant(i64, WIDTH)))
 
 
 @intrinsic
@@ -284,10 +341,9 @@ def block_test(typingctx, nodes, at, count, frame, tmin, limit, out):
     nine rows from float ``at`` of the table ``nodes`` on, in a float32 test: each lane's t
     at ``out`` (a pointer to WIDTH floats); returns a bit mask, bits 0-7 the lanes hit in
     [tmin, limit), bits 8-15 the lanes whose U, V or W rounds to zero (the scalar test
-    recomputes those in double). It is rtfgu.kernels.mesh.intersect_face lane by lane: the
-    same operations in the same order, on the ray frame's axes kx, ky, kz picked as rows,
-    so a lane's t is the scalar test's bit for bit. A row is read by a masked load of its
-    ``count`` lanes, so nothing past the block is read."""
+    recomputes those in double). It is rtfgu.kernels.mesh.intersect_face lane by lane
+    (_watertight_lanes), on the ray frame's axes kx, ky, kz picked as rows. A row is read by
+    a masked load of its ``count`` lanes, so nothing past the block is read."""
     if not (typed_for_nodes(nodes, tmin, out) and tmin == types.float32 and isinstance(at, types.Integer)
             and isinstance(count, types.Integer)):
         return None
@@ -295,47 +351,105 @@ def block_test(typingctx, nodes, at, count, frame, tmin, limit, out):
     def codegen(context, builder, signature, args):
         nodes_v, at_v, count_v, frame_v, tmin_v, limit_v, out_v = args
         rows, valid, vt = _block_rows(context, builder, signature, nodes_v, at_v, count_v)
-        i64, i32 = ir.IntType(64), ir.IntType(32)
-        lanes = ir.VectorType(ir.IntType(1), WIDTH)
-        shear, origin = builder.extract_value(frame_v, 0), builder.extract_value(frame_v, 1)
-        kx, ky, kz = (context.cast(builder, builder.extract_value(shear, a), signature.args[3].types[0].types[a],
-                                   types.int64) for a in range(3))
-
-        def splat(x):
-            v = builder.insert_element(ir.Constant(vt, ir.Undefined), x, ir.Constant(i32, 0))
-            return builder.shuffle_vector(v, ir.Constant(vt, ir.Undefined),
-                                          ir.Constant(ir.VectorType(i32, WIDTH), [0] * WIDTH))
+        i64 = ir.IntType(64)
 
         def corner(vertex, k):
             return rows(builder.add(k, ir.Constant(i64, 3 * vertex)))
-
-        Sx, Sy, Sz = (splat(builder.extract_value(shear, 3 + a)) for a in range(3))
-        okx, oky, okz = (splat(builder.extract_value(origin, a)) for a in range(3))
-        sub, mul, add = builder.fsub, builder.fmul, builder.fadd
-        Az, Bz, Cz = (sub(corner(v, kz), okz) for v in range(3))
-        ax, ay = sub(sub(corner(0, kx), okx), mul(Sx, Az)), sub(sub(corner(0, ky), oky), mul(Sy, Az))
-        bx, by = sub(sub(corner(1, kx), okx), mul(Sx, Bz)), sub(sub(corner(1, ky), oky), mul(Sy, Bz))
-        cx, cy = sub(sub(corner(2, kx), okx), mul(Sx, Cz)), sub(sub(corner(2, ky), oky), mul(Sy, Cz))
-        U = sub(mul(cx, by), mul(cy, bx))
-        V = sub(mul(ax, cy), mul(ay, cx))
-        W = sub(mul(bx, ay), mul(by, ax))
-        zero = ir.Constant(vt, [0.0] * WIDTH)
-
-        def cmp(op, a, b=zero):
-            return builder.fcmp_ordered(op, a, b)
-
-        any3 = lambda op: builder.or_(builder.or_(cmp(op, U), cmp(op, V)), cmp(op, W))
-        zeroed = builder.and_(any3("=="), valid)
-        det = add(add(U, V), W)
-        missed = builder.or_(builder.and_(any3("<"), any3(">")), cmp("==", det))
-        t = builder.fdiv(add(add(mul(U, mul(Sz, Az)), mul(V, mul(Sz, Bz))), mul(W, mul(Sz, Cz))), det)
-        within = builder.and_(cmp(">=", t, splat(tmin_v)), cmp("<", t, splat(limit_v)))
-        hit = builder.and_(builder.and_(builder.xor(builder.or_(missed, zeroed), ir.Constant(lanes, [1] * WIDTH)),
-                                        within), valid)
-        builder.store(t, builder.bitcast(out_v, vt.as_pointer()), align=4)
-        bits = lambda m: builder.zext(builder.bitcast(m, ir.IntType(WIDTH)), i64)
-        return builder.or_(bits(hit), builder.shl(bits(zeroed), ir.Constant(i64, WIDTH)))
+        return _watertight_lanes(context, builder, signature.args[3], corner, valid, vt, frame_v, tmin_v, limit_v,
+                                 out_v, True)
     return types.int64(nodes, at, count, frame, tmin, limit, out), codegen
+
+
+def typed_for_gathers(vertices, faces, first, count, real) -> bool:
+    """Whether a block's corners can be gathered for these arguments: ``vertices`` (V, 3) of
+    ``real``, ``faces`` (F, FACE_COLUMNS) int32 in C order, ``first`` and ``count`` ints."""
+    return (isinstance(vertices, types.Array) and vertices.ndim == 2 and vertices.dtype == real
+            and isinstance(faces, types.Array) and faces.ndim == 2 and faces.layout == "C"
+            and faces.dtype == types.int32 and isinstance(first, types.Integer) and isinstance(count, types.Integer))
+
+
+def _gathered_corners(context, builder, signature, vertices_v, faces_v, first_v, count_v, real):
+    """For the codegen of a test of a block that holds no corners (a float64 tree's,
+    with_blocks): (corner, valid, vt) as _block_rows gives them, for the faces
+    faces[first:first + count] (arguments 0-3 of ``signature``: vertices, faces, first,
+    count). The block's rows are one masked load of count * FACE_COLUMNS int32, each
+    vertex's column of them a shuffle; a corner's coordinate is one masked gather of its
+    ``count`` lanes from ``vertices`` (NaN in the others)."""
+    ft = context.get_value_type(real)
+    vt = ir.VectorType(ft, WIDTH)
+    i64, i32 = ir.IntType(64), ir.IntType(32)
+    i64v = ir.VectorType(i64, WIDTH)
+    wide = FACE_COLUMNS * WIDTH
+    i32w, i64w = ir.VectorType(i32, wide), ir.VectorType(i64, wide)
+
+    def splat(t, x, n=WIDTH):
+        v = builder.insert_element(ir.Constant(t, ir.Undefined), x, ir.Constant(i32, 0))
+        return builder.shuffle_vector(v, ir.Constant(t, ir.Undefined), ir.Constant(ir.VectorType(i32, n), [0] * n))
+
+    first64 = context.cast(builder, first_v, signature.args[2], types.int64)
+    count64 = context.cast(builder, count_v, signature.args[3], types.int64)
+    valid = builder.icmp_signed("<", ir.Constant(i64v, list(range(WIDTH))), splat(i64v, count64))
+    face_rows = context.make_array(signature.args[1])(context, builder, faces_v)
+    points = context.make_array(signature.args[0])(context, builder, vertices_v)
+    load = cgutils.get_or_insert_function(builder.module, ir.FunctionType(
+        i32w, [i32w.as_pointer(), i32, ir.VectorType(ir.IntType(1), wide), i32w]), "llvm.masked.load.v%di32.p0" % wide)
+    in_block = builder.icmp_signed("<", ir.Constant(i64w, list(range(wide))),
+                                   splat(i64w, builder.mul(count64, ir.Constant(i64, FACE_COLUMNS)), wide))
+    start = builder.gep(face_rows.data, [builder.mul(first64, ir.Constant(i64, FACE_COLUMNS))])
+    rows = builder.call(load, [builder.bitcast(start, i32w.as_pointer()), ir.Constant(i32, 4), in_block,
+                               ir.Constant(i32w, [0] * wide)])
+    # Corner v's coordinates start at vertices.data + its row * the row stride (bytes).
+    row_stride, column_stride = (builder.extract_value(points.strides, a) for a in range(2))
+    base = splat(i64v, builder.ptrtoint(points.data, i64))
+    starts = [builder.add(base, builder.mul(builder.sext(builder.shuffle_vector(
+        rows, ir.Constant(i32w, ir.Undefined),
+        ir.Constant(ir.VectorType(i32, WIDTH), [FACE_COLUMNS * j + v for j in range(WIDTH)])), i64v),
+        splat(i64v, row_stride))) for v in range(3)]
+    pointers = ir.VectorType(ft.as_pointer(), WIDTH)
+    gather = cgutils.get_or_insert_function(builder.module, ir.FunctionType(
+        vt, [pointers, i32, ir.VectorType(ir.IntType(1), WIDTH), vt]), "llvm.masked.gather.v8f%d.v8p0" % real.bitwidth)
+    nan = ir.Constant(vt, [math.nan] * WIDTH)
+
+    def corner(vertex, k):
+        p = builder.inttoptr(builder.add(starts[vertex], splat(i64v, builder.mul(k, column_stride))), pointers)
+        return builder.call(gather, [p, ir.Constant(i32, real.bitwidth // 8), valid, nan])
+    return corner, valid, vt
+
+
+@intrinsic
+def block_test_gathered(typingctx, vertices, faces, first, count, frame, tmin, limit, out):
+    """block_test for a block that holds no corners (a float64 tree's, with_blocks): the
+    faces faces[first:first + count], their corners gathered from ``vertices``
+    (_gathered_corners), in a test of tmin's precision. Each lane's t at ``out``; returns
+    the mask of the lanes hit in [tmin, limit) (bits 0-7; in float64 no lane is left to the
+    scalar test, whose recomputation in double changes nothing)."""
+    if not (typed_for_gathers(vertices, faces, first, count, tmin) and isinstance(out, types.CPointer)):
+        return None
+
+    def codegen(context, builder, signature, args):
+        vertices_v, faces_v, first_v, count_v, frame_v, tmin_v, limit_v, out_v = args
+        corner, valid, vt = _gathered_corners(context, builder, signature, vertices_v, faces_v, first_v, count_v, tmin)
+        return _watertight_lanes(context, builder, signature.args[4], corner, valid, vt, frame_v, tmin_v, limit_v,
+                                 out_v, tmin == types.float32)
+    return types.int64(vertices, faces, first, count, frame, tmin, limit, out), codegen
+
+
+@intrinsic
+def block_boxes_gathered(typingctx, vertices, faces, first, count, out):
+    """block_boxes for a block that holds no corners: the boxes of faces[first:first +
+    count], from their corners gathered from ``vertices`` (_gathered_corners), into ``out``
+    (six rows of WIDTH values of the vertices' type), exact."""
+    if not (isinstance(vertices, types.Array) and typed_for_gathers(vertices, faces, first, count, vertices.dtype)
+            and isinstance(out, types.CPointer) and out.dtype == vertices.dtype):
+        return None
+
+    def codegen(context, builder, signature, args):
+        vertices_v, faces_v, first_v, count_v, out_v = args
+        corner, _, vt = _gathered_corners(context, builder, signature, vertices_v, faces_v, first_v, count_v,
+                                          signature.args[0].dtype)
+        _corner_boxes(builder, corner, vt, out_v)
+        return context.get_dummy_value()
+    return types.none(vertices, faces, first, count, out), codegen
 
 
 @njit(cache=True, error_model="numpy", inline="always")
