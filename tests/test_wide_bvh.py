@@ -497,6 +497,46 @@ def test_a_gathered_block_test_reads_only_its_own_faces():
             assert (out[:count] == 1).all(), (count, first, out)
 
 
+@pytest.mark.parametrize("mesh", ["soup", "icosphere"])
+def test_a_float64_blocks_face_boxes_are_the_boxes_its_node_held(mesh):
+    """A packet boxes a float64 block's faces from their gathered corners
+    (block_boxes_gathered): each box must be the one the node the block replaced held for
+    that face (the float64 box rounded outward to float32), so the packet's rays enter the
+    same boxes as before."""
+    from rtfgu.kernels.packet import _boxes_of
+    from rtfgu.kernels.wide_bvh import block_boxes_gathered
+
+    @njit
+    def box_rows(vertices, faces, first, count):
+        boxes = _boxes_of(np.float64)
+        block_boxes_gathered(vertices, faces, first, count, boxes)
+        out = np.empty((6, wide_bvh.WIDTH))
+        for r in range(6):
+            for j in range(wide_bvh.WIDTH):
+                out[r, j] = boxes[r * wide_bvh.WIDTH + j]
+        return out
+
+    vertices, faces = traversal_mesh(mesh)
+    _, wide, rows = tree_of(vertices, faces)
+    held = {}
+    for n in range(len(wide.nodes)):
+        for j in range(wide_bvh.WIDTH):
+            code = int(wide.links[n, wide_bvh.CODE_ROW, j])
+            if code < 0 and (~code) & 7 == 0:
+                held[(~code) >> wide_bvh.LEAF_BITS] = wide.nodes[n, :6, j].astype(np.float64)
+    blocked = wide_bvh.with_blocks(wide, vertices, rows)
+    flat = blocked.nodes.reshape(-1)
+    checked = 0
+    for code in block_codes(blocked):
+        at = ((~code) & ((1 << wide_bvh.BLOCK_BIT) - 1)) >> wide_bvh.LEAF_BITS
+        first, count = int(flat[at:at + 1].view(np.int32)[0]), ((~code) & 7) + 1
+        out = box_rows(vertices, rows, first, count)
+        for lane in range(count):
+            assert out[:, lane].tobytes() == held[first + lane].tobytes(), (first + lane, out[:, lane], held[first + lane])
+            checked += 1
+    assert checked > 20
+
+
 def test_a_scene_traverses_blocks_in_both_precisions_with_corners_in_float32_only():
     from rtfgu.layout import compile_scene
     from rtfgu.scenes import SCENES

@@ -251,10 +251,30 @@ def _block_rows(context, builder, signature, nodes_v, at_v, count_v):
     return corner, valid, vt
 
 
+def _outward_to_float32(builder, x, down):
+    """x (a vector of doubles) rounded to float32 down (``down``) or up, and widened back:
+    the nearest float32, one step further where it lies on the wrong side, as
+    rtfgu.accelerators.flat_bvh._put_box rounds a box (±0 steps to the smallest subnormal)."""
+    f32v = ir.VectorType(ir.FloatType(), WIDTH)
+    i32v = ir.VectorType(ir.IntType(32), WIDTH)
+    near = builder.fptrunc(x, f32v)
+    wrong = builder.fcmp_ordered(">" if down else "<", builder.fpext(near, x.type), x)
+    bits = builder.bitcast(near, i32v)
+    zero = ir.Constant(f32v, [0.0] * WIDTH)
+    toward_zero = builder.fcmp_ordered(">" if down else "<", near, zero)     # the step is towards zero
+    step = builder.select(toward_zero, ir.Constant(i32v, [-1] * WIDTH), ir.Constant(i32v, [1] * WIDTH))
+    stepped = builder.select(builder.fcmp_ordered("==", near, zero),
+                             ir.Constant(i32v, [-2147483647 if down else 1] * WIDTH), builder.add(bits, step))
+    return builder.fpext(builder.select(wrong, builder.bitcast(stepped, f32v), near), x.type)
+
+
 def _corner_boxes(builder, corner, vt, out_v):
     """For the codegen of a block's faces' boxes: the smallest and largest of each coordinate
-    of their three corners (corner(vertex, k) as in _watertight_lanes), exact, stored at
-    ``out_v`` as six rows of WIDTH values, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z."""
+    of their three corners (corner(vertex, k) as in _watertight_lanes), stored at ``out_v``
+    as six rows of WIDTH values, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z: exact in float32; in
+    float64 rounded outward to float32, so that each is the box the tree held for that face
+    (flat_bvh's boxes) and a packet's rays enter the same boxes as at the node the block
+    replaced."""
     i64 = ir.IntType(64)
     for a in range(3):
         c = [corner(v, ir.Constant(i64, a)) for v in range(3)]
@@ -262,6 +282,8 @@ def _corner_boxes(builder, corner, vt, out_v):
         lo = builder.select(builder.fcmp_ordered("<", c[2], lo), c[2], lo)
         hi = builder.select(builder.fcmp_ordered(">", c[1], c[0]), c[1], c[0])
         hi = builder.select(builder.fcmp_ordered(">", c[2], hi), c[2], hi)
+        if isinstance(vt.element, ir.DoubleType):
+            lo, hi = _outward_to_float32(builder, lo, True), _outward_to_float32(builder, hi, False)
         for row, value in ((a, lo), (3 + a, hi)):
             p = builder.gep(out_v, [ir.Constant(i64, row * WIDTH)])
             builder.store(value, builder.bitcast(p, vt.as_pointer()), align=4)
@@ -438,7 +460,8 @@ def block_test_gathered(typingctx, vertices, faces, first, count, frame, tmin, l
 def block_boxes_gathered(typingctx, vertices, faces, first, count, out):
     """block_boxes for a block that holds no corners: the boxes of faces[first:first +
     count], from their corners gathered from ``vertices`` (_gathered_corners), into ``out``
-    (six rows of WIDTH values of the vertices' type), exact."""
+    (six rows of WIDTH values of the vertices' type): in float64 the boxes the tree held for
+    those faces (_corner_boxes)."""
     if not (isinstance(vertices, types.Array) and typed_for_gathers(vertices, faces, first, count, vertices.dtype)
             and isinstance(out, types.CPointer) and out.dtype == vertices.dtype):
         return None
