@@ -383,6 +383,12 @@ def block_codes(wide):
     return out
 
 
+def block_span(flat, code):
+    """(where, first face, count) of the block ``code`` in the flat table ``flat``."""
+    at = ((~code) & ((1 << wide_bvh.BLOCK_BIT) - 1)) >> wide_bvh.LEAF_BITS
+    return at, int(flat[at:at + 1].view(np.int32)[0]), ((~code) & 7) + 1
+
+
 @pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
 def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
     """with_blocks: every face of the wide tree is in one leaf or one block, as before; a
@@ -401,8 +407,7 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
     flat = blocked.nodes.reshape(-1)
     seen, ends = [], []
     for code in block_codes(blocked):
-        at = ((~code) & ((1 << wide_bvh.BLOCK_BIT) - 1)) >> wide_bvh.LEAF_BITS
-        first, count = int(flat[at:at + 1].view(np.int32)[0]), ((~code) & 7) + 1
+        at, first, count = block_span(flat, code)
         if dtype == np.float32:
             stored = flat[at + 1:at + 1 + 9 * count].reshape(9, count)
             assert stored.T.tobytes() == corners[rows[first:first + count, :3]].reshape(count, 9).tobytes()
@@ -528,8 +533,7 @@ def test_a_float64_blocks_face_boxes_are_the_boxes_its_node_held(mesh):
     flat = blocked.nodes.reshape(-1)
     checked = 0
     for code in block_codes(blocked):
-        at = ((~code) & ((1 << wide_bvh.BLOCK_BIT) - 1)) >> wide_bvh.LEAF_BITS
-        first, count = int(flat[at:at + 1].view(np.int32)[0]), ((~code) & 7) + 1
+        at, first, count = block_span(flat, code)
         out = box_rows(vertices, rows, first, count)
         for lane in range(count):
             assert out[:, lane].tobytes() == held[first + lane].tobytes(), (first + lane, out[:, lane], held[first + lane])
