@@ -145,22 +145,30 @@ def test_cli_traces_the_paths_a_release_has(monkeypatch, capsys):
 
 
 @pytest.mark.parametrize("name", ["default_lambertian_shadows", "default_glossy_sphere", "suffern_disks",
-                                  "suffern_11_fisheye", "suffern_11_spherical", "suffern_12_stereo"])
+                                  "suffern_11_fisheye", "suffern_11_spherical", "suffern_12_stereo",
+                                  "default_glossy_sphere under the sky", "default_texture_nearest_repeat",
+                                  "suffern_29_uv_mesh"])
 def test_the_bounces_add_up_to_the_rendered_pixel(path, name):
     """The debugger shows what the render computes: on every path the colours its bounces
     add, summed in the path's precision in bounce order as the path loop sums them, are the
-    rendered pixel bit for bit."""
+    rendered pixel bit for bit (pixel (0, 0) sees the background or the sky). The last three
+    scenes have what the debugger's numba kernel is given as an empty array where a scene
+    lacks it (an environment, a texture, smooth normals and (u, v) on a mesh)."""
     import numpy as np
 
     import rtfgu
     from rtfgu.cameras import PinholeCamera
+    from rtfgu.lights import EnvironmentLight
+    from rtfgu.scenes.environment import SKY
 
     size = 16
-    scene = get_scene(name)()
+    scene = get_scene(name.split()[0])()
+    if name.endswith("under the sky"):
+        scene.environment = EnvironmentLight(SKY)
     if isinstance(scene.camera, PinholeCamera):
         scene.camera.aspect = 1.0  # as render does for a square image of a wide scene
     image = rtfgu.render(scene, size, size, backend=path.backend, precision=path.precision)
-    for x, y in ((2, 3), (8, 8), (13, 10)):
+    for x, y in ((0, 0), (2, 3), (8, 8), (13, 10)):
         total = np.zeros(3, dtype=path.precision)
         for bounce in trace_pixel(scene, x, y, size, size, path.backend, path.precision):
             total = total + np.asarray(bounce.color, dtype=path.precision)
@@ -183,3 +191,30 @@ def test_a_pixel_the_camera_sees_nothing_through_is_one_miss(path, name, x, y):
     v = scene.camera.v
     assert np.allclose(bounces[0].direction, (v.x, v.y, v.z), atol=1e-7), path
     assert np.allclose(bounces[0].color, (0.1, 0.3, 0.6), atol=1e-7), path
+
+
+@pytest.mark.parametrize("precision", ["float32", "float64"])
+def test_one_debugger_kernel_serves_every_scene_of_a_kind(precision):
+    """The numba debugger's arguments (rtfgu.kernels.debug.scene_arguments) have one numba
+    type for every homework scene of a precision without a mesh, and one for the scenes
+    whose BVH holds the same kinds (a tree of their own, spheres, instances): it compiles
+    once for each, not once per scene's features (textures, an environment, samplers of
+    their own, smooth normals, (u, v)), each compile some 40 s."""
+    import numba
+
+    from rtfgu.kernels.debug import scene_arguments
+    from rtfgu.layout import compile_scene
+    from rtfgu.scenes import SCENES
+
+    types = {}
+    for name, make in SCENES.items():
+        flat = compile_scene(make(), precision)
+        mesh = flat.mesh
+        family = "no mesh" if mesh is None else "BVH of %s" % ", ".join(
+            kind for kind, held in (("a tree", mesh.scene_tree), ("spheres", mesh.spheres),
+                                    ("instances", mesh.instances)) if held)
+        types.setdefault(family, {}).setdefault(numba.typeof(scene_arguments(flat)), []).append(name)
+    assert {"no mesh", "BVH of a tree"} <= set(types), sorted(types)
+    for family, kinds in types.items():
+        assert len(kinds) == 1, "%s, %s: %d kernels: %s" % (
+            precision, family, len(kinds), [names[:3] for names in kinds.values()])

@@ -195,6 +195,32 @@ def test_every_shape_kind_has_texture_coordinates():
         assert kind.cls.texcoord is not Shape.texcoord, kind.name
 
 
+@pytest.mark.parametrize("texture, filter", [("image_texture", "nearest"), ("image_texture", "bilinear")]
+                         + [(t.name, None) for t in TEXTURES if t.name != "image_texture"])
+def test_a_float32_lookup_stays_in_float32(texture, filter):
+    """Every texture kind's numba lookup (rtfgu.kernels.textures.texture_<kind>) gives a
+    float32 colour for float32 (u, v) and point, in both image filters: a float64 colour
+    would make the float32 shading that follows float64 (numba's math.floor gives an int64,
+    and a float32 less it is a float64)."""
+    from numba import njit, types
+
+    import rtfgu.kernels.textures as kernels
+    from rtfgu.layout import TEXTURE_FILTERS, offset
+
+    lookup = getattr(kernels, "texture_" + texture)
+    table = np.zeros((1, 64), dtype=np.float32)
+    if texture == "image_texture":
+        table[0, offset("ImageTexture", "filter_mode")] = TEXTURE_FILTERS[filter]
+        table[0, offset("ImageTexture", "mapping_id")] = -1
+        table[0, offset("ImageTexture", "width")] = table[0, offset("ImageTexture", "height")] = 2
+        table[0, offset("ImageTexture", "scale")] = 1
+    texels = np.linspace(0, 1, 12, dtype=np.float32)
+    call = njit(lambda table, texels, u, v, p: lookup(table, 0, texels, u, v, p))
+    half = np.float32(0.3)
+    call(table, texels, half, half, (half, half, half))
+    assert call.nopython_signatures[0].return_type == types.UniTuple(types.float32, 3), texture
+
+
 def test_every_texture_kind_is_a_texture():
     for kind in TEXTURES:
         assert issubclass(kind.cls, Texture), kind.name

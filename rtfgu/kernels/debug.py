@@ -7,12 +7,12 @@ rtfgu.kernels.dispatch), every bounce written to a record (render.record_bounce)
 the ray left the scene (the colour is then the background); the normal is not computed
 for base_color, whose shader reads none.
 
-Every row shape kind and light kind reaches the kernel as an array (empty for a kind the
-scene lacks: render.shape_arrays with ``empty``) and the path loop is always on, so one
-compiled kernel per precision serves every scene (and one more with textures, with a mesh,
-with spheres in its BVH, with an environment, which change the render's kernel as they
-change this one): an empty table tests nothing, and a shader that ends the path ends it
-after one bounce as in a render. Primary rays test every sphere with intersect_sphere
+Every entry of the scene reaches the kernel as an array, empty for what the scene lacks
+(render.shape_arrays and render.scene_tuple with ``empty``: shape kinds, texture kinds, the
+environment, the samplers' own sets), but for what the BVH holds (its own tree, spheres,
+instances), and the path loop is always on, so one compiled kernel per precision serves
+every scene without a mesh, and one every scene whose BVH holds the same kinds: an empty table tests nothing, and a shader that
+ends the path ends it after one bounce as in a render. Primary rays test every sphere with intersect_sphere
 rather than the render's per-frame eye terms and culled candidates: the terms are the same
 operations on the same numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling
 drops only spheres the ray cannot hit.
@@ -57,15 +57,25 @@ def trace_records(camera, pixel, rays, shapes, lights, scene, settings, records)
                   search_hit, None, records[k])
 
 
+def scene_arguments(flat, formula=None) -> tuple:
+    """trace_records' (camera, shapes, lights, scene, settings) for the FlatScene ``flat``:
+    every entry an array, empty for what the scene lacks (the module docstring), so their
+    types are the same for every scene of a precision but for the mesh's."""
+    shapes = shape_arrays(flat, empty=True)
+    own_samples, own_shuffled, sobol = own_sets(flat)
+    if own_samples is None:   # no sampler of its own: sets no row names (sampling.sampler_point)
+        own_samples, own_shuffled = np.zeros((0, 2), dtype=flat.dtype), np.zeros(0, dtype=np.int32)
+    lights = tuple(flat.lights[kind.name] for kind in LIGHTS) + (own_samples, own_shuffled, sobol)
+    camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
+    settings = (flat.shadows, flat.show_ray_direction, sphere_formula_id(formula))
+    return camera, shapes, lights, scene_tuple(flat, empty=True), settings
+
+
 def numba_records(flat, formula=None, pixel=None, rays=None) -> np.ndarray:
     """Records (paths, MAX_DEPTH, RECORD_FIELDS) of the FlatScene ``flat``: of ``pixel``
     (ix, iy, width, height), iy from the bottom, or of every row of ``rays`` ((n, 8):
     origin, direction, tmin, tmax)."""
-    shapes = shape_arrays(flat, empty=True)
-    lights = tuple(flat.lights[kind.name] for kind in LIGHTS) + own_sets(flat)
-    camera = (flat.camera_kind, np.ascontiguousarray(flat.camera.reshape(CAMERA_WIDTH)))
-    scene = scene_tuple(flat)
-    settings = (flat.shadows, flat.show_ray_direction, sphere_formula_id(formula))
+    camera, shapes, lights, scene, settings = scene_arguments(flat, formula)
     if pixel is None:
         rays = np.ascontiguousarray(rays, dtype=flat.dtype).reshape(-1, 8)
         pixel = (-1, -1, 1, 1)

@@ -32,8 +32,9 @@ def environment_radiance(image, direction):
 
 
 def background_radiance(environment, background, direction):
-    """The environment's radiance along ``direction``, or the background without one (typed
-    by the overload below, so a scene without an environment compiles none of it)."""
+    """The environment's radiance along ``direction``, or the background without one: None
+    (typed by the overload below, so a scene without an environment compiles none of it),
+    or an empty image (the pixel debugger's, rtfgu.kernels.render.scene_tuple)."""
     return as_python(_typed_background_radiance, environment, background, direction)
 
 
@@ -41,4 +42,9 @@ def background_radiance(environment, background, direction):
 def _typed_background_radiance(environment, background, direction):
     if isinstance(environment, types.NoneType):
         return lambda environment, background, direction: load3(background, 0)
-    return lambda environment, background, direction: environment_radiance(environment, direction)
+
+    def lookup(environment, background, direction):
+        if environment.shape[0] == 0:
+            return load3(background, 0)
+        return environment_radiance(environment, direction)
+    return lookup

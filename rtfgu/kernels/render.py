@@ -81,22 +81,33 @@ RECORD_FIELDS = 16
 def shape_arrays(flat, empty: bool = False) -> tuple:
     """The kernels' ``shapes``: table, index per row kind, the FlatMesh's arrays and the BVH
     (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks.
-    With ``empty``, a row kind the scene lacks is its empty table and index instead (a mesh
-    kind stays None: a BVH has at least one node)."""
+
+    With ``empty`` (the pixel debugger's: one kernel for every scene of a precision without a
+    mesh), every entry is an array that changes nothing, but for those that say what the BVH
+    holds, None as in a render: the mesh's entries where the scene has no tree of its own (a
+    BVH has at least one node; the tree of a scene whose meshes are all instances' starts at
+    a mesh's root), and the index of the spheres or instances the BVH holds (their rows are
+    reached through the tree, compiled for them). A kind the scene lacks is its empty table
+    and index; a mesh without vertex normals or (u, v) has zero ones (a zero normal is the
+    flat one, rtfgu.kernels.mesh.normal_mesh; a (u, v) of third column 0 the barycentrics,
+    texcoord_mesh); the instances' mesh slots hold the scene's mesh, which no instance then
+    names."""
     shapes = ()
+    mesh = mesh_arrays(flat, empty) if flat.mesh is not None else None
     for kind in SHAPES:
         if kind.bvh:   # the scene's own tree; None where its meshes are all instances'
-            shapes += mesh_arrays(flat) if flat.mesh is not None and flat.mesh.scene_tree \
-                else (None,) * len(MESH_SLOTS)
+            shapes += mesh if mesh is not None and flat.mesh.scene_tree else (None,) * len(MESH_SLOTS)
         elif kind.instance and (flat.count(kind.name) or empty):
             # The instance table and index, then the instanced table of each kind an instance
             # may hold (None for a kind none holds), then the mesh arrays with the trees of
             # the meshes instances hold (None where none holds one).
             # The index is None where the BVH holds the instances (no loop of their own).
             in_bvh = flat.mesh is not None and flat.mesh.instances
-            shapes += (instance_table(flat, kind.name), None if in_bvh else flat.index(kind.name)) + tuple(
+            index = None if in_bvh else flat.index(kind.name)
+            held = "instanced_mesh" in flat.features or (empty and mesh is not None)
+            shapes += (instance_table(flat, kind.name), index) + tuple(
                 flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
-                + (mesh_arrays(flat) if "instanced_mesh" in flat.features else (None,) * len(MESH_SLOTS))
+                + (mesh if held else (None,) * len(MESH_SLOTS))
         elif flat.count(kind.name) == 0:
             shapes += ((flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)) \
                 + (None,) * (slots(kind) - 2)
@@ -116,13 +127,18 @@ def numba_tree(mesh):
     return mesh.bvh.wide_with_blocks(mesh.tree_roots, mesh.vertices, mesh.faces)
 
 
-def mesh_arrays(flat) -> tuple:
+def mesh_arrays(flat, empty: bool = False) -> tuple:
     """The FlatMesh's arrays in MESH_SLOTS order, with the tree the numba path traverses: the
     wide one (numba_tree) where the CPU has vector units (rtfgu.kernels.wide_bvh.WIDE), else
-    the binary one."""
+    the binary one. With ``empty`` (shape_arrays), zero normals and (u, v) for a mesh
+    without them, in place of None."""
     mesh = flat.mesh
     nodes = numba_tree(mesh).nodes if WIDE else mesh.bvh.nodes
-    return mesh.vertices, mesh.faces, mesh.normals, nodes, nodes.view(np.int32), mesh.uvs
+    normals, uvs = mesh.normals, mesh.uvs
+    if empty:
+        normals = np.zeros_like(mesh.vertices) if normals is None else normals
+        uvs = np.zeros_like(mesh.vertices) if uvs is None else uvs
+    return mesh.vertices, mesh.faces, normals, nodes, nodes.view(np.int32), uvs
 
 
 def instance_table(flat, kind: str) -> np.ndarray:
@@ -140,16 +156,22 @@ def instance_table(flat, kind: str) -> np.ndarray:
     return table
 
 
-def scene_tuple(flat) -> tuple:
+def scene_tuple(flat, empty: bool = False) -> tuple:
     """The kernels' ``scene``: materials, shaders, background, then the texels and a table
     per texture kind (rtfgu.registry.TEXTURES), all None when the scene has no texture, the
-    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF)."""
-    if "textures" not in flat.features:
+    environment's image (ENVIRONMENT) or None, and each shape's material row (MATERIAL_OF).
+    With ``empty`` (the pixel debugger's, as shape_arrays), no None: a texture kind the scene
+    lacks is its empty table (no material names it), no environment an empty image (the
+    background, rtfgu.kernels.environment.background_radiance)."""
+    if "textures" not in flat.features and not empty:
         textures = (None,) * (1 + len(TEXTURES))
     else:
-        textures = (flat.texels,) + tuple(flat.textures[k.name] if len(flat.textures[k.name]) else None
+        textures = (flat.texels,) + tuple(flat.textures[k.name] if len(flat.textures[k.name]) or empty else None
                                           for k in TEXTURES)
-    return (flat.materials, flat.shaders, flat.background) + textures + (flat.environment, flat.material_of)
+    environment = flat.environment
+    if environment is None and empty:
+        environment = np.zeros((0, 0, 3), dtype=flat.dtype)
+    return (flat.materials, flat.shaders, flat.background) + textures + (environment, flat.material_of)
 
 
 @njit(cache=True, error_model="numpy")

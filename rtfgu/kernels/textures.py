@@ -194,7 +194,8 @@ def _texel(texels, first, width, height, address, i, j):
 @njit(cache=True, error_model="numpy")
 def texture_image_texture(table, row, texels, u, v, position):
     """ImageTexture.color_at: nearest or bilinear, repeat or clamp (worksheet 3), at the
-    shape's (u, v) or its mapping's of the point."""
+    shape's (u, v) or its mapping's of the point. Floors by np.floor, in the precision of
+    (u, v) (numba's math.floor gives an int64, and a float32 less it a float64)."""
     rec = table[row]
     mapping = int(rec[IMAGE_MAPPING])
     if mapping >= 0:
@@ -208,20 +209,20 @@ def texture_image_texture(table, row, texels, u, v, position):
     first = int(rec[IMAGE_OFFSET])
     address = int(rec[IMAGE_ADDRESS])
     if address == REPEAT:
-        u = u - math.floor(u)
-        v = v - math.floor(v)
+        u = u - np.floor(u)
+        v = v - np.floor(v)
     else:
         u = min(max(u, zero), one)
         v = min(max(v, zero), one)
     x = u * lit(width, u)
     y = (one - v) * lit(height, u)
     if int(rec[IMAGE_FILTER]) == NEAREST:
-        return _texel(texels, first, width, height, address, int(math.floor(x)), int(math.floor(y)))
+        return _texel(texels, first, width, height, address, int(np.floor(x)), int(np.floor(y)))
     half = lit(0.5, u)
     x = x - half
     y = y - half
-    fi = math.floor(x)
-    fj = math.floor(y)
+    fi = np.floor(x)
+    fj = np.floor(y)
     fx = x - fi
     fy = y - fj
     i = int(fi)
