@@ -11,11 +11,12 @@ Every entry of the scene reaches the kernel as an array, empty for what the scen
 (render.shape_arrays and render.scene_tuple with ``empty``: shape kinds, texture kinds, the
 environment, the samplers' own sets), but for what the BVH holds (its own tree, spheres,
 instances), and the path loop is always on, so one compiled kernel per precision serves
-every scene without a mesh, and one every scene whose BVH holds the same kinds: an empty table tests nothing, and a shader that
-ends the path ends it after one bounce as in a render. Primary rays test every sphere with intersect_sphere
-rather than the render's per-frame eye terms and culled candidates: the terms are the same
-operations on the same numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling
-drops only spheres the ray cannot hit.
+every scene without a mesh, and one every scene whose BVH holds the same kinds: an empty
+table tests nothing, and a shader that ends the path ends it after one bounce as in a
+render. Primary rays test every sphere with intersect_sphere rather than the render's
+per-frame eye terms and culled candidates: the terms are the same operations on the same
+numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling drops only spheres the ray
+cannot hit.
 """
 from __future__ import annotations
 
@@ -60,7 +61,7 @@ def trace_records(camera, pixel, rays, shapes, lights, scene, settings, records)
 def scene_arguments(flat, formula=None) -> tuple:
     """trace_records' (camera, shapes, lights, scene, settings) for the FlatScene ``flat``:
     every entry an array, empty for what the scene lacks (the module docstring), so their
-    types are the same for every scene of a precision but for the mesh's."""
+    types are the same for every scene of a precision but for what its BVH holds."""
     shapes = shape_arrays(flat, empty=True)
     own_samples, own_shuffled, sobol = own_sets(flat)
     if own_samples is None:   # no sampler of its own: sets no row names (sampling.sampler_point)

@@ -52,7 +52,7 @@ from .culling import tile_candidates
 from .dispatch import (MESH_SLOTS, eye_scan, intersect_scene, intersect_scene_after_eye, intersect_scene_before_eye,
                        shade, shape_normal, slots, surface_color, trace_packet)
 from .dispatch_support import as_python
-from .float3 import add, lit, load3, mul, scale
+from .float3 import add, lit, mul, scale
 from .environment import ENVIRONMENT, MATERIAL_OF, background_radiance
 from .path_trace import trace_path
 from .wide_bvh import WIDE, on_the_stack

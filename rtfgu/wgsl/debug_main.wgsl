@@ -54,7 +54,8 @@ fn main(@builtin(global_invocation_id) id: vec3u)
             record_bounce(base, origin, direction, found.dist, found.shader, found.normal, hit_shape,
                           shade(&r, &hit), 1.0);
         } else {
-            record_bounce(base, origin, direction, 0.0, -1, vec3f(0.0), -1, background_radiance(direction), 2.0);
+            record_bounce(base, origin, direction, 0.0, -1, vec3f(0.0), -1, background_radiance(direction),
+                          2.0);
             break;
         }
         if (hit.has_hit) {
