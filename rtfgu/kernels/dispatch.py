@@ -34,8 +34,10 @@ from pathlib import Path
 
 from .. import layout
 from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_IDS, SHAPES, TEXTURES
+from .inline_copy import copy_inlined_scope_once
 from .inline_typing import cache_inline_typing, compile_inline_bodies_once
 from .liveness import use_bitset_liveness
+from .llvm_passes import optimize_kernels_once
 
 # The texels' place in the kernels' ``scene`` tuple; a table per texture kind follows.
 TEXELS = 3
@@ -808,7 +810,9 @@ def load():
 use_versioned_cache()
 cache_inline_typing()
 compile_inline_bodies_once()
+copy_inlined_scope_once()
 use_bitset_liveness()
+optimize_kernels_once()
 _quiet_inlined_loops()
 _generated = load()
 intersect_scene = _generated.intersect_scene
