@@ -1,6 +1,6 @@
-"""rtfgu.kernels.llvm_passes: rtfgu's functions skip numba's first run of LLVM's function
-pipeline (the module pipeline optimises them), every other function keeps it, and a
-function compiled so computes what it did."""
+"""rtfgu.kernels.llvm_passes: the kernels skip numba's first run of LLVM's function pipeline
+(the module pipeline optimises them), every other function keeps it, rtfgu's own small
+functions included, and a function compiled so computes what it did."""
 from __future__ import annotations
 
 import math
@@ -13,7 +13,7 @@ import rtfgu.kernels  # noqa: F401  (installs it, as a render does)
 from rtfgu.kernels import llvm_passes
 
 SOURCE = '''
-def probe(n, x):
+def NAME(n, x):
     total = 0.0
     for k in range(n):
         if k % 3 == 0:
@@ -24,12 +24,12 @@ def probe(n, x):
 '''
 
 
-def probe_in(module_name):
-    """The probe function, defined as if in module ``module_name`` (numba names a compiled
-    function after its module)."""
+def probe_in(module_name, name):
+    """The probe function, named ``name``, defined as if in module ``module_name`` (numba
+    names a compiled function after its module and its name)."""
     namespace = {"__name__": module_name, "math": math}
-    exec(SOURCE, namespace)
-    return namespace["probe"]
+    exec(SOURCE.replace("NAME", name), namespace)
+    return namespace[name]
 
 
 @pytest.fixture
@@ -56,21 +56,24 @@ def test_it_is_installed():
     assert optimize.numba_optimize_functions is not optimize
 
 
-@pytest.mark.parametrize("module_name, skipped", [("rtfgu.kernels.probe", True),
-                                                   ("a_students_module", False)])
-def test_only_rtfgus_functions_skip_the_function_pipeline(function_pipeline_runs, module_name, skipped):
-    probe = probe_in(module_name)
+@pytest.mark.parametrize("module_name, name, skipped", [
+    ("rtfgu.kernels.render", "render_tile", True),          # as a kernel is named
+    ("rtfgu.kernels.debug", "trace_records", True),
+    ("rtfgu.kernels.mesh", "mesh_closest", False),           # one of rtfgu's small functions
+    ("a_students_module", "render_tile", False)])
+def test_only_the_kernels_skip_the_function_pipeline(function_pipeline_runs, module_name, name, skipped):
+    probe = probe_in(module_name, name)
     compiled = njit(probe)
     for n, x in ((0, 1.0), (7, 2.5), (40, 0.25)):
         assert compiled(n, x) == probe(n, x)
-    own = [name for name in function_pipeline_runs if "probe" in name]
+    own = [f for f in function_pipeline_runs if name in f]
     if skipped:
         assert own == []
     else:
         assert own, "numba's function pipeline ran on no function of the probe"
 
 
-def test_what_counts_as_rtfgus_module():
+def test_what_counts_as_a_kernels_module():
     class Function:
         def __init__(self, name, declaration=False):
             self.name, self.is_declaration = name, declaration
@@ -78,9 +81,15 @@ def test_what_counts_as_rtfgus_module():
     class Module:
         def __init__(self, *functions):
             self.functions = functions
-    assert llvm_passes.is_rtfgu_module(Module(Function("_ZN5rtfgu7kernels6render11render_tileB3v12E")))
-    assert llvm_passes.is_rtfgu_module(Module(Function("_ZN31rtfgu_dispatch_0123456789abcdef5shadeE")))
-    # A module that only declares one of rtfgu's functions (calls it) is not rtfgu's.
-    assert not llvm_passes.is_rtfgu_module(Module(Function("_ZN5rtfgu7kernels4mesh12mesh_closestE", True),
-                                                  Function("_ZN8__main__3fooE")))
-    assert not llvm_passes.is_rtfgu_module(Module(Function("_ZN5numba2np8arrayobj4fillE")))
+    assert llvm_passes.is_kernel_module(Module(Function("_ZN5rtfgu7kernels6render11render_tileB3v12E")))
+    assert llvm_passes.is_kernel_module(Module(Function("_ZN5rtfgu7kernels6render13render_kernelB3v10E")))
+    assert llvm_passes.is_kernel_module(Module(Function("_ZN5rtfgu7kernels5debug13trace_recordsB3v2E")))
+    # A module that only declares a kernel (calls it) is not the kernel's: the parallel
+    # loop's body, which calls render_tile.
+    assert not llvm_passes.is_kernel_module(Module(
+        Function("_ZN5rtfgu7kernels6render11render_tileB3v12E", True),
+        Function("_ZN13_3cdynamic_3e36__numba_parfor_gufunc_0x7f52227cdf50B4v145E")))
+    assert not llvm_passes.is_kernel_module(Module(Function("_ZN5rtfgu7kernels4mesh12mesh_closestB3v7E")))
+    assert not llvm_passes.is_kernel_module(Module(Function("_ZN31rtfgu_dispatch_0123456789abcdef5shadeE")))
+    assert not llvm_passes.is_kernel_module(Module(Function("_ZN8__main__11render_tileE")))
+    assert not llvm_passes.is_kernel_module(Module(Function("_ZN5numba2np8arrayobj4fillE")))
