@@ -73,6 +73,14 @@ def test_only_the_kernels_skip_the_function_pipeline(function_pipeline_runs, mod
         assert own, "numba's function pipeline ran on no function of the probe"
 
 
+def test_the_kernels_named_are_the_kernels():
+    from rtfgu.kernels import debug, render
+
+    functions = {name: getattr(render, name, None) or getattr(debug, name, None) for name in llvm_passes.KERNELS}
+    assert all(hasattr(f, "py_func") for f in functions.values()), functions
+    assert {f.py_func.__module__ for f in functions.values()} <= {"rtfgu.kernels.render", "rtfgu.kernels.debug"}
+
+
 def test_what_counts_as_a_kernels_module():
     class Function:
         def __init__(self, name, declaration=False):

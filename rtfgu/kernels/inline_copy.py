@@ -77,11 +77,11 @@ def copy_inlined_scope_once() -> bool:
         return False
     worker = getattr(inline_closurecall, "InlineWorker", None)
     inline_ir = getattr(worker, "inline_ir", None)
-    if inline_ir is None or getattr(inline_closurecall, "copy", None) is None:
+    if inline_ir is None:
         return False
     if getattr(inline_ir, _INSTALLED, False):
         return True
-    if inline_closurecall.copy is not _copy:
+    if getattr(inline_closurecall, "copy", None) is not _copy:   # not the module it copies with
         return False
     shim = ScopeOnceCopy(ir.Block)
 
