@@ -304,7 +304,7 @@ def test_a_packet_of_no_rays_or_too_many_is_refused(count):
 def _both_renders(scene, width, height, sampler=None, precision="float32"):
     """The kernel's sums and ray counts with the pinhole's primary rays in packets and
     without (the same arguments, only ``packets`` changed)."""
-    from rtfgu.kernels import hit_phases, kernel_arguments, render_kernel, sums_dtype
+    from rtfgu.kernels import hit_phases, kernel_arguments, render_tiles, sums_dtype
     from rtfgu.kernels.render import COUNTS
     from rtfgu.layout import compile_sampler, compile_scene
 
@@ -317,7 +317,7 @@ def _both_renders(scene, width, height, sampler=None, precision="float32"):
         run[7] = args[7][:2] + (packets, hit_phases(args[7][0], packets))
         sums = np.full((height, width, 3), np.nan, dtype=sums_dtype(flat, sampler))   # as NumbaAccumulator's
         counts = np.zeros((tiles, COUNTS), dtype=np.int64)
-        render_kernel(*run, sums, counts)
+        render_tiles(tuple(run), tiles, sums, counts)
         out[packets] = (sums, counts.sum(axis=0))
     return args[7][2], out[None], out[1]
 

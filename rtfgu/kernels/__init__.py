@@ -25,6 +25,7 @@ from .dispatch import FORMULAS
 from .intersect import sphere_eye_terms
 from .render import (COUNTS, NOT_FINITE, PRIMARY, SECONDARY, SHADOW, STACK_FIELDS, TILE, mean_image, mesh_arrays,
                      render_kernel, scene_tuple, shape_arrays)
+from .threads import run_in_threads
 
 __all__ = ["render_numba", "NumbaAccumulator", "RayCounts", "DEFAULT_SPHERE_FORMULA"]
 
@@ -90,7 +91,9 @@ def hit_phases(cast, packets) -> tuple:
 def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, seed: int = 0,
                      samples=(0, 1)):
     """The render_kernel arguments for a FlatScene (rtfgu.kernels.render says how they are
-    grouped), with None for every kind the scene lacks, and the number of tiles.
+    grouped), with None for every kind the scene lacks, up to ``sampler``, then the stride
+    of the tiles' order (the first of render_kernel's ``share``; render_tiles); and the
+    number of tiles.
     ``sampler``: a FlatSampler (rtfgu.layout.compile_sampler) or None; ``samples``: the
     range of sample indices to add."""
     formula_id = sphere_formula_id(formula)
@@ -131,6 +134,13 @@ def kernel_arguments(flat, width: int, height: int, formula=None, sampler=None, 
             settings, (cast, path, packets, phases), sampler, _coprime_stride(tiles)), tiles
 
 
+def render_tiles(args: tuple, tiles: int, sums: np.ndarray, counts: np.ndarray) -> None:
+    """render_kernel over all ``tiles`` tiles of kernel_arguments' ``args``, adding to ``sums``
+    and filling ``counts`` (tiles, COUNTS), on numba's thread count of threads
+    (rtfgu.kernels.threads)."""
+    run_in_threads(render_kernel, args[:-1], (sums, counts), tiles, args[-1])
+
+
 def sums_dtype(flat, sampler) -> np.dtype:
     """The dtype of the sums a render of ``flat`` with ``sampler`` (None: one sample at each
     pixel's centre) adds its samples to: float64 for one sample, in either precision (the sum
@@ -169,7 +179,7 @@ class NumbaAccumulator:
         args, tiles = kernel_arguments(self.flat, width, height, self.formula, self.sampler,
                                        self.seed, samples)
         counts = np.zeros((tiles, COUNTS), dtype=np.int64)
-        render_kernel(*args, self.sums, counts)
+        render_tiles(args, tiles, self.sums, counts)
         self.counts += counts[:, :NOT_FINITE].sum(axis=0)
         return counts
 

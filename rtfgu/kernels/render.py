@@ -1,6 +1,7 @@
 # release: solves a03 a04 a05
 """The pixel loop on all cores: the lecture's render loop (lecture 01 "Rendering a Scene")
-and the 02562 path loop (``main_fs``), in tiles under ``prange``.
+and the 02562 path loop (``main_fs``), in tiles, a share of them a thread
+(rtfgu.kernels.threads).
 
 Every pixel is computed on its own from the same inputs, so the image is the same bit for
 bit for any number of threads. The scene arrives grouped (rtfgu.kernels.kernel_arguments):
@@ -58,6 +59,7 @@ from .path_trace import trace_path
 from .wide_bvh import WIDE, on_the_stack
 from .packet import PACKET, lanes_of as packet_lanes
 from .sampling import concentric_map, pixel_sample
+from .threads import claim, finish
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
 TILE = 16
@@ -656,37 +658,46 @@ def render_tile(view, world, eye_rows, settings, cast, path, packets, buffers, o
     return (x1 - x0) * (y1 - y0) * (end - first), n_shadow, n_secondary, 0 if poison == poison else 1
 
 
-@njit(parallel=True, cache=True, error_model="numpy")
-def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sampler, tile_stride,
+@njit(cache=True, error_model="numpy", nogil=True)
+def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sampler, share,
                   image, counts):
-    """Add the samples settings[4] <= s < settings[5] of every pixel to ``image`` (height,
-    width, 3), row 0 at the top (samples from 0 are written over what it held), and fill
-    ``counts`` (tiles, COUNTS); ``size`` is (width, height). For a pinhole camera with a from-eye shape kind, ``eye``
+    """Add the samples settings[4] <= s < settings[5] of the tiles this thread claims to
+    ``image`` (height, width, 3), row 0 at the top (samples from 0 are written over what it
+    held), and fill their rows of ``counts`` (tiles, COUNTS); ``size`` is (width, height).
+    ``share`` = (stride, counter, run): the thread claims the next ``run`` k from
+    ``counter`` (threads.claim) until k reaches the number of tiles, the k-th tile being the
+    image's tile k * stride mod n_tiles (the stride is coprime with n_tiles), and counts
+    each run done once its pixels are written (threads.finish). The threads
+    that run this at once (rtfgu.kernels.threads, compiled with ``nogil`` for them) render
+    every tile once between them. For a pinhole camera with a from-eye shape kind, ``eye``
     holds its per-frame terms and culling cones, so each tile tests only the rows its
     primary rays can hit; otherwise it is None."""
     width, height = size
+    tile_stride, counter, run = share
     tiles_x = (width + TILE - 1) // TILE
     tiles_y = (height + TILE - 1) // TILE
     n_tiles = tiles_x * tiles_y
-    candidates = np.empty((n_tiles, from_eye_rows(eye)), dtype=np.int64)
+    candidates = np.empty(from_eye_rows(eye), dtype=np.int64)
     terms = eye_terms(eye)
     cast, path, packets, phases = tracer
-    for k in prange(n_tiles):
-        # prange hands each thread a contiguous block of k; the stride (coprime with
-        # n_tiles) spreads every block over the whole image, so the threads share the work.
-        tile = (k * tile_stride) % n_tiles
-        x0 = (tile % tiles_x) * TILE
-        y0 = (tile // tiles_x) * TILE
-        box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
-        n_candidates = eye_candidates(eye, camera, box, size, candidates[tile])
-        n_primary, n_shadow, n_secondary, n_not_finite = render_tile(
-            (box + size, camera, sampler), (shapes, lights, scene), (terms, candidates[tile], n_candidates),
-            settings, cast, path, packets, (tile_stack(cast, tile), image), phases[0], phases[1], phases[2],
-            phases[3])
-        counts[tile, PRIMARY] = n_primary
-        counts[tile, SHADOW] = n_shadow
-        counts[tile, SECONDARY] = n_secondary
-        counts[tile, NOT_FINITE] = n_not_finite
+    first = claim(counter, run)
+    while first < n_tiles:
+        for k in range(first, min(first + run, n_tiles)):
+            tile = (k * tile_stride) % n_tiles
+            x0 = (tile % tiles_x) * TILE
+            y0 = (tile // tiles_x) * TILE
+            box = (x0, min(x0 + TILE, width), y0, min(y0 + TILE, height))
+            n_candidates = eye_candidates(eye, camera, box, size, candidates)
+            n_primary, n_shadow, n_secondary, n_not_finite = render_tile(
+                (box + size, camera, sampler), (shapes, lights, scene), (terms, candidates, n_candidates),
+                settings, cast, path, packets, (tile_stack(cast, tile), image), phases[0], phases[1], phases[2],
+                phases[3])
+            counts[tile, PRIMARY] = n_primary
+            counts[tile, SHADOW] = n_shadow
+            counts[tile, SECONDARY] = n_secondary
+            counts[tile, NOT_FINITE] = n_not_finite
+        finish(counter, min(first + run, n_tiles) - first)
+        first = claim(counter, run)
 
 
 @njit(parallel=True, cache=True)
