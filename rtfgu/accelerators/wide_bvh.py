@@ -227,14 +227,26 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     flat = out.view(np.int32)
     flat[where] = firsts
     if corners:
-        # Each block's faces at once: face k of the blocks is lane j of block b.
-        b = np.repeat(np.arange(len(counts)), counts)
-        j = np.arange(len(b)) - np.repeat(np.cumsum(counts) - counts, counts)
-        at = (where[b] + BLOCK_HEADER + j)[:, None] + np.arange(CORNER_ROWS)[None, :] * counts[b][:, None]
-        out[at] = vertices[faces[firsts[b] + j, :3]].reshape(-1, CORNER_ROWS)
+        _copy_corners(vertices, faces, firsts, counts, where, out)
     out[int(total):] = 0
     blocked = out.reshape(-1, ROWS, WIDTH)
     return WideBVH(blocked, tuple(int(number[r]) for r in wide.roots), wide.build_seconds)
+
+
+@njit(cache=True)
+def _copy_corners(vertices, faces, firsts, counts, where, out):
+    """Each block's corners into ``out`` (with_blocks): block b's faces firsts[b] ..
+    firsts[b] + counts[b] - 1, corner row r (v0.x, v0.y, v0.z, v1.x, ... v2.z: r = 3 v + a)
+    of its lane j at where[b] + BLOCK_HEADER + r * counts[b] + j."""
+    for b in range(len(counts)):
+        count = counts[b]
+        base = where[b] + BLOCK_HEADER
+        for j in range(count):
+            f = firsts[b] + j
+            for v in range(3):
+                corner = faces[f, v]
+                for a in range(3):
+                    out[base + (3 * v + a) * count + j] = vertices[corner, a]
 
 
 def collapse(bvh: FlatBVH, roots=(0,)) -> WideBVH:

@@ -1,6 +1,6 @@
 # release: solves a03 a04 a05
 """The pixel loop on all cores: the lecture's render loop (lecture 01 "Rendering a Scene")
-and the 02562 path loop (``main_fs``), in tiles, a share of them a thread
+and the 02562 path loop (``main_fs``), in tiles that the threads claim as they go
 (rtfgu.kernels.threads).
 
 Every pixel is computed on its own from the same inputs, so the image is the same bit for

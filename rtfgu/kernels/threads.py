@@ -6,7 +6,7 @@ work queue hands out a loop's iterations).
 This is what numba's ``prange`` over the tiles did, and the image is the same bit for bit:
 every tile is rendered by the same code whichever thread claims it (rtfgu.kernels.render).
 A loop under ``prange`` makes numba run its parallel pipeline (parfor analysis, a gufunc made
-of the loop's body) on every kernel it compiles: about 2.5-3 s of a kernel's 13-20 s first
+of the loop's body) on every kernel it compiles: 2.3-3.3 s of a kernel's 13-20 s first
 render, for a loop whose body is one call of render_tile a tile (docs/compile_time.md,
 "The tiles' loop in threads"). A plain loop compiles in a fraction of a second.
 
