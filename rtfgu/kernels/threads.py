@@ -6,9 +6,9 @@ work queue hands out a loop's iterations).
 This is what numba's ``prange`` over the tiles did, and the image is the same bit for bit:
 every tile is rendered by the same code whichever thread claims it (rtfgu.kernels.render).
 A loop under ``prange`` makes numba run its parallel pipeline (parfor analysis, a gufunc made
-of the loop's body) on every kernel it compiles: 2.3-3.3 s of a kernel's 13-20 s first
-render, for a loop whose body is one call of render_tile a tile (docs/compile_time.md,
-"The tiles' loop in threads"). A plain loop compiles in a fraction of a second.
+of the loop's body) on every kernel it compiles: the loop's own compile took 3.0-3.8 s of
+a kernel's 13-20 s first render, for a body that is one call of render_tile a tile; as a
+plain loop it takes 0.8-1.4 s (docs/compile_time.md, "The tiles' loop in threads").
 
 A Python thread is woken, and takes the GIL for its call, about 0.1 ms after it is handed
 its work on these machines. Claiming runs, rather than taking a fixed share, lets the
