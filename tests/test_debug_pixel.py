@@ -193,28 +193,121 @@ def test_a_pixel_the_camera_sees_nothing_through_is_one_miss(path, name, x, y):
     assert np.allclose(bounces[0].color, (0.1, 0.3, 0.6), atol=1e-7), path
 
 
+def _bvh_families():
+    """Scenes whose BVH holds each combination of what it may hold, beside the homework
+    scenes (the camera looks along -z at a triangle at z = -2, lit from the front): spheres
+    with a mesh, instances with their boxes, a Mesh held only by an instance (no tree of the
+    scene's own), and an instance without a box (a backdrop plane's: its own loop) beside a
+    mesh."""
+    from rtfgu import Float3, Instance, Matte, OrthographicCamera, Plane, Scene, Sphere
+    from rtfgu.lights import PointLight
+    from rtfgu.shapes.mesh import Mesh
+
+    def mesh(z=-2.0):
+        return Mesh([(-0.8, -0.8, z), (0.8, -0.8, z), (0.0, 0.8, z)], [(0, 1, 2)], (0.5, 0.5, 0.5),
+                    material=Matte())
+
+    def sphere(center=(0.3, 0.2, -1.5)):
+        return Sphere(center, 0.4, (1.0, 0.0, 0.0), Matte())
+
+    def scene(*shapes):
+        out = Scene(OrthographicCamera(-1.0, 1.0, -1.0, 1.0))
+        out.shapes = list(shapes)
+        out.lights = [PointLight(Float3(-0.5, 1.5, 1.0), Float3(1.0))]   # shadow rays through the BVH too
+        return out
+
+    backdrop = Plane((0.0, 0.0, -4.0), (0.0, 0.0, 1.0), (0.2, 0.2, 0.6), Matte())
+    return {"spheres and a mesh": scene(sphere(), mesh()),
+            "instances of a sphere and a mesh": scene(Instance(sphere((0.0, 0.0, 0.0))).translate(0.3, 0.2, -1.5),
+                                                      mesh()),
+            "a mesh held by an instance only": scene(Instance(mesh(0.0)).translate(0.1, 0.1, -2.0), sphere()),
+            "an unbounded instance beside a mesh": scene(Instance(backdrop).translate(0.0, 0.0, -0.5), mesh(),
+                                                         sphere())}
+
+
 @pytest.mark.parametrize("precision", ["float32", "float64"])
-def test_one_debugger_kernel_serves_every_scene_of_a_kind(precision):
+def test_one_debugger_kernel_serves_every_scene(precision):
     """The numba debugger's arguments (rtfgu.kernels.debug.scene_arguments) have one numba
-    type for every homework scene of a precision without a mesh, and one for the scenes
-    whose BVH holds the same kinds (a tree of their own, spheres, instances): it compiles
-    once for each, not once per scene's features (textures, an environment, samplers of
-    their own, smooth normals, (u, v)), each compile some 40 s."""
+    type for every homework scene of a precision, with or without a mesh, whatever its BVH
+    holds (a tree of its own, spheres, instances): it compiles once, not once per scene's
+    features (textures, an environment, samplers of their own, smooth normals, (u, v), a
+    mesh), each compile some 40-60 s."""
     import numba
 
     from rtfgu.kernels.debug import scene_arguments
     from rtfgu.layout import compile_scene
     from rtfgu.scenes import SCENES
 
-    types = {}
-    for name, make in SCENES.items():
-        flat = compile_scene(make(), precision)
+    types, families = {}, set()
+    scenes = {name: make() for name, make in SCENES.items()}
+    scenes.update(_bvh_families())
+    for name, scene in scenes.items():
+        flat = compile_scene(scene, precision)
         mesh = flat.mesh
-        family = "no mesh" if mesh is None else "BVH of %s" % ", ".join(
-            kind for kind, held in (("a tree", mesh.scene_tree), ("spheres", mesh.spheres),
-                                    ("instances", mesh.instances)) if held)
-        types.setdefault(family, {}).setdefault(numba.typeof(scene_arguments(flat)), []).append(name)
-    assert {"no mesh", "BVH of a tree"} <= set(types), sorted(types)
-    for family, kinds in types.items():
-        assert len(kinds) == 1, "%s, %s: %d kernels: %s" % (
-            precision, family, len(kinds), [names[:3] for names in kinds.values()])
+        held = [kind for kind, held in (("a tree", mesh.scene_tree), ("spheres", mesh.spheres),
+                                        ("instances", mesh.instances)) if held] if mesh is not None else []
+        families.add("no mesh" if mesh is None else "BVH of " + ", ".join(held) if held
+                     else "instanced meshes' trees only")
+        types.setdefault(numba.typeof(scene_arguments(flat)), []).append(name)
+    assert {"no mesh", "BVH of a tree", "BVH of a tree, spheres", "BVH of a tree, instances",
+            "instanced meshes' trees only"} <= families, sorted(families)
+    assert len(types) == 1, "%s: %d kernels: %s" % (precision, len(types), [names[:3] for names in types.values()])
+
+
+@pytest.mark.parametrize("name", sorted(_bvh_families()))
+def test_the_debugger_traces_what_each_bvh_holds_as_the_render_does(name):
+    """Every pixel of a small render of each of _bvh_families' scenes, float64: the
+    debugger's bounces end on the shape the reference's do, and add up to the numba
+    render's pixel bit for bit (an empty index or tree where the render has none must
+    hide nothing the BVH holds, nor add anything)."""
+    import numpy as np
+
+    from rtfgu import render
+
+    scene = _bvh_families()[name]
+    size = 8
+    image = render(scene, size, size, backend="numba", precision="float64")
+    seen = set()
+    for y in range(size):
+        for x in range(size):
+            reference = trace_pixel(scene, x, y, size, size)
+            numba_path = trace_pixel(scene, x, y, size, size, "numba", "float64")
+            assert [b.shape for b in numba_path] == [b.shape for b in reference], (x, y)
+            seen.add(reference[0].shape)
+            total = np.zeros(3)
+            for bounce in numba_path:   # in bounce order, as the path loop sums them
+                total = total + np.asarray(bounce.color)
+            assert np.array_equal(total, image[y, x]), (x, y, total, image[y, x])
+    assert len(seen - {None}) == len(scene.shapes), seen   # every shape is seen somewhere
+
+
+@pytest.mark.parametrize("name, kind", [("spheres and a mesh", "sphere"),
+                                        ("instances of a sphere and a mesh", "instance")])
+def test_a_kinds_loops_run_over_its_index(name, kind):
+    """What the BVH holds reaches the debugger as its table and an empty index: the kind's
+    own loops (the generated scan_ and any_hit_, run as plain Python) test no row then, and
+    every row with the scene's index. A loop over the table would test the rows twice, with
+    scene indices read past the empty index."""
+    import math
+
+    from rtfgu.kernels import dispatch
+    from rtfgu.kernels.render import shape_arrays
+    from rtfgu.layout import compile_scene
+    from rtfgu.registry import INSTANCED
+
+    generated = dispatch.load()
+    flat = compile_scene(_bvh_families()[name], "float64")
+    shapes = shape_arrays(flat, empty=True)
+    at = dispatch.slot_offsets()[kind]
+    table, empty = shapes[at], shapes[at + 1]
+    assert len(table) == 1 and len(empty) == 0
+    extra = (None, None, -1) if kind == "sphere" else (shapes[at + 2:at + 2 + len(INSTANCED) + len(dispatch.MESH_SLOTS)],)
+    shadow_extra = () if kind == "sphere" else extra
+    scan, any_hit = getattr(generated, "scan_" + kind), getattr(generated, "any_hit_" + kind)
+    ray = ((0.3, 0.2, 1.0), (0.0, 0.0, -1.0), 0.0)     # straight at the sphere, instanced or not
+    none = (math.inf, -1, -1, -1)
+    assert scan(table, empty, *extra, *ray, none, 0) == none
+    assert not any_hit(table, empty, *shadow_extra, *ray, math.inf, 0)
+    t, index, _, row = scan(table, flat.index(kind), *extra, *ray, none, 0)
+    assert (index, row) == (0, 0) and t == pytest.approx(2.1)
+    assert any_hit(table, flat.index(kind), *shadow_extra, *ray, math.inf, 0)

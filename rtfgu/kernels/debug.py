@@ -9,14 +9,14 @@ for base_color, whose shader reads none.
 
 Every entry of the scene reaches the kernel as an array, empty for what the scene lacks
 (render.shape_arrays and render.scene_tuple with ``empty``: shape kinds, texture kinds, the
-environment, the samplers' own sets), but for what the BVH holds (its own tree, spheres,
-instances), and the path loop is always on, so one compiled kernel per precision serves
-every scene without a mesh, and one every scene whose BVH holds the same kinds: an empty
-table tests nothing, and a shader that ends the path ends it after one bounce as in a
-render. Primary rays test every sphere with intersect_sphere rather than the render's
-per-frame eye terms and culled candidates: the terms are the same operations on the same
-numbers (rtfgu.kernels.intersect.sphere_eye_terms), and culling drops only spheres the ray
-cannot hit.
+environment, the samplers' own sets, a tree of no node a ray enters for a scene without a
+mesh, an empty index for the spheres or instances the BVH holds), and the path loop is
+always on, so one compiled kernel per precision serves every scene: an empty table tests
+nothing, and a shader that ends the path ends it after one bounce as in a render. Primary
+rays test every sphere with intersect_sphere rather than the render's per-frame eye terms
+and culled candidates: the terms are the same operations on the same numbers
+(rtfgu.kernels.intersect.sphere_eye_terms), and culling drops only spheres the ray cannot
+hit.
 """
 from __future__ import annotations
 

@@ -174,7 +174,7 @@ def _instance_parts(k: int, kind) -> list:
     keep = _KEEP.format(kind=k).replace("idx = index[i]", "idx = index[i] + place").replace(
         "row = i", "row = i + (face << FACE_SHIFT) if face >= 0 else i")
     scan = ["    tmax, best, kind, row = hit",
-            "    for i in range(table.shape[0]):",
+            "    for i in range(index.shape[0]):",
             "        t, place, face = instanced_t(objects, %s, instance_point(table, i, origin), "
             "instance_vector(table, i, direction), tmin, tmax, formula, best - index[i])"
             % (obj % ("i", "i"))] + [line[4:] for line in keep.split("\n")] + [
@@ -184,7 +184,7 @@ def _instance_parts(k: int, kind) -> list:
                              absent_on="index"))
     parts.append(_overloaded(
         "any_hit_" + name, "table, index, objects, origin, direction, tmin, tmax, formula", "False",
-        "\n".join(["    for i in range(table.shape[0]):",
+        "\n".join(["    for i in range(index.shape[0]):",
                    "        if instanced_t(objects, %s, instance_point(table, i, origin), instance_vector(table, i, direction), "
                    "tmin, tmax, formula, -1)[0] < tmax:" % (obj % ("i", "i")),
                    "            return True",
@@ -275,7 +275,7 @@ def _scan(k: int, kind) -> str:
     """scan_<kind>: the nearest hit of this kind's rows, given the nearest so far."""
     name = kind.name
     keep = _KEEP.format(kind=k)
-    rows = ["    for i in range(table.shape[0]):"]
+    rows = ["    for i in range(index.shape[0]):"]
     # One loop per formula: the formula is the same for every row, and a test of it inside
     # the loop would be paid per row.
     cases = [("formula == %d" % FORMULAS.index(f) if f != "slide" else "", rows,
@@ -372,7 +372,7 @@ def _any_hit(kind) -> str:
     """any_hit_<kind>: is any row of this kind hit in [tmin, tmax)? (a shadow ray)"""
     lines = []
     for formula in kind.formulas[::-1]:
-        loop = ["    for i in range(table.shape[0]):",
+        loop = ["    for i in range(index.shape[0]):",
                 "        if %s(origin, direction, tmin, tmax, %s) < tmax:"
                 % (kind.formula_function(formula), _row_args(kind, "table", "i")),
                 "            return True"]

@@ -123,14 +123,15 @@ def instance_prim(instances, row, origin, direction, tmin, tmax, formula, best):
     """(t, place, face) of instance ``row`` for the tree that holds the instances (rows
     INSTANCE_ROW), as the instance's loop has them (rtfgu.kernels.dispatch, instanced_t;
     ``best``: the best index so far less the instance's first): ``instances`` is the
-    instance kind's (table, index, objects); (inf, 0, -1) where the tree holds none (its
-    table None, or an index: the instances' own loop)."""
+    instance kind's (table, index, objects); (inf, 0, -1) where the scene has none (its
+    table None). A tree that does not hold the instances has no such row, so this is not
+    called there (the instances' own loop, over their index, tests them)."""
     return as_python(_typed_instance_prim, instances, row, origin, direction, tmin, tmax, formula, best)
 
 
 @overload(instance_prim, inline="always")
 def _typed_instance_prim(instances, row, origin, direction, tmin, tmax, formula, best):
-    if isinstance(instances.types[0], types.NoneType) or not isinstance(instances.types[1], types.NoneType):
+    if isinstance(instances.types[0], types.NoneType):
         return lambda instances, row, origin, direction, tmin, tmax, formula, best: (lit(math.inf, tmin), 0, -1)
     from .dispatch import instance_t    # generated from the registry: the instance's object switch
 

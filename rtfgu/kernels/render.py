@@ -43,6 +43,7 @@ import numpy as np
 from numba import njit, prange, types
 from numba.extending import overload
 
+from ..accelerators.wide_bvh import FACE_COLUMNS, ROWS, WIDTH
 from ..layout import MESH_KIND, PINHOLE, THIN_LENS, offset
 from ..materials.material import BASE_COLOR
 from ..registry import INSTANCED, SHAPE_IDS, SHAPES, TEXTURES
@@ -84,39 +85,44 @@ def shape_arrays(flat, empty: bool = False) -> tuple:
     """The kernels' ``shapes``: table, index per row kind, the FlatMesh's arrays and the BVH
     (rtfgu.kernels.dispatch.MESH_SLOTS) for a mesh kind, None for every kind the scene lacks.
 
-    With ``empty`` (the pixel debugger's: one kernel for every scene of a precision without a
-    mesh), every entry is an array that changes nothing, but for those that say what the BVH
-    holds, None as in a render: the mesh's entries where the scene has no tree of its own (a
-    BVH has at least one node; the tree of a scene whose meshes are all instances' starts at
-    a mesh's root), and the index of the spheres or instances the BVH holds (their rows are
-    reached through the tree, compiled for them). A kind the scene lacks is its empty table
-    and index; a mesh without vertex normals or (u, v) has zero ones (a zero normal is the
-    flat one, rtfgu.kernels.mesh.normal_mesh; a (u, v) of third column 0 the barycentrics,
-    texcoord_mesh); the instances' mesh slots hold the scene's mesh, which no instance then
-    names."""
+    With ``empty`` (the pixel debugger's: one kernel for every scene of a precision), every
+    entry is an array that changes nothing where the scene lacks it. A kind the scene lacks
+    is its empty table and index; the spheres or instances the BVH holds have an empty index
+    (the loops over a kind's rows run over its index: their rows are reached through the
+    tree); a scene without a tree of its own has empty_tree's (the tree of a scene whose
+    meshes are all instances' starts at a mesh's root); a mesh without vertex normals or
+    (u, v) has zero ones (a zero normal is the flat one, rtfgu.kernels.mesh.normal_mesh; a
+    (u, v) of third column 0 the barycentrics, texcoord_mesh); the instances' mesh slots hold
+    the scene's mesh, which no instance then names, or empty_tree's."""
     shapes = ()
     mesh = mesh_arrays(flat, empty) if flat.mesh is not None else None
+    absent = empty_tree(flat.dtype) if empty else (None,) * len(MESH_SLOTS)
     for kind in SHAPES:
-        if kind.bvh:   # the scene's own tree; None where its meshes are all instances'
-            shapes += mesh if mesh is not None and flat.mesh.scene_tree else (None,) * len(MESH_SLOTS)
+        if kind.bvh:   # the scene's own tree; absent where its meshes are all instances'
+            shapes += mesh if mesh is not None and flat.mesh.scene_tree else absent
         elif kind.instance and (flat.count(kind.name) or empty):
             # The instance table and index, then the instanced table of each kind an instance
             # may hold (None for a kind none holds), then the mesh arrays with the trees of
-            # the meshes instances hold (None where none holds one).
-            # The index is None where the BVH holds the instances (no loop of their own).
+            # the meshes instances hold (absent where none holds one).
+            # The index is None where the BVH holds the instances (no loop of their own; the
+            # debugger's is empty).
             in_bvh = flat.mesh is not None and flat.mesh.instances
-            index = None if in_bvh else flat.index(kind.name)
+            index = flat.index(kind.name)
+            if in_bvh:
+                index = np.zeros(0, dtype=index.dtype) if empty else None
             held = "instanced_mesh" in flat.features or (empty and mesh is not None)
             shapes += (instance_table(flat, kind.name), index) + tuple(
                 flat.instanced[k.name] if len(flat.instanced[k.name]) or empty else None for k in INSTANCED) \
-                + (mesh if held else (None,) * len(MESH_SLOTS))
+                + (mesh if held else absent)
         elif flat.count(kind.name) == 0:
             shapes += ((flat.table(kind.name), flat.index(kind.name)) if empty else (None, None)) \
                 + (None,) * (slots(kind) - 2)
         elif kind.name == "sphere" and flat.mesh is not None and flat.mesh.spheres:
             # The BVH holds the spheres: no loop of their own (scan and any_hit are absent
-            # without an index), their table kept for the BVH, their normals and (u, v).
-            shapes += (flat.table(kind.name), None)
+            # without an index, and loop over none with an empty one), their table kept for
+            # the BVH, their normals and (u, v).
+            index = flat.index(kind.name)
+            shapes += (flat.table(kind.name), np.zeros(0, dtype=index.dtype) if empty else None)
         else:
             shapes += (flat.table(kind.name), flat.index(kind.name))
     return shapes
@@ -141,6 +147,22 @@ def mesh_arrays(flat, empty: bool = False) -> tuple:
         normals = np.zeros_like(mesh.vertices) if normals is None else normals
         uvs = np.zeros_like(mesh.vertices) if uvs is None else uvs
     return mesh.vertices, mesh.faces, normals, nodes, nodes.view(np.int32), uvs
+
+
+def empty_tree(dtype) -> tuple:
+    """mesh_arrays of a mesh of no face (shape_arrays with ``empty``): vertices, faces,
+    normals and (u, v) of no row, and a tree of one node whose boxes are empty (lo = +inf,
+    hi = -inf), which no ray enters, so a traversal of it returns the hit it was given; the
+    wide node (rtfgu.accelerators.wide_bvh) where the CPU has vector units, else the binary
+    one (rtfgu.accelerators.flat_bvh: lo at columns 0-2, hi at 4-6)."""
+    if WIDE:
+        nodes = np.zeros((1, ROWS, WIDTH), dtype=np.float32)
+        nodes[0, :3], nodes[0, 3:6] = np.inf, -np.inf
+    else:
+        nodes = np.zeros((1, 8), dtype=np.float32)
+        nodes[0, :3], nodes[0, 4:7] = np.inf, -np.inf
+    none = np.zeros((0, 3), dtype=dtype)
+    return none, np.zeros((0, FACE_COLUMNS), dtype=np.int32), none.copy(), nodes, nodes.view(np.int32), none.copy()
 
 
 def instance_table(flat, kind: str) -> np.ndarray:
