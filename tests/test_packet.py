@@ -346,6 +346,50 @@ def test_the_render_gives_the_same_image_with_packets_as_without(name, precision
     assert np.array_equal(single[1], packed[1])
 
 
+@pytest.mark.parametrize("precision", ["float64", "float32"])
+def test_a_render_compiles_one_traversal_per_kind_of_tree(precision):
+    """A render with packets compiles the packet traversal once, for an int64 count (a
+    literal 0 had numba compile it once more, for a count no call passes), and one
+    mesh_closest for the scan of the tree and the packets' single rays (both pass the root
+    as an int64): no two compiled signatures differ in the count or the root alone."""
+    if not _vector_cpu():
+        pytest.skip("this CPU has no AVX: the numba path traverses the binary tree, which has no packets")
+    import rtfgu
+    from numba import types
+
+    from rtfgu.kernels.mesh import mesh_closest
+    from rtfgu.kernels.packet import mesh_closest_packet
+    from rtfgu.scenes import SCENES
+
+    rtfgu.render(SCENES["cornell_box_spheres"](), 16, 16, backend="numba", precision=precision)
+
+    def compiled(dispatcher) -> list:
+        """The signatures compiled in this process and those numba's cache holds (a kernel
+        loaded from the cache compiles nothing it calls)."""
+        held = [key[0] for key in dispatcher._cache._cache_file._load_index()]
+        return list(dict.fromkeys(list(dispatcher.signatures) + held))
+
+    def others(signatures, at, at_in_tuple=None):
+        """Each signature's arguments with argument ``at`` (or element ``at_in_tuple`` of
+        that tuple) left out."""
+        out = []
+        for sig in signatures:
+            args = list(sig)
+            if at_in_tuple is None:
+                del args[at]
+            else:
+                args[at] = tuple(t for i, t in enumerate(args[at].types) if i != at_in_tuple)
+            out.append(tuple(args))
+        return out
+
+    packets = compiled(mesh_closest_packet)
+    rendered = [sig for sig in packets if isinstance(sig[5].types[0], types.CPointer)]
+    assert rendered and not any(isinstance(sig[5].types[2], types.Literal) for sig in rendered)
+    assert len(set(others(packets, 5, 2))) == len(packets)
+    roots = [sig for sig in compiled(mesh_closest) if len(sig) > 10]
+    assert len(set(others(roots, 10))) == len(roots), [str(sig[10]) for sig in roots]
+
+
 def test_a_packets_hit_is_weighed_against_a_plane_outside_the_tree_as_the_traversal_is():
     # A mesh square lying in a plane: at every pixel the plane (outside the BVH) and a face
     # of the tree meet at ts a rounding apart, or equal, where the shape earlier in

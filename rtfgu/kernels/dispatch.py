@@ -77,7 +77,7 @@ def _mesh_parts(k: int, kind, at: int) -> list:
         _overloaded("scan_" + name, "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, hit, "
                     "formula", "hit",
                     "    return mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin, hit, "
-                    "formula, 0, instances)",
+                    "formula, np.int64(0), instances)",
                     "The nearest hit among what the BVH holds, given the nearest so far"),
         _overloaded("any_hit_" + name, "vertices, faces, nodes, links, spheres, instances, origin, direction, tmin, "
                     "tmax, formula", "False",
@@ -539,6 +539,7 @@ def source() -> str:
              "from rtfgu.kernels.dispatch_support import as_python",
              "from rtfgu.kernels.float3 import add, load3, lit, dot, mul, neg, row3, scale",
              "import math",
+             "import numpy as np",
              "from rtfgu.kernels.float3 import div, normalize",
              "from rtfgu.kernels.lights import %s" % ", ".join(
                  ["sample_" + l.name for l in LIGHTS if l.ray_cast] + ["sample_%s_area" % l.name for l in LIGHTS if l.area]),

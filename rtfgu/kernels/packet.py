@@ -500,8 +500,10 @@ def mesh_closest_packet(vertices, faces, nodes, links, spheres, packet, hits, fo
                 origin = (rays[OX * PACKET + i], rays[OY * PACKET + i], rays[OZ * PACKET + i])
                 direction = (directions[3 * i], directions[3 * i + 1], directions[3 * i + 2])
                 if code >= 0:
+                    # The root as an int64, as the generated scan_ of a mesh kind passes it: one
+                    # compiled mesh_closest for both.
                     hit = mesh_closest(vertices, faces, nodes, links, spheres, origin, direction, tmin,
-                                       (t[i], best[i], kind[i], row[i]), formula, code, instances)
+                                       (t[i], best[i], kind[i], row[i]), formula, np.int64(code), instances)
                 else:
                     start, size = wide_bvh.leaf_span(code, links)
                     hit = _leaf_closest(vertices, faces, spheres, instances, start, size, _frame(axes, frames, i),

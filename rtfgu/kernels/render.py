@@ -546,7 +546,9 @@ def hits_in_packets(tile, shapes, eye_rows, rays, ts, hits, formula):
     row = packet_lanes(np.int64)
     for by in range(y0, y1, PACKET_SIDE):
         for bx in range(x0, x1, PACKET_SIDE):
-            count = 0
+            # An int64 from the start: a literal 0 would have numba compile the packet's
+            # traversal once more, for a count of Literal[int](0) that no call passes.
+            count = np.int64(0)
             for iy in range(by, min(by + PACKET_SIDE, y1)):
                 for ix in range(bx, min(bx + PACKET_SIDE, x1)):
                     k = (iy - y0) * (x1 - x0) + ix - x0
