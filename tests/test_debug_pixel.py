@@ -311,3 +311,28 @@ def test_a_kinds_loops_run_over_its_index(name, kind):
     t, index, _, row = scan(table, flat.index(kind), *extra, *ray, none, 0)
     assert (index, row) == (0, 0) and t == pytest.approx(2.1)
     assert any_hit(table, flat.index(kind), *shadow_extra, *ray, math.inf, 0)
+
+
+@pytest.mark.parametrize("wide", [True, False])
+def test_the_empty_tree_is_entered_by_no_ray(monkeypatch, wide):
+    """empty_tree, what the debugger is given for a scene without a tree of its own, in the
+    wide layout and the binary one (a CPU without AVX): every traversal returns the hit it
+    was given, and no shadow ray is stopped, for rays along the axes and off them, from
+    the origin and far from it."""
+    import math
+
+    import numpy as np
+
+    from rtfgu.kernels import render
+    from rtfgu.kernels.mesh import mesh_any, mesh_closest
+
+    if wide and not render.WIDE:
+        pytest.skip("this CPU has no AVX: the numba path has no wide tree")
+    monkeypatch.setattr(render, "WIDE", wide)
+    vertices, faces, _, nodes, links, _ = render.empty_tree(np.float64)
+    assert nodes.ndim == (3 if wide else 2)
+    given = (5.0, 3, 1, 7)
+    for origin in ((0.0, 0.0, 0.0), (1.0, -2.0, 0.5), (-1e30, 3.0, 1e-30)):
+        for direction in ((1.0, 0.0, 0.0), (0.0, -1.0, 0.0), (0.0, 0.0, 1.0), (0.6, 0.0, -0.8)):
+            assert mesh_closest(vertices, faces, nodes, links, None, origin, direction, 0.0, given, 0) == given
+            assert not mesh_any(vertices, faces, nodes, links, None, origin, direction, 0.0, math.inf, 0)
