@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 
-from .float3 import Float3, as_float3, cross, dot
+from .float3 import Float3, as_float3, dot
 from .ray import Ray
 from .shapes.plane import Plane
 from .shapes.sphere import Sphere
@@ -179,21 +179,32 @@ def intersect_triangle_watertight(ray: Ray, v0, v1, v2) -> bool:
     negatives of each other and a ray through the edge is accepted by at least one of them.
     The barycentric slide test has no such property: each triangle rounds its own e0, e1, n.
     A zero-area triangle (e0 x e1 == 0, or det == 0) is a defined miss."""
-    v0 = as_float3(v0, "v0")
-    v1 = as_float3(v1, "v1")
-    v2 = as_float3(v2, "v2")
+    return watertight_hit(ray, as_float3(v0, "v0"), as_float3(v1, "v1"), as_float3(v2, "v2"))
+
+
+def watertight_hit(ray: Ray, v0: Float3, v1: Float3, v2: Float3) -> bool:
+    """intersect_triangle_watertight of vertices already checked (a mesh's faces, checked when
+    the mesh was made). Written on components, as the paper's listing is: the coordinates
+    picked by index (kx, ky, kz) from tuples, each operation the one of the listing, in its
+    order, so the numba path's copy (rtfgu.kernels.mesh) rounds alike."""
     o, d = ray.origin, ray.direction
-    kz = _max_dim(Float3(abs(d.x), abs(d.y), abs(d.z)))
+    dv = (d.x, d.y, d.z)
+    ax, ay, az = abs(dv[0]), abs(dv[1]), abs(dv[2])
+    if ax > ay:
+        kz = 0 if ax > az else 2
+    else:
+        kz = 1 if ay > az else 2
     kx = (kz + 1) % 3
     ky = (kx + 1) % 3
-    if d[kz] < 0.0:
+    if dv[kz] < 0.0:
         kx, ky = ky, kx  # keep the winding, so U, V, W keep their sign convention
-    Sx = d[kx] / d[kz]
-    Sy = d[ky] / d[kz]
-    Sz = 1.0 / d[kz]
-    A = v0 - o
-    B = v1 - o
-    C = v2 - o
+    Sx = dv[kx] / dv[kz]
+    Sy = dv[ky] / dv[kz]
+    Sz = 1.0 / dv[kz]
+    ox, oy, oz = o.x, o.y, o.z
+    A = (v0.x - ox, v0.y - oy, v0.z - oz)
+    B = (v1.x - ox, v1.y - oy, v1.z - oz)
+    C = (v2.x - ox, v2.y - oy, v2.z - oz)
     Ax = A[kx] - Sx * A[kz]
     Ay = A[ky] - Sy * A[kz]
     Bx = B[kx] - Sx * B[kz]
@@ -205,8 +216,10 @@ def intersect_triangle_watertight(ray: Ray, v0, v1, v2) -> bool:
     W = Bx * Ay - By * Ax
     # A zero-area triangle has exactly zero e0 x e1; the paper's det == 0 test alone lets
     # some through, because U + V + W of a collinear triangle need not round to zero.
-    n = cross(v1 - v0, v2 - v0)
-    if n.x == 0.0 and n.y == 0.0 and n.z == 0.0:
+    e0x, e0y, e0z = v1.x - v0.x, v1.y - v0.y, v1.z - v0.z
+    e1x, e1y, e1z = v2.x - v0.x, v2.y - v0.y, v2.z - v0.z
+    if (e0y * e1z) - (e0z * e1y) == 0.0 and (e0z * e1x) - (e0x * e1z) == 0.0 \
+            and (e0x * e1y) - (e0y * e1x) == 0.0:
         return False
     if (U < 0.0 or V < 0.0 or W < 0.0) and (U > 0.0 or V > 0.0 or W > 0.0):
         return False

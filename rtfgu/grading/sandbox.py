@@ -57,6 +57,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .archive import find_files, unpack_submission
+from .bytecode import write_bytecode
 from .generate import PACKAGE_DIR, student_files
 from .release import build_package, probe_files
 from .timeouts import boot_options
@@ -124,6 +125,10 @@ def prepare(assignment, submission, tmp, package_dir: Path = PACKAGE_DIR, reveal
                     target.write_text(stubs[relpath])
                     continue
             target.write_bytes(data)
+    # Each test's interpreter cannot write the package: it reads the grader's bytecode.
+    write_bytecode(package, fresh=[package / "rtfgu" / relpath for relpath in assignment.files]
+                   if submission is not None else ())
+    write_bytecode(probes)
     _close_tree(root)
     return ws
 

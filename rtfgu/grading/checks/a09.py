@@ -31,7 +31,7 @@ IMAGE = dict(width=20, height=20, spp=64, seed=0)
 FURNACE = dict(width=12, height=12, spp=64, seed=0)
 REFERENCE_SEEDS = 256       # the Cornell box reference: 256 x 64 samples per pixel
 REFERENCE_SEED0 = 1000      # ... from seeds the student's render does not use
-IMAGE_SECONDS = 240.0       # the image test renders 25,600 paths in pure Python: about 15 s here
+IMAGE_SECONDS = 240.0       # the image test renders 25,600 paths in pure Python: about 5 s here
 NOISE_LIMIT = 16.0          # an image this many times noisier (variance) than the reference fails
 # The integrals of f (n . w) g(w) / rho over the hemisphere, f = rho / pi (probes.a09.G_NAMES).
 G_TRUTH = {"1": 1.0, "cos": 2.0 / 3.0, "cos^2": 0.5, "lateral": 2.0 / (3.0 * math.pi)}
