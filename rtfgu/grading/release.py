@@ -20,6 +20,7 @@ references, run by rtfgu.grading.local), the assignments' READMEs, a Makefile an
 from __future__ import annotations
 
 import json
+import os
 import re
 import shutil
 from pathlib import Path
@@ -77,15 +78,26 @@ def _skipped(path: Path) -> bool:
     return any(part in SKIP_NAMES for part in path.parts) or path.name.endswith(SKIP_SUFFIXES)
 
 
+def _package_paths(package_dir: Path) -> list:
+    """Every path under ``package_dir`` but the grader (grading/) and the folders never
+    shipped (SKIP_NAMES: the numba cache's thousands of files among them), in sorted order."""
+    found = []
+    for folder, dirs, names in os.walk(package_dir):
+        top = folder == str(package_dir)
+        dirs[:] = [d for d in dirs if d not in SKIP_NAMES and not (top and d == "grading")]
+        found.extend(Path(folder, name) for name in dirs + names)
+    return sorted(found)
+
+
 def package_files(reveal=(), package_dir: Path = PACKAGE_DIR) -> dict:
     """relpath (under rtfgu/) -> bytes of every file of the student package."""
     revealed = revealed_numbers(reveal)
     package_dir = Path(package_dir)
     left_out_dirs = []
     files = {}
-    for path in sorted(package_dir.rglob("*")):
+    for path in _package_paths(package_dir):
         rel = path.relative_to(package_dir)
-        if not path.is_file() or _skipped(rel) or rel.parts[0] == "grading":
+        if not path.is_file() or _skipped(rel):
             continue
         if any(rel.parts[:len(d)] == d for d in left_out_dirs):
             continue
