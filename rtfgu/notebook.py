@@ -17,8 +17,6 @@ from __future__ import annotations
 import importlib.util
 from pathlib import Path
 
-from PIL import Image
-
 from .image import to_8bit, write_png
 from .progress import TimeLeft
 from .renderer import render_passes
@@ -65,6 +63,7 @@ def show(scene, width: int, height: int, backend: str | None = None, spp: int | 
         caption = "%d of %d samples, %.1f s, %s (%s)" % (done, total, clock.elapsed, clock.describe(), backend)
         if notebook:
             from IPython.display import Pretty, display
+            from PIL import Image
 
             picture = Image.fromarray(to_8bit(image), mode="RGB")
             if picture_handle is None:
