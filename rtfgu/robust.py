@@ -186,14 +186,11 @@ def watertight_hit(ray: Ray, v0: Float3, v1: Float3, v2: Float3) -> bool:
     """intersect_triangle_watertight of vertices already checked (a mesh's faces, checked when
     the mesh was made). Written on components, as the paper's listing is: the coordinates
     picked by index (kx, ky, kz) from tuples, each operation the one of the listing, in its
-    order, so the numba path's copy (rtfgu.kernels.mesh) rounds alike."""
+    order, so the numba path's copy (rtfgu.kernels.robust.ray_shear and rtfgu.kernels.mesh)
+    rounds alike."""
     o, d = ray.origin, ray.direction
     dv = (d.x, d.y, d.z)
-    ax, ay, az = abs(dv[0]), abs(dv[1]), abs(dv[2])
-    if ax > ay:
-        kz = 0 if ax > az else 2
-    else:
-        kz = 1 if ay > az else 2
+    kz = _max_dim(d)
     kx = (kz + 1) % 3
     ky = (kx + 1) % 3
     if dv[kz] < 0.0:
