@@ -376,7 +376,11 @@ def instance_slide(o, d, tmin, tmax, shapes, i):
                             (zero, zero, zero), one)
 
 
-@njit(cache=True, error_model="numpy")
+# Not cached: numba 0.68.1 cannot load from its cache a function whose arguments are other
+# jitted functions (numba issue #2956): in a process after the one that saved it, the
+# cache's index holds those functions' types by weak reference, and the call failed with a
+# KeyError or "underlying object has vanished". Each compiles in about 0.3 s.
+@njit(error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
     where ``finite`` says the input is not finite."""
@@ -406,7 +410,7 @@ def triangle_error(p, shapes, i):
     return triangle_point_error(row3(shapes, i, 0), row3(shapes, i, 3), row3(shapes, i, 6))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(error_model="numpy")     # not cached, as batch
 def batch_spawn(point_error, positions, normals, directions, shapes):
     """PBRT's offset origins of secondary rays leaving ``positions`` on the shape in row i
     of ``shapes``, whose point error ``point_error(p, shapes, i)`` bounds; tmin is 0."""
