@@ -376,10 +376,10 @@ def instance_slide(o, d, tmin, tmax, shapes, i):
                             (zero, zero, zero), one)
 
 
-# Not cached: numba 0.68.1 cannot load from its cache a function whose arguments are other
-# jitted functions (numba issue #2956): in a process after the one that saved it, the
-# cache's index holds those functions' types by weak reference, and the call failed with a
-# KeyError or "underlying object has vanished". Each compiles in about 0.3 s.
+# Not cached: numba 0.68.1 keeps the cached signatures of a function whose arguments are
+# other jitted functions by weak references to those functions' types (numba issue #2956),
+# and a process after the one that filled the cache could not save into it: a KeyError, then
+# "underlying object has vanished" (docs/compile_time.md). Each compiles in about 0.3 s.
 @njit(error_model="numpy")
 def batch(adapter, finite, origins, directions, tmin, tmax, shapes):
     """t of ray i against the shape in row i of ``shapes`` through ``adapter``, or inf
