@@ -762,3 +762,32 @@ def test_a_killed_graders_work_folder_is_removed_when_its_sandbox_user_is_claime
     removed = sandbox.remove_stale_work_folders(64999, str(tmp_path))
     assert removed == [str(stale)] and not stale.exists()
     assert other_group.exists() and unrelated.exists()
+
+
+def test_bytecode_planted_for_the_next_tests_is_never_run(isolation, tmp_path):
+    """The grader writes the bytecode of the package a test imports (rtfgu.grading.bytecode).
+    A submission that replaces it, for the honest files the later tests import, with code
+    that matches their sources' hashes and does something else, cannot: the folders are
+    read-only to it in every mode, and the later tests score what the honest part scores."""
+    honest = honest_scores(isolation)
+    attack = """
+        import importlib.util, marshal, os
+        import rtfgu
+        for name in ("shapes/triangle.py", "shapes/plane.py"):
+            source = os.path.join(os.path.dirname(rtfgu.__file__), name)
+            data = open(source, "rb").read()
+            bad = (importlib.util.MAGIC_NUMBER + (3).to_bytes(4, "little") + importlib.util.source_hash(data)
+                   + marshal.dumps(compile("raise RuntimeError('LEAKED: a planted pyc ran')", source, "exec")))
+            target = importlib.util.cache_from_source(source)
+            for plant in (lambda: open(target, "wb").write(bad),
+                          lambda: (os.unlink(target), open(target, "wb").write(bad)),
+                          lambda: (os.rename(os.path.dirname(target), os.path.dirname(target) + "-old"),
+                                   os.mkdir(os.path.dirname(target)), open(target, "wb").write(bad))):
+                try:
+                    plant()
+                except OSError:
+                    pass
+        """
+    result = _grade_attack(tmp_path, isolation, attack)
+    assert _scores(result) == honest
+    assert all("planted pyc" not in t.output for t in result.tests)
