@@ -512,7 +512,7 @@ def test_part_objects_against_the_exact_truth(name):
 
 def test_no_cached_kernel_takes_a_jitted_function_as_an_argument():
     """numba 0.68.1's cache cannot serve a function whose arguments are other jitted functions
-    (numba issue #2956): in a process after the one that filled the cache, its index holds
+    (a limit of numba's cache): in a process after the one that filled the cache, its index holds
     their types by weak references that have died, and saving a signature fails (a KeyError,
     then "underlying object has vanished"). The numba path's batch functions take the
     shape's test and the finiteness check as arguments: run a second time with a warm cache,

@@ -377,7 +377,7 @@ def instance_slide(o, d, tmin, tmax, shapes, i):
 
 
 # Not cached: numba 0.68.1 keeps the cached signatures of a function whose arguments are
-# other jitted functions by weak references to those functions' types (numba issue #2956),
+# other jitted functions by weak references to those functions' types (a limit of numba's cache),
 # and a process after the one that filled the cache could not save into it: a KeyError, then
 # "underlying object has vanished" (docs/compile_time.md). Each compiles in about 0.3 s.
 @njit(error_model="numpy")
