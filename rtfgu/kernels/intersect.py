@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from ..layout import SPHERE_CENTER, SPHERE_RADIUS
 from .float3 import add, cross, dot, lit, neg, normalize, row3, scale, sub
+from .next_float import next_up
 
 # Formula ids of a render (rtfgu.kernels.dispatch.FORMULAS): the slide's and the robust one.
 SPHERE_SLIDE = 0
@@ -262,7 +262,7 @@ def intersect_open_cylinder(origin, direction, tmin, tmax, y0, y1, radius):
         y_hit = origin[1] + t * direction[1]
         if y_hit >= y0 and y_hit <= y1:
             return t
-        t = intersect_sphere(flat_origin, flat_direction, np.nextafter(t, lit(math.inf, radius)), tmax,
+        t = intersect_sphere(flat_origin, flat_direction, next_up(t), tmax,
                              center, radius)
     return lit(math.inf, radius)
 

@@ -40,6 +40,7 @@ INSTANCE = SHAPE_IDS["instance"]
 from .dispatch_support import as_python
 from .intersect import intersect_sphere, intersect_sphere_robust
 from .robust import _pick, ray_shear
+from .next_float import next_up
 from .float3 import add, cross, dot, lit, lit_per_precision, normalize, scale, sub
 from . import wide_bvh
 from ..accelerators.wide_bvh import BLOCK_HEADER, WIDTH
@@ -178,10 +179,9 @@ def _leaf_closest(vertices, faces, spheres, instances, first, count, frame, orig
     """The nearest of the leaf's rows faces[first:first + count] and the best so far,
     ``state`` = (t, scene index, kind, row), by the tie rule (mesh_closest)."""
     tmax, best, best_kind, best_row = state
-    inf = lit(math.inf, tmin)
     for f in range(first, first + count):
         idx = faces[f, 3]
-        limit = tmax if idx > best else np.nextafter(tmax, inf)
+        limit = tmax if idx > best else next_up(tmax)
         if faces[f, 0] == SPHERE_ROW:
             t = sphere_prim(spheres, faces[f, 1], origin, direction, tmin, limit, formula)
             k, r = SPHERE, faces[f, 1]
@@ -285,10 +285,9 @@ def block_closest(vertices, faces, nodes, at, first, count, frame, tmin, state, 
 def _typed_block_closest(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
     def vector(vertices, faces, nodes, at, first, count, frame, tmin, state, lanes):
         tmax, best, best_kind, best_row = state
-        inf = lit(math.inf, tmin)
         # Every lane hit in [tmin, the float above the best t), then the tie rule lane by lane:
         # the lexicographic least (t, scene index), whatever the lanes' order.
-        mask = _block_lanes(vertices, faces, nodes, at, first, count, frame, tmin, np.nextafter(tmax, inf), lanes)
+        mask = _block_lanes(vertices, faces, nodes, at, first, count, frame, tmin, next_up(tmax), lanes)
         zeroed = mask >> WIDTH
         mask = (mask | zeroed) & ((1 << WIDTH) - 1)
         for j in range(WIDTH):
@@ -297,7 +296,7 @@ def _typed_block_closest(vertices, faces, nodes, at, first, count, frame, tmin, 
                 idx = faces[f, 3]
                 t = lanes[j]
                 if zeroed >> j & 1:
-                    t = intersect_face(vertices, faces, f, frame, tmin, tmax if idx > best else np.nextafter(tmax, inf))
+                    t = intersect_face(vertices, faces, f, frame, tmin, tmax if idx > best else next_up(tmax))
                 if t < tmax or (t == tmax and idx < best):
                     tmax, best, best_kind, best_row = t, idx, MESH, f
         return tmax, best, best_kind, best_row

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numba import njit
 
 from .float3 import add, lit, neg, normalize, scale, sub
+from .next_float import next_up
 from .intersect import intersect_open_cylinder, intersect_sphere, normal_open_cylinder, plane_hit_offset
 
 
@@ -41,7 +41,7 @@ def intersect_convex_part_sphere(origin, direction, tmin, tmax, center, radius, 
             phi = azimuth(hit)
             if phi_min <= phi and phi <= phi_max:
                 return t
-        t = intersect_sphere(origin, direction, np.nextafter(t, inf), tmax, center, radius)
+        t = intersect_sphere(origin, direction, next_up(t), tmax, center, radius)
     return inf
 
 
@@ -65,7 +65,7 @@ def intersect_open_part_cylinder(origin, direction, tmin, tmax, y0, y1, radius, 
         phi = azimuth(add(origin, scale(direction, t)))
         if phi_min <= phi and phi <= phi_max:
             return t
-        t = intersect_open_cylinder(origin, direction, np.nextafter(t, inf), tmax, y0, y1, radius)
+        t = intersect_open_cylinder(origin, direction, next_up(t), tmax, y0, y1, radius)
     return inf
 
 

@@ -35,6 +35,7 @@ import numpy as np
 from numba import njit
 
 from .float3 import cross, lit, lit_per_precision, normalize, row3, sub
+from .next_float import next_down, next_up
 from .intersect import (intersect_box, intersect_disk, intersect_open_cylinder, intersect_plane,
                         intersect_rectangle, intersect_sphere,
                         intersect_sphere_robust, intersect_triangle)
@@ -233,9 +234,9 @@ def plane_point_error(p, point):
 @njit(cache=True, error_model="numpy")
 def _away(x, o):
     if o > lit(0, x):
-        return np.nextafter(x, lit(math.inf, x))
+        return next_up(x)
     if o < lit(0, x):
-        return np.nextafter(x, lit(-math.inf, x))
+        return next_down(x)
     return x
 
 
