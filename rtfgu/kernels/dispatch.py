@@ -25,12 +25,17 @@ cost a reference count per ray).
 from __future__ import annotations
 
 import hashlib
+import importlib
 import importlib.util
 import os
+import re
 import sys
 import tempfile
 import warnings
 from pathlib import Path
+from types import ModuleType
+
+import numpy as np
 
 from .. import layout
 from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_IDS, SHAPES, TEXTURES
@@ -752,18 +757,70 @@ def cache_dir() -> Path:
                   "(set RTFGU_CACHE_DIR)")
 
 
+# ``from ..module import a, b as c`` or ``from ..module import (a, b,\n c)`` at a line's start.
+_PACKAGE_IMPORT = re.compile(r"^[ \t]*from \.\.(?P<module>[\w.]*) import (?:\((?P<multi>[^)]*)\)|(?P<single>[^\n#]*))",
+                             re.MULTILINE)
+
+
+def kernel_imports() -> list:
+    """(module, names) of every ``from ..module import names`` in the kernel modules: what
+    they take from the rest of the package (the layout's offsets, the registry's kinds, a
+    tracer's depth, the BVH's node layout, the noise's tables), read from their source."""
+    found = set()
+    for path in sorted(Path(__file__).resolve().parent.glob("*.py")):
+        for match in _PACKAGE_IMPORT.finditer(path.read_text()):
+            module = "rtfgu" + ("." + match["module"] if match["module"] else "")
+            names = (match["multi"] or match["single"]).split(",")
+            names = tuple(sorted(n.split()[0] for n in names if n.strip()))
+            if module != "rtfgu.kernels" and not module.startswith("rtfgu.kernels."):
+                found.add((module, names))
+    return sorted(found)
+
+
+def _hash_value(digest, value, files: set) -> None:
+    """Add ``value`` to ``digest``: numbers, strings and arrays by what they hold, containers
+    element by element; a module, class, function or other object goes into ``files`` as
+    the source file of the module that defines it."""
+    if value is None or isinstance(value, (bool, int, float, complex, str, bytes, np.generic)):
+        digest.update(repr(value).encode())
+    elif isinstance(value, np.ndarray):
+        digest.update(("%s%s" % (value.dtype, value.shape)).encode())
+        digest.update(np.ascontiguousarray(value).tobytes())
+    elif isinstance(value, (tuple, list)):
+        digest.update(b"(")
+        for item in value:
+            _hash_value(digest, item, files)
+        digest.update(b")")
+    elif isinstance(value, dict):
+        for key in sorted(value, key=repr):
+            _hash_value(digest, key, files)
+            _hash_value(digest, value[key], files)
+    else:
+        module = value if isinstance(value, ModuleType) else sys.modules.get(
+            getattr(value, "__module__", None) or type(value).__module__)
+        if getattr(module, "__file__", None):
+            files.add(Path(module.__file__))
+
+
 def kernel_version() -> str:
     """A hash of every source the compiled kernels depend on: the kernel modules, the
-    layout and the registry they read, and the generated text. numba checks only the file
-    of the function it caches, so a kernel compiled against an older registry or an older
-    intersect.py would be loaded from its cache; a cache folder per version cannot be."""
+    generated text, and the modules the kernels import from the rest of the package
+    (kernel_imports) with the values of what they import. numba checks only the file of the
+    function it caches, and it compiles a global's value into the code (a constant such as
+    the wide BVH's ROWS or a tracer's depth), so a kernel compiled against an older
+    registry, an older intersect.py or an older constant would be loaded from its cache; a
+    cache folder per version cannot be."""
     digest = hashlib.sha256(source().encode())
+    files = set(Path(__file__).resolve().parent.glob("*.py"))
+    for module_name, names in kernel_imports():
+        module = importlib.import_module(module_name)
+        files.add(Path(module.__file__))
+        for name in names:
+            digest.update(("%s.%s" % (module_name, name)).encode())
+            _hash_value(digest, getattr(module, name), files)
     package = Path(__file__).resolve().parent.parent
-    files = sorted(Path(__file__).resolve().parent.glob("*.py"))
-    files += [package / name for name in ("layout.py", "registry.py", "materials/material.py", "ray.py",
-                                          "sampling/random.py", "accelerators/flat_bvh.py")]
-    for path in files:
-        digest.update(path.name.encode())
+    for path in sorted(files):
+        digest.update(str(path.relative_to(package) if package in path.parents else path.name).encode())
         digest.update(path.read_bytes())
     return digest.hexdigest()[:16]
 
