@@ -40,6 +40,17 @@ def test_kernel_imports_finds_every_import_the_parser_finds():
             "rtfgu.layout", "rtfgu.registry"} <= modules
 
 
+def test_package_imports_reads_parentheses_aliases_comments_and_indented_imports():
+    text = ("from ..layout import (A,  # the first\n    B as C,\n    D)\n"
+            "from ..registry import E  # a comment\n"
+            "def f():\n    from ..x.y import F, G\n"
+            "from . import kernel_local\nfrom .. import layout\n"
+            "text = 'from ..inside import a string'\n")
+    assert dispatch.package_imports(text) == [
+        ("rtfgu.layout", ("A", "B", "D")), ("rtfgu.registry", ("E",)), ("rtfgu.x.y", ("F", "G")),
+        ("rtfgu", ("layout",))]
+
+
 VERSION = """
 import sys
 sys.path.insert(0, sys.argv[1])

@@ -762,16 +762,24 @@ _PACKAGE_IMPORT = re.compile(r"^[ \t]*from \.\.(?P<module>[\w.]*) import (?:\((?
                              re.MULTILINE)
 
 
+def package_imports(text: str) -> list:
+    """(module, names) of each ``from ..module import names`` in the Python source ``text``
+    (a kernel module's), module named from the package: "rtfgu.layout"."""
+    found = []
+    for match in _PACKAGE_IMPORT.finditer(text):
+        names = re.sub(r"#[^\n]*", "", match["multi"] or match["single"]).split(",")
+        found.append(("rtfgu" + ("." + match["module"] if match["module"] else ""),
+                      tuple(sorted(n.split()[0] for n in names if n.strip()))))
+    return found
+
+
 def kernel_imports() -> list:
     """(module, names) of every ``from ..module import names`` in the kernel modules: what
     they take from the rest of the package (the layout's offsets, the registry's kinds, a
     tracer's depth, the BVH's node layout, the noise's tables), read from their source."""
     found = set()
     for path in sorted(Path(__file__).resolve().parent.glob("*.py")):
-        for match in _PACKAGE_IMPORT.finditer(path.read_text()):
-            module = "rtfgu" + ("." + match["module"] if match["module"] else "")
-            names = (match["multi"] or match["single"]).split(",")
-            names = tuple(sorted(n.split()[0] for n in names if n.strip()))
+        for module, names in package_imports(path.read_text()):
             if module != "rtfgu.kernels" and not module.startswith("rtfgu.kernels."):
                 found.add((module, names))
     return sorted(found)
