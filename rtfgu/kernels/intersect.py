@@ -262,8 +262,7 @@ def intersect_open_cylinder(origin, direction, tmin, tmax, y0, y1, radius):
         y_hit = origin[1] + t * direction[1]
         if y_hit >= y0 and y_hit <= y1:
             return t
-        t = intersect_sphere(flat_origin, flat_direction, next_up(t), tmax,
-                             center, radius)
+        t = intersect_sphere(flat_origin, flat_direction, next_up(t), tmax, center, radius)
     return lit(math.inf, radius)
 
 
