@@ -337,6 +337,28 @@ def row_values(record: str, obj) -> tuple:
     return _packer(record)[1](obj)
 
 
+# record -> the function row_builder makes for it, made on first use.
+_BUILDERS = {}
+
+
+def row_builder(record: str):
+    """A function of the fields of ``record``, by name, that returns what row_values returns
+    for an object holding them: ``row_builder("Material")(color=..., kd=..., ...)``. For a
+    row whose values do not all live on one object; it makes no object to read them from
+    (a row a shape, in compile_scene's loop). Written once per record from its fields."""
+    build = _BUILDERS.get(record)
+    if build is None:
+        names, values = [], []
+        for name, components, _ in RECORDS[record][1]:
+            names.append(name)
+            values += ["%s.%s" % (name, c) for c in "xyz"] if components == 3 else [name]
+        source = "def %s_row(*, %s):\n    return (%s,)\n" % (record, ", ".join(names), ", ".join(values))
+        scope = {}
+        exec(source, scope)
+        build = _BUILDERS[record] = scope[record + "_row"]
+    return build
+
+
 def pack_table(record: str, values: list, dtype) -> np.ndarray:
     """The (len(values), width) table of ``record`` whose rows hold ``values`` (row_values
     of each object), zero in the columns no field takes. A value beyond ``dtype`` becomes
@@ -347,6 +369,10 @@ def pack_table(record: str, values: list, dtype) -> np.ndarray:
         with np.errstate(over="ignore"):
             table[:, columns] = np.array(values, dtype=np.float64)
     return table
+
+
+# The row field of an object without a sampler of its own (read, never changed).
+NO_SAMPLER = Float3(0.0)
 
 
 class _OwnSamplers:
@@ -362,7 +388,7 @@ class _OwnSamplers:
         """The row field of an object with ``sampler``: (its first sample, num_samples,
         num_sets); (0, 0, 0) for None, which draws from the random stream."""
         if sampler is None or not self.drawn:
-            return Float3(0.0)
+            return NO_SAMPLER
         if id(sampler) not in self.first:
             self.first[id(sampler)] = len(self.samples)
             self.samples.extend(sampler.samples)
@@ -473,6 +499,7 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
     # the shapes' indices.
     material_of_shape = []
     features = {CAMERA_KINDS[camera_kind]}
+    material_values = row_builder("Material")
 
     def material_row(where: str, m, color) -> int:
         """The place in unique_rows of material ``m`` on a surface of colour ``color``: laid
@@ -514,12 +541,13 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         limit = m.flat_limit(scene.tracer)
         if limit is not None:
             raise ValueError("%s.material (%r): %s" % (where, m, limit))
-        unique_rows.append(row_values("Material", SimpleNamespace(
+        drawn = own.drawn   # a sampler is laid out only where the tracer draws from it
+        unique_rows.append(material_values(
             color=m.cd if isinstance(m.cd, Float3) else color, kd=m.kd, specular=m.specular,
             shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
             absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt,
-            diffuse_sampler=own.place(_sampler_of(m, "diffuse_brdf")),
-            specular_sampler=own.place(_sampler_of(m, "specular_brdf")))))
+            diffuse_sampler=own.place(_sampler_of(m, "diffuse_brdf")) if drawn else NO_SAMPLER,
+            specular_sampler=own.place(_sampler_of(m, "specular_brdf")) if drawn else NO_SAMPLER))
         unique_shaders.append(m.shader)
         material_rows[key] = len(unique_rows) - 1
         features.add(SHADER_BY_ID[m.shader].name)

@@ -101,6 +101,12 @@ def test_pack_table_puts_each_value_in_its_fields_columns_and_zero_elsewhere(rec
     assert table.shape == (2, width) and table.dtype == np.float32
     assert table.tolist() == [expected.tolist()] * 2
     assert layout.pack_table(record, [], np.float64).shape == (0, width)
+    # A row built from the fields by name is the row read from an object holding them.
+    built = layout.row_builder(record)(**values)
+    assert built == layout.row_values(record, objects[0])
+    assert layout.pack_table(record, [built], np.float32).tolist() == [expected.tolist()]
+    with pytest.raises(TypeError):   # every field is named, none left to a default
+        layout.row_builder(record)(**dict(list(values.items())[1:]))
 
 
 def test_pack_table_refuses_a_vector_where_its_record_holds_a_number():
