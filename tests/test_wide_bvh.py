@@ -394,18 +394,21 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
     """with_blocks: every face of the wide tree is in one leaf or one block, as before; a
     block's header names consecutive faces; in float32 its rows are their corners, copied,
     in float64 it is the header alone; the roots stay nodes; the table is the nodes then the
-    blocks, in about the bytes it had in float32 and fewer in float64."""
+    blocks, no larger than the nodes it had and 40 bytes a face in a block in float32, and
+    smaller in float64. In float32 a leaf column of LEAF_BLOCK_MIN or more faces is a block
+    too, in float64 it stays a leaf."""
     vertices, faces = traversal_mesh("soup")
     _, wide, rows = tree_of(vertices, faces)
     corners = vertices.astype(dtype)
     blocked = wide_bvh.with_blocks(wide, corners, rows)
     assert blocked.nodes.dtype == np.float32
+    in_blocks = sum(((~c) & 7) + 1 for c in block_codes(blocked))
     if dtype == np.float32:
-        assert blocked.nodes.nbytes < 1.1 * wide.nodes.nbytes
+        assert blocked.nodes.nbytes <= wide.nodes.nbytes + 40 * in_blocks
     else:
         assert blocked.nodes.nbytes < 0.8 * wide.nodes.nbytes
     flat = blocked.nodes.reshape(-1)
-    seen, ends = [], []
+    seen, ends, leaves = [], [], []
     for code in block_codes(blocked):
         at, first, count = block_span(flat, code)
         if dtype == np.float32:
@@ -429,9 +432,15 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
                 leaf = ~code
                 first, count = leaf >> wide_bvh.LEAF_BITS, (leaf & 7) + 1
                 seen += range(first, first + count)
+                leaves.append(count)
     assert sorted(seen) == list(range(len(rows)))
     assert len(block_codes(blocked)) > 0
     assert blocked.roots == (0,)
+    # the leaves left are the small ones in float32; in float64 the larger stay leaves too
+    if dtype == np.float32:
+        assert max(leaves) < wide_bvh.LEAF_BLOCK_MIN
+    else:
+        assert max(leaves) >= wide_bvh.LEAF_BLOCK_MIN
 
 
 def test_the_float64_blocks_refuse_faces_they_cannot_read_as_rows():
@@ -549,9 +558,12 @@ def test_a_scene_traverses_blocks_in_both_precisions_with_corners_in_float32_onl
     trees = {p: render_kernels.numba_tree(compile_scene(scene, p).mesh) for p in ("float32", "float64")}
     for tree in trees.values():
         assert len(block_codes(tree)) > 0
-    faces = sum(((~c) & 7) + 1 for c in block_codes(trees["float64"]))
-    # the same blocks; float32's hold 36 bytes of corners a face
-    assert len(block_codes(trees["float32"])) == len(block_codes(trees["float64"]))
+    blocks = {p: [block_span(tree.nodes.reshape(-1), c)[1:] for c in block_codes(tree)] for p, tree in trees.items()}
+    # float64's blocks are float32's too (the nodes of single triangles); float32 has the leaf
+    # columns of three or more as well, and holds 36 bytes of corners a face
+    assert set(blocks["float64"]) < set(blocks["float32"])
+    assert min(count for _, count in set(blocks["float32"]) - set(blocks["float64"])) >= wide_bvh.LEAF_BLOCK_MIN
+    faces = sum(count for _, count in blocks["float32"])
     assert trees["float32"].nodes.nbytes - trees["float64"].nodes.nbytes >= 36 * faces - wide_bvh.ROWS * wide_bvh.WIDTH * 4
 
 

@@ -12,7 +12,8 @@ column per child:
     row 6     int32 bits: the child's code, what the traversal pushes: an inner child's node
               (>= 0), or a leaf child's ~(first << LEAF_BITS | count - 1) (< 0), its first
               primitive and its count (leaf_code), or in a render's tree a block's code
-              (with_blocks: a node of single triangles made one vector test)
+              (with_blocks: a node of single triangles, or a float32 leaf of three or
+              more, made one vector test)
 
 A column no child fills has the empty box (lo = +inf, hi = -inf), which no ray enters. The
 boxes are the binary tree's own or its primitives' (FlatBVH.boxes), rounded outward to
@@ -53,6 +54,10 @@ CORNER_ROWS = 9
 # A node's rows: six of box planes and the children's codes (CODE_ROW).
 ROWS = 7
 CODE_ROW = 6
+# A float32 tree's leaf columns of this many triangles or more are blocks too (with_blocks):
+# with those of two, the 1.31 M icosphere's table would pass 64 bytes a triangle
+# (docs/bvh.md, "Leaf columns made blocks").
+LEAF_BLOCK_MIN = 3
 
 
 def leaf_code(first: int, count: int) -> int:
@@ -180,7 +185,13 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     ~(1 << BLOCK_BIT | where << LEAF_BITS | count - 1): the test needs nothing from the block
     before its corners. A root stays a node; a node whose columns hold a sphere or an
     instance, or whose faces are not consecutive rows, stays a node. The nodes left are
-    numbered again in their order. A table past MAX_FIRST floats gets no blocks."""
+    numbered again in their order.
+
+    In float32, a leaf column of a node kept that holds LEAF_BLOCK_MIN or more triangles (a
+    leaf's rows are consecutive) becomes a block as well, after the nodes' blocks: its column
+    keeps the leaf's box and takes the block's code. (In float64, whose blocks gather their
+    corners, the packets measured slower with them.) A table past MAX_FIRST floats gets no
+    blocks."""
     nodes = wide.nodes
     links = nodes.view(np.int32)
     n = len(nodes)
@@ -198,12 +209,19 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     # no sphere or instance row among first .. last: the count of such rows up to each
     others = np.concatenate([[0], np.cumsum(faces[:, 0] < 0)])
     pure[pure] = others[hi[pure] + 1] == others[lo[pure]]
-    if not pure.any():
-        return wide
     kept = ~pure
-    number = np.cumsum(kept) - 1                 # a kept node's new number
-    firsts, counts = lo[pure], count[pure]
     corners = vertices.dtype == np.float32
+    # In float32, the leaf columns of LEAF_BLOCK_MIN or more triangles in the nodes kept.
+    leaf = (codes < 0) & ~empty & kept[:, None] & corners
+    leaf_count = np.where(leaf, (~codes & (2 ** LEAF_BITS - 1)) + 1, 0)
+    leaf_first = np.where(leaf, ~codes >> LEAF_BITS, 0).astype(np.int64)
+    leaf &= leaf_count >= LEAF_BLOCK_MIN
+    leaf[leaf] = others[leaf_first[leaf] + leaf_count[leaf]] == others[leaf_first[leaf]]
+    if not pure.any() and not leaf.any():
+        return wide
+    number = np.cumsum(kept) - 1                 # a kept node's new number
+    firsts = np.concatenate([lo[pure], leaf_first[leaf]])
+    counts = np.concatenate([count[pure], leaf_count[leaf]])
     if not corners and (faces.shape[1] != FACE_COLUMNS or not faces.flags.c_contiguous or faces.dtype != np.int32):
         raise ValueError("with_blocks: the faces of a float64 tree's blocks are read as C-ordered int32 rows of "
                          "%d, not %s %s" % (FACE_COLUMNS, faces.dtype, faces.shape))
@@ -218,12 +236,14 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     table[:] = nodes[kept]
     new_codes = table.view(np.int32)[:, CODE_ROW, :]
     inner = new_codes >= 0
+    codes_of = ~((1 << BLOCK_BIT) | where << LEAF_BITS | (counts - 1))
     block_code = np.full(n, 0, dtype=np.int64)
-    block_code[pure] = ~((1 << BLOCK_BIT) | where << LEAF_BITS | (counts - 1))
+    block_code[pure] = codes_of[:int(pure.sum())]
     to_block = inner & pure[np.where(inner, new_codes, 0)]
     new_codes[to_block] = block_code[new_codes[to_block]]
     renumber = inner & ~to_block
     new_codes[renumber] = number[new_codes[renumber]]
+    new_codes[leaf[kept]] = codes_of[int(pure.sum()):]
     flat = out.view(np.int32)
     flat[where] = firsts
     if corners:
