@@ -395,11 +395,14 @@ class _OwnSamplers:
             self.shuffled.extend(sampler.shuffled_indices)
         return Float3(float(self.first[id(sampler)]), float(sampler.num_samples), float(sampler.num_sets))
 
+    def place_brdf(self, material, part: str) -> Float3:
+        """place() of the sampler of the material's BRDF ``part`` (PathTrace draws its
+        directions), looked up only where the tracer draws."""
+        if not self.drawn:
+            return NO_SAMPLER
+        return self.place(getattr(getattr(material, part, None), "sampler", None))
 
-def _sampler_of(material, part: str):
-    """The sampler of the material's BRDF ``part`` (PathTrace draws its directions), or None."""
-    brdf = getattr(material, part, None)
-    return getattr(brdf, "sampler", None)
+
 
 
 def compile_tracer(scene) -> tuple:
@@ -541,13 +544,12 @@ def compile_scene(scene, precision: str = "float64") -> FlatScene:
         limit = m.flat_limit(scene.tracer)
         if limit is not None:
             raise ValueError("%s.material (%r): %s" % (where, m, limit))
-        drawn = own.drawn   # a sampler is laid out only where the tracer draws from it
         unique_rows.append(material_values(
             color=m.cd if isinstance(m.cd, Float3) else color, kd=m.kd, specular=m.specular,
             shininess=m.shininess, emission=m.emission, ior=m.ior, texture=texture, texture_row=texture_row,
             absorption=m.absorption, ambient=ambient * m.ka, reflection=m.reflection, kt=m.kt,
-            diffuse_sampler=own.place(_sampler_of(m, "diffuse_brdf")) if drawn else NO_SAMPLER,
-            specular_sampler=own.place(_sampler_of(m, "specular_brdf")) if drawn else NO_SAMPLER))
+            diffuse_sampler=own.place_brdf(m, "diffuse_brdf"),
+            specular_sampler=own.place_brdf(m, "specular_brdf")))
         unique_shaders.append(m.shader)
         material_rows[key] = len(unique_rows) - 1
         features.add(SHADER_BY_ID[m.shader].name)

@@ -237,13 +237,14 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     new_codes = table.view(np.int32)[:, CODE_ROW, :]
     inner = new_codes >= 0
     codes_of = ~((1 << BLOCK_BIT) | where << LEAF_BITS | (counts - 1))
+    n_pure = int(pure.sum())                     # the nodes' blocks come first, then the leaves'
     block_code = np.full(n, 0, dtype=np.int64)
-    block_code[pure] = codes_of[:int(pure.sum())]
+    block_code[pure] = codes_of[:n_pure]
     to_block = inner & pure[np.where(inner, new_codes, 0)]
     new_codes[to_block] = block_code[new_codes[to_block]]
     renumber = inner & ~to_block
     new_codes[renumber] = number[new_codes[renumber]]
-    new_codes[leaf[kept]] = codes_of[int(pure.sum()):]
+    new_codes[leaf[kept]] = codes_of[n_pure:]
     flat = out.view(np.int32)
     flat[where] = firsts
     if corners:
