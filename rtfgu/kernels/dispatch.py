@@ -41,6 +41,7 @@ from .. import layout
 from ..registry import INSTANCED, LIGHTS, SHADERS, SHAPE_IDS, SHAPES, TEXTURES
 from .inline_cleanup import skip_dead_code_after_inlining
 from .inline_copy import copy_inlined_scope_once
+from .inline_frontend import untyped_ir_once
 from .inline_typing import cache_inline_typing, compile_inline_bodies_once
 from .liveness import use_bitset_liveness
 from .llvm_passes import optimize_kernels_once
@@ -878,6 +879,7 @@ use_versioned_cache()
 cache_inline_typing()
 compile_inline_bodies_once()
 copy_inlined_scope_once()
+untyped_ir_once()
 skip_dead_code_after_inlining()
 use_bitset_liveness()
 optimize_kernels_once()
