@@ -73,7 +73,8 @@ def test_numbas_inliner_copies_a_body_with_one_scope_a_copy(monkeypatch):
     def spy(x, memo=None):
         out = own(x, memo)
         if isinstance(x, ir.Block) and memo is None:
-            seen.append((id(shim._sessions[-1]) if shim._sessions else None, id(x.scope), id(out.scope)))
+            # The session itself, kept alive here, so that no later session takes its id.
+            seen.append((shim._sessions[-1] if shim._sessions else None, id(x.scope), id(out.scope)))
         return out
     monkeypatch.setattr(shim, "deepcopy", spy)
 
@@ -102,5 +103,40 @@ def test_numbas_inliner_copies_a_body_with_one_scope_a_copy(monkeypatch):
     # Every copy of a block whose source scope is the same, in one inlining, has one scope.
     by_source = {}
     for session, source, made in blocks_copied:
-        by_source.setdefault((session, source), set()).add(made)
+        by_source.setdefault((id(session), source), set()).add(made)
     assert all(len(made) == 1 for made in by_source.values())
+
+
+def test_a_copy_made_in_the_session_is_handed_back_and_outside_one_copied():
+    blocks = trace_blocks()
+    shim = inline_copy.ScopeOnceCopy(ir.Block)
+    block = next(iter(blocks.values()))
+    with shim.session():
+        first = shim.deepcopy(block)
+        assert first is not block
+        assert shim.deepcopy(first) is first       # inline_ir's second copy, of its first
+        assert shim.deepcopy(block) is not first   # the function's own block: copied again
+    again = shim.deepcopy(first)                   # outside a session: numba's copy
+    assert again is not first and again == first
+
+
+def test_numbas_callers_of_the_inliner_discard_the_copy_it_returns():
+    """The second copy is not made because nothing reads it: every call of inline_ir and
+    inline_function in numba's package binds the copy to ``_``, or is inline_function's
+    return of inline_ir."""
+    import pathlib
+    import re
+
+    import numba
+
+    calls = []
+    for path in pathlib.Path(numba.__file__).parent.rglob("*.py"):
+        text = path.read_text(errors="replace")
+        for match in re.finditer(r"[^\n]*\n?[^\n]*\.inline_(?:ir|function)\(", text):
+            if re.search(r"def inline_(?:ir|function)\(", match.group(0)):
+                continue
+            calls.append((path.name, " ".join(match.group(0).split())))
+    assert len(calls) >= 3, calls
+    for name, line in calls:
+        assert (re.search(r"_, _, _, new_blocks = \\? ?inline_worker\.inline_(?:ir|function)\(", line)
+                or line.endswith("return self.inline_ir(")), (name, line)

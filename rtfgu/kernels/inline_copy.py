@@ -18,6 +18,13 @@ does, and the renames the inliner makes in it (``scope.redefine``) are seen by e
 Measured on render kernels (float32, an empty cache, one process each): compile and first
 render of ``default_lambertian_shadows`` 13.4 s against 15.2 s, ``suffern_29_uv_mesh``
 63.4 s against 71.8 s; the images equal bit for bit (docs/compile_time.md).
+
+The second of the inliner's two copies is a copy of the first, made before the first is
+changed, and ``inline_ir`` only returns it: its two callers in numba (``InlineInlinables``
+through ``inline_function``, and ``InlineOverloads``) discard it
+(``_, _, _, new_blocks = ...``; tests/test_inline_copy.py reads them). Within a session, a
+block that is itself one of the session's copies is handed back as it is, so that copy costs
+nothing; the body inlined is the first copy, as in numba.
 """
 from __future__ import annotations
 
@@ -30,7 +37,7 @@ _INSTALLED = "_rtfgu_scope_once"
 class ScopeOnceCopy:
     """What numba's inliner finds as its module ``copy``: ``copy``'s functions, with
     ``deepcopy`` of a block, within ``session()``, sharing the copy of its scope that the
-    session's first block of that scope made."""
+    session's first block of that scope made; a block the session made is not copied again."""
 
     def __init__(self, ir_block):
         self._block = ir_block
@@ -43,7 +50,7 @@ class ScopeOnceCopy:
     def session(self):
         """A context in which the blocks copied share their scope's copy: one inlining's
         (an inlining within it, while its body is typed, has a session of its own)."""
-        self._sessions.append({})
+        self._sessions.append(({}, set()))
         try:
             yield
         finally:
@@ -52,7 +59,9 @@ class ScopeOnceCopy:
     def deepcopy(self, x, memo=None):
         if memo is not None or not self._sessions or not isinstance(x, self._block):
             return _copy.deepcopy(x, memo)
-        seeds = self._sessions[-1]
+        seeds, made = self._sessions[-1]
+        if id(x) in made:       # the copy inline_ir returns and its callers discard
+            return x
         seed = seeds.get(id(x.scope))
         if seed is None:
             memo = {}
@@ -63,8 +72,10 @@ class ScopeOnceCopy:
             variables = getattr(getattr(x.scope, "localvars", None), "_con", {})
             seed.update((id(v), memo[id(v)]) for v in variables.values() if id(v) in memo)
             seeds[id(x.scope)] = seed
-            return out
-        return _copy.deepcopy(x, dict(seed))
+        else:
+            out = _copy.deepcopy(x, dict(seed))
+        made.add(id(out))       # alive while the session lasts: its id names it alone
+        return out
 
 
 def copy_inlined_scope_once() -> bool:
