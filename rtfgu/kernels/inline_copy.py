@@ -50,7 +50,7 @@ class ScopeOnceCopy:
     def session(self):
         """A context in which the blocks copied share their scope's copy: one inlining's
         (an inlining within it, while its body is typed, has a session of its own)."""
-        self._sessions.append(({}, set()))
+        self._sessions.append(({}, {}))
         try:
             yield
         finally:
@@ -74,7 +74,7 @@ class ScopeOnceCopy:
             seeds[id(x.scope)] = seed
         else:
             out = _copy.deepcopy(x, dict(seed))
-        made.add(id(out))       # alive while the session lasts: its id names it alone
+        made[id(out)] = out     # kept alive while the session lasts: its id names it alone
         return out
 
 
