@@ -42,14 +42,12 @@ def _keep_the_code(func_ir, typemap=None, alias_map=None, arg_aliases=None):
 def skip_dead_code_after_inlining() -> bool:
     """Install the wrapper on numba's InlineOverloads pass; True when installed (or already
     installed), False where numba's pass does not have the expected shape."""
-    try:
+    try:   # numba, with the pass and the elimination it calls by this module's name
         from numba.core import typed_passes
+        from numba.core.typed_passes import InlineOverloads, dead_code_elimination  # noqa: F401
     except ImportError:
         return False
-    cls = getattr(typed_passes, "InlineOverloads", None)
-    if cls is None or not hasattr(typed_passes, "dead_code_elimination"):
-        return False
-    run_pass = cls.run_pass
+    run_pass = InlineOverloads.run_pass
     if getattr(run_pass, "_rtfgu_keeps_dead_code", False):
         return True
 
@@ -60,5 +58,5 @@ def skip_dead_code_after_inlining() -> bool:
     run_pass_keeping_dead_code._rtfgu_keeps_dead_code = True
     run_pass_keeping_dead_code.numba_run_pass = run_pass   # numba's own, for the tests
     run_pass_keeping_dead_code.__doc__ = run_pass.__doc__
-    cls.run_pass = run_pass_keeping_dead_code
+    InlineOverloads.run_pass = run_pass_keeping_dead_code
     return True
