@@ -306,6 +306,15 @@ def _vec(v) -> list:
     return [v.x, v.y, v.z]
 
 
+def attribute_paths(fields) -> list:
+    """operator.attrgetter's paths of a record's fields ((name, components, ...) each): a
+    Float3 field as its x, y and z."""
+    paths = []
+    for name, components, *_ in fields:
+        paths += [name + ".x", name + ".y", name + ".z"] if components == 3 else [name]
+    return paths
+
+
 # record -> what _packer makes of it, made on first use.
 _PACKERS = {}
 
@@ -316,14 +325,9 @@ def _packer(record: str) -> tuple:
     packer = _PACKERS.get(record)
     if packer is None:
         size, fields = RECORDS[record]
-        paths, columns = [], []
-        for name, components, column in fields:
-            if components == 3:
-                paths += [name + ".x", name + ".y", name + ".z"]
-                columns += [column, column + 1, column + 2]
-            else:
-                paths.append(name)
-                columns.append(column)
+        paths, columns = attribute_paths(fields), []
+        for _, components, column in fields:
+            columns += [column, column + 1, column + 2] if components == 3 else [column]
         getter = operator.attrgetter(*paths)
         if len(paths) == 1:   # attrgetter of one name gives the value, not a tuple
             getter = lambda obj, one=getter: (one(obj),)   # noqa: E731

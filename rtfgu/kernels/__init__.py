@@ -16,7 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import dispatch  # noqa: F401  (first: it points numba's cache at this kernel version)
-from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_sampler, compile_scene
+from ..layout import CAMERA_WIDTH, PINHOLE, PINHOLE_EYE, compile_sampler
+from ..layout_cache import kept_layout
 from ..registry import LIGHTS, SHADER_BY_ID, SHAPES
 from ..options import DEFAULT_FORMULAS, check_finite_image, pixel_sampler
 from ..tracers.whitted import MAX_DEPTH
@@ -157,7 +158,7 @@ class NumbaAccumulator:
     def __init__(self, scene, width: int, height: int, precision: str = "float64",
                  formula: str | None = None, sampler=None, seed: int = 0):
         sphere_formula_id(formula)  # a bad formula is refused before the scene is compiled
-        self.flat = compile_scene(scene, precision)
+        self.flat = kept_layout(scene, precision)   # compile_scene's, kept while the scene is unchanged
         self.sampler = compile_sampler(sampler, precision)
         self.size = (width, height)
         self.formula = formula
