@@ -8,7 +8,8 @@ below) and, where they all equal those of the scene's last layout in that precis
 that layout; else it compiles the scene and keeps the new layout.
 
 A value changed in place (``light.position.y += 1``, ``sphere.material.diffuse_brdf.kd =
-0.2``) changes the fingerprint, which holds values, never the objects holding them. Only
+0.2``) changes the fingerprint, which holds values, never the objects holding them (compared
+as Python compares numbers: a zero whose sign alone changed keeps the layout). Only
 scenes whose every input to the layout the fingerprint reads take this path: shapes of the
 row kinds (no meshes, compounds or instances: a mesh's BVH is kept by rtfgu.layout's own
 cache, keyed by its arrays), materials without textures, point and directional lights, the
@@ -55,7 +56,7 @@ def _shape_row(shape):
 
 
 # precision -> (weak reference to the scene, its fingerprint, its layout): the last scene
-# laid out in each precision.
+# laid out in each precision (a layout of a few rows, kept until the next scene's).
 _KEPT = {}
 
 
