@@ -64,10 +64,11 @@ def fingerprint(scene):
     """Every value ``compile_scene`` makes this scene's layout of, as a tuple of numbers,
     types and Nones (equal tuples: the same layout); None for a scene outside this path
     (module docstring). ``scene`` has been validated."""
-    if scene.environment is not None or compile_tracer(scene)[0] is not None:
+    camera_kind, camera = compile_camera(scene.camera)   # in compile_scene's order: its errors first
+    tracer = compile_tracer(scene)
+    if scene.environment is not None or tracer[0] is not None:
         return None
-    camera_kind, camera = compile_camera(scene.camera)
-    values = [camera_kind, camera.tobytes(), compile_tracer(scene), bool(scene.show_ray_direction),
+    values = [camera_kind, camera.tobytes(), tracer, bool(scene.show_ray_direction),
               _COLOR(scene.background), _COLOR(scene.ambient_light.L(None)),
               bool(getattr(scene.tracer, "samples_lights_at", lambda depth: True)(1))]
     for light in scene.lights:
@@ -76,7 +77,6 @@ def fingerprint(scene):
             return None
         values += [kind.name, row_values(kind.record, light), light.casts_shadows(), light.flat_limit()]
     first = {}   # id(material) -> the shape that has it first: a shared material is one row
-    tracer = scene.tracer
     for i, shape in enumerate(scene.shapes):
         row = _shape_row(shape)
         if not row:
@@ -94,7 +94,7 @@ def fingerprint(scene):
         except AttributeError:   # a field compile_scene computes that this file does not know
             return None
         values += [row[0], row_values(row[1], shape), type(m), first.setdefault(id(m), i), color, material,
-                   m.flat_limit(tracer)]
+                   m.flat_limit(scene.tracer)]
     return tuple(values)
 
 
