@@ -88,9 +88,10 @@ def main(argv=None) -> None:
         warm = displaced_icosphere(1)
         rtfgu.render(mesh_scene(rtfgu.Mesh(warm.vertices, warm.faces, (0.8, 0.8, 0.8), material=rtfgu.Matte()),
                                 args.triangles), 16, 16, backend="numba", precision=args.precision)
-        # The build's parallel part splits only nodes of more than TASK_MIN primitives: the
-        # small mesh built once more with TASK_MIN lowered, so that "compiled before" holds
-        # for its functions too (numba compiles them, or loads them from its cache, once).
+        # The build's parallel part splits only nodes of more than its task size (at most
+        # TASK_MIN primitives): the small mesh built once more with TASK_MIN lowered, so that
+        # "compiled before" holds for its functions too (numba compiles them, or loads them
+        # from its cache, once).
         task_min, flat_bvh.TASK_MIN = flat_bvh.TASK_MIN, 16
         try:
             corners = warm.vertices[warm.faces]

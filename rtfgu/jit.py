@@ -2,18 +2,22 @@
 a mesh's per-face checks and bounds), or, where numba is not installed, the function itself
 and ``range``: the same loop in plain Python, the same results, slower. ``chunks_of_one()``
 hands a ``prange``'s iterations to the threads one at a time (numba.parallel_chunksize(1)),
-for loops whose iterations differ in cost; without numba it does nothing."""
+for loops whose iterations differ in cost; without numba it does nothing. ``threads()``:
+how many threads a ``prange`` runs on (numba.get_num_threads()), 1 without numba."""
 from __future__ import annotations
 
 import contextlib
 
 try:
-    from numba import njit, parallel_chunksize, prange
+    from numba import get_num_threads as threads, njit, parallel_chunksize, prange
 
     def chunks_of_one():
         return parallel_chunksize(1)
 except ImportError:
     prange = range
+
+    def threads():
+        return 1
 
     def njit(*args, **kwargs):
         return args[0] if args and callable(args[0]) else (lambda f: f)
@@ -21,4 +25,4 @@ except ImportError:
     def chunks_of_one():
         return contextlib.nullcontext()
 
-__all__ = ["chunks_of_one", "njit", "prange"]
+__all__ = ["chunks_of_one", "njit", "prange", "threads"]

@@ -202,6 +202,29 @@ def test_the_parallel_build_is_the_serial_tree_node_for_node(monkeypatch, task_m
         assert (parallel.boxes[:, :3] <= lo[parallel.order]).all() and (parallel.boxes[:, 3:] >= hi[parallel.order]).all()
 
 
+def test_a_builds_task_size_is_a_threads_share_within_its_bounds(monkeypatch):
+    """task_size: one task up to TASK_FLOOR primitives, a thread's share above it, at most
+    TASK_MIN, and TASK_MIN on one thread (or without numba)."""
+    floor, most = flat_bvh.TASK_FLOOR, flat_bvh.TASK_MIN
+    for count, n, want in [(2, 3674, floor), (2, floor, floor), (2, 4 * floor, 2 * floor), (4, 4 * floor, floor),
+                           (2, 100 * most, most), (8, 20 * floor, 5 * floor // 2), (1, 5 * floor, most)]:
+        monkeypatch.setattr(flat_bvh, "threads", lambda: count)
+        assert flat_bvh.task_size(n) == want, (count, n)
+
+
+def test_a_mesh_of_a_few_tasks_builds_the_one_task_tree(monkeypatch):
+    """A mesh past TASK_FLOOR (20480 faces: two tasks or more on two threads) against the
+    tree one task builds over all of it: the same table, number for number."""
+    mesh = icosphere(5)
+    lo, hi = flat_bvh.triangle_bounds(mesh.vertices, mesh.faces)
+    assert flat_bvh.task_size(len(lo)) < len(lo) or flat_bvh.threads() < 2
+    split = flat_bvh.build(lo, hi)
+    monkeypatch.setattr(flat_bvh, "task_size", lambda n_prims: n_prims)
+    whole = flat_bvh.build(lo, hi)
+    assert np.array_equal(split.nodes.view(np.int32), whole.nodes.view(np.int32))
+    assert np.array_equal(split.order, whole.order) and np.array_equal(split.boxes, whole.boxes)
+
+
 def test_a_node_of_few_primitives_picks_the_plane_its_bins_pick():
     """_best_plane_few (a node of at most FEW primitives, sorted by bin) against the bins
     (_bin and _best_plane) on random nodes: spread, clustered (empty bins between runs),

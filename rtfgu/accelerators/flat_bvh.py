@@ -2,7 +2,7 @@
 arrays, into a flat node table that both paths traverse.
 
 The build is the lecture BVH's (BINS bins, LEAF_SIZE, C_INTERSECT) over the primitives'
-boxes as arrays, with numba on all cores when it is installed (TASK_MIN says how; the
+boxes as arrays, with numba on all cores when it is installed (task_size says how; the
 1.3-million-triangle mesh of `make bench` builds in about 1 s on 2 cores, docs/bvh.md) and as
 plain Python otherwise, the same table either way. It has one
 constant of its own: a step down the tree costs C_TRAVERSE = 2 shape tests, where the
@@ -31,7 +31,7 @@ import numpy as np
 
 from .bvh import BINS, C_INTERSECT, LEAF_SIZE
 
-from ..jit import chunks_of_one, njit, prange
+from ..jit import chunks_of_one, njit, prange, threads
 
 NODE_WIDTH = 8
 # Deepest stack a traversal needs: the build splits until LEAF_SIZE, and a tree of 2^31
@@ -400,16 +400,29 @@ def _subtree(refs, order, table, links, root, first, count, depth, root_bounds, 
     return n_nodes
 
 
-# The parallel build (_build): a node of more than TASK_MIN primitives is split with its
+# The parallel build (_build): a node of more than task_size(P) primitives is split with its
 # bounds and bins made by all cores (PARTS parts of its primitives each, merged: min, max and
-# counts are exact in any order), and each node of at most TASK_MIN below them is a subtree
-# that one core builds (_subtree), the biggest first, handed out one at a time. A node's
-# split depends only on its primitives and their order, so the tree is the one _subtree
-# builds over all primitives at once, and the nodes are numbered again as that build numbers
-# them: the table is the same, node for node, whatever TASK_MIN and the number of cores
-# (tests/test_mesh_paths.py builds it both ways).
+# counts are exact in any order), and each node of at most task_size(P) below them is a
+# subtree that one core builds (_subtree), the biggest first, handed out one at a time. A
+# node's split depends only on its primitives and their order, so the tree is the one
+# _subtree builds over all primitives at once, and the nodes are numbered again as that build
+# numbers them: the table is the same, node for node, whatever the task size and the number
+# of cores (tests/test_mesh_paths.py builds it both ways).
 TASK_MIN = 1 << 17
+TASK_FLOOR = 1 << 14
 PARTS = 16
+
+
+def task_size(n_prims: int) -> int:
+    """The most primitives a subtree task of a build over ``n_prims`` holds: a thread's share,
+    within [TASK_FLOOR, TASK_MIN] (the splits are uneven, so a thread gets one to a few tasks). A mesh of at most TASK_FLOOR primitives is one
+    task (splitting its top on all cores costs more than it saves); one of a few tens of
+    thousands is split a few times so that both cores build (docs/bvh.md, "A mesh's size and
+    the build's tasks"). On one thread (or without numba) it is TASK_MIN."""
+    count = threads()
+    if count < 2:
+        return TASK_MIN
+    return min(TASK_MIN, max(TASK_FLOOR, n_prims // count))
 
 
 @njit(cache=True, parallel=True)
@@ -480,18 +493,19 @@ def _place_blocks(links_in, blocks, links):
 
 def _build(refs, order):
     """The node table (N, 8) float32 of the tree over all primitives, root node 0, as the
-    parallel build makes it (TASK_MIN), or None where it would be deeper than MAX_DEPTH."""
+    parallel build makes it (task_size), or None where it would be deeper than MAX_DEPTH."""
     n_prims = len(order)
+    task_min = task_size(n_prims)
     root_bounds = np.empty(12)
     # The top of the tree, each node split by all cores; its nodes numbered as they come.
-    # (A tree of at most TASK_MIN primitives is one task, its root.)
+    # (A tree of at most task_min primitives is one task, its root.)
     _node_bounds_parallel(refs, 0, n_prims, root_bounds)
     top, tasks = [], []
     stack = [(0, 0, n_prims, 1, root_bounds)]
     n_top = 1
     while stack:
         node, first, count, depth, bounds = stack.pop()
-        if count <= TASK_MIN:
+        if count <= task_min:
             tasks.append((node, first, count, depth, bounds))
             continue
         if depth > MAX_DEPTH:
