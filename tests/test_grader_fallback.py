@@ -322,6 +322,7 @@ def test_a_submission_graded_at_the_same_time_cannot_be_read_or_run(mode, tmp_pa
             """ % {"sphere": str(Path(work) / "work" / "package" / "rtfgu" / SPHERE),
                    "pattern": str(Path(tempfile.gettempdir()) / "rtfgu-grade-*" / "work" / "package" / "rtfgu" / SPHERE)}
         result = _graded(mode, _submission(tmp_path / "sub", attack), tmp_path / "out")
+        assert helper.poll() is None, "the peer's grading ended before the attack's: nothing was tested"
         assert _scores(result) == want
     finally:
         out, _ = helper.communicate(timeout=60)
