@@ -204,10 +204,11 @@ def test_the_parallel_build_is_the_serial_tree_node_for_node(monkeypatch, task_m
 
 def test_a_builds_task_size_is_a_threads_share_within_its_bounds(monkeypatch):
     """task_size: one task up to TASK_FLOOR primitives, a thread's share above it, at most
-    TASK_MIN, and TASK_MIN on one thread (or without numba)."""
+    TASK_MIN, and on one thread (or without numba) one task up to TASK_MIN."""
     floor, most = flat_bvh.TASK_FLOOR, flat_bvh.TASK_MIN
     for count, n, want in [(2, 3674, floor), (2, floor, floor), (2, 4 * floor, 2 * floor), (4, 4 * floor, floor),
-                           (2, 100 * most, most), (8, 20 * floor, 5 * floor // 2), (1, 5 * floor, most)]:
+                           (2, 100 * most, most), (8, 20 * floor, 5 * floor // 2), (1, 5 * floor, 5 * floor),
+                           (1, most, most), (1, 3 * most, most)]:
         monkeypatch.setattr(flat_bvh, "threads", lambda: count)
         assert flat_bvh.task_size(n) == want, (count, n)
 

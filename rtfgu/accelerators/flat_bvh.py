@@ -415,14 +415,12 @@ PARTS = 16
 
 def task_size(n_prims: int) -> int:
     """The most primitives a subtree task of a build over ``n_prims`` holds: a thread's share,
-    within [TASK_FLOOR, TASK_MIN] (the splits are uneven, so a thread gets one to a few tasks). A mesh of at most TASK_FLOOR primitives is one
-    task (splitting its top on all cores costs more than it saves); one of a few tens of
-    thousands is split a few times so that both cores build (docs/bvh.md, "A mesh's size and
-    the build's tasks"). On one thread (or without numba) it is TASK_MIN."""
-    count = threads()
-    if count < 2:
-        return TASK_MIN
-    return min(TASK_MIN, max(TASK_FLOOR, n_prims // count))
+    within [TASK_FLOOR, TASK_MIN] (the splits are uneven, so a thread gets one to a few
+    tasks). A mesh of at most TASK_FLOOR primitives is one task (splitting its top on all
+    cores costs more than it saves); one of a few tens of thousands is split a few times so
+    that both cores build (docs/bvh.md, "A mesh's size and the build's tasks"). On one thread
+    (or without numba) a mesh of at most TASK_MIN is one task, as before."""
+    return min(TASK_MIN, max(TASK_FLOOR, n_prims // threads()))
 
 
 @njit(cache=True, parallel=True)
