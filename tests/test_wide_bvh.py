@@ -443,6 +443,67 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
         assert max(leaves) >= wide_bvh.LEAF_BLOCK_MIN
 
 
+def _rows_reached(wide, root):
+    """(rows of the leaves, rows of the blocks) reached from ``root`` of a blocked tree."""
+    flat, links = wide.nodes.reshape(-1), wide.links
+    leaves, blocks, stack = [], [], [root]
+    while stack:
+        n = stack.pop()
+        for j in range(wide_bvh.WIDTH):
+            code = int(links[n, wide_bvh.CODE_ROW, j])
+            if not np.isfinite(wide.nodes[n, 0, j]):
+                continue
+            if code >= 0:
+                stack.append(code)
+            elif (~code) >> wide_bvh.BLOCK_BIT:
+                _, first, count = block_span(flat, code)
+                blocks += range(first, first + count)
+            else:
+                first, count = (~code) >> wide_bvh.LEAF_BITS, ((~code) & 7) + 1
+                leaves += range(first, first + count)
+    return leaves, blocks
+
+
+@pytest.mark.parametrize("dtype", PRECISIONS, ids=lambda d: d.__name__)
+def test_no_block_holds_a_sphere_or_an_instance_row_and_every_root_stays_a_node(dtype):
+    """A tree over faces and spheres (rows [-1, ...], as rtfgu.layout writes them), spheres
+    among the faces, and a second tree after it in the same table (an instanced mesh's, of
+    six faces: its root's columns are its six faces, which a node not a root would make a
+    block): the blocks hold faces only, every sphere row stays in a leaf, every row is
+    reached once from the root of its own tree, and both roots are nodes of the new table."""
+    vertices, faces = traversal_mesh("icosphere")
+    rng = np.random.default_rng(7)
+    centres = vertices[rng.choice(len(vertices), 40, replace=False)] * 1.01
+    rows = flat_bvh.triangle_rows(vertices, faces, centres - 0.02, centres + 0.02)
+    first = flat_bvh.build_rows(rows)
+    small = faces[:6]
+    second = flat_bvh.build(*flat_bvh.triangle_bounds(vertices, small))
+    n1, f1 = len(first.nodes), len(first.order)
+    moved = flat_bvh.offset(second, n1, f1)
+    both = flat_bvh.FlatBVH(np.concatenate([first.nodes, moved.nodes]), np.concatenate([first.order, moved.order]),
+                            0.0, np.concatenate([first.boxes, moved.boxes]))
+    table = np.empty((len(both.order), 4), dtype=np.int32)
+    for at, p in enumerate(first.order):
+        table[at] = (*faces[p], p) if p < len(faces) else (-1, p - len(faces), 0, p)
+    table[f1:, :3] = small[second.order]
+    table[f1:, 3] = len(rows) + second.order
+    wide = both.wide((0, n1))
+    blocked = wide_bvh.with_blocks(wide, vertices.astype(dtype), table)
+    spheres = set(np.nonzero(table[:, 0] < 0)[0].tolist())
+    assert len(spheres) == 40
+    flat_end = min(block_span(blocked.nodes.reshape(-1), c)[0] for c in block_codes(blocked))
+    assert len(blocked.roots) == 2
+    for root, rows_of_tree in zip(blocked.roots, (range(f1), range(f1, len(table)))):
+        assert (root + 1) * wide_bvh.ROWS * wide_bvh.WIDTH <= flat_end
+        leaves, blocks = _rows_reached(blocked, root)
+        assert not spheres & set(blocks)
+        assert sorted(leaves + blocks) == list(rows_of_tree)
+        if root == blocked.roots[0]:
+            assert blocks and spheres <= set(leaves)
+        else:
+            assert len(leaves) == 6 and not blocks
+
+
 def test_the_float64_blocks_refuse_faces_they_cannot_read_as_rows():
     vertices, faces = traversal_mesh("soup")
     _, wide, rows = tree_of(vertices, faces)

@@ -115,7 +115,9 @@ def _centroid(r, axis):
     return 0.5 * (r[axis] + r[3 + axis])
 
 
-@njit(cache=True)
+# The build's helpers below are inlined where they are called (a call counted a reference per
+# array it was given): docs/bvh.md, "The blocks and the build's helpers, compiled".
+@njit(cache=True, inline="always")
 def _node_bounds(refs, first, count, out):
     """out[0:6] = the box of primitives first..first + count - 1 (rows of ``refs``), out[6:12]
     the box of their centroids, each [lo, hi]."""
@@ -132,7 +134,7 @@ def _node_bounds(refs, first, count, out):
     out[6], out[7], out[8], out[9], out[10], out[11] = c0, c1, c2, c3, c4, c5
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _bin(refs, first, count, bounds, scale, bin_count, bin_box):
     """Add primitives first..first + count - 1 to the bins of all three axes at once
     (bin_count (3, bins), bin_box (3, bins, 6)), by their centroids over the centroid box
@@ -151,21 +153,21 @@ def _bin(refs, first, count, bounds, scale, bin_count, bin_box):
             box_j[3] = max(box_j[3], h0); box_j[4] = max(box_j[4], h1); box_j[5] = max(box_j[5], h2)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _bin_scale(bounds, bins, scale):
     for axis in range(3):
         extent = bounds[9 + axis] - bounds[6 + axis]
         scale[axis] = bins / extent if extent > 0.0 else 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _empty_bins(bin_count, bin_box):
     bin_count[:, :] = 0
     bin_box[:, :, 0:3] = np.inf
     bin_box[:, :, 3:6] = -np.inf
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _as_a_leaf(bounds, count, leaf_size, c_intersect):
     """What a plane must beat: (the area of the node's box, the cost of leaving the node a
     leaf, inf where it has more than leaf_size primitives, axis -1, plane 0.0)."""
@@ -173,7 +175,7 @@ def _as_a_leaf(bounds, count, leaf_size, c_intersect):
     return area, (c_intersect * count if count <= leaf_size else np.inf), -1, 0.0
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse, c_intersect,
                 right_area, right_count):
     """The binned SAH (rtfgu.accelerators.bvh.BVH._best_split) over the filled bins: (axis,
@@ -221,11 +223,12 @@ def _best_plane(bin_count, bin_box, bounds, scale, count, leaf_size, c_traverse,
     return best_axis, best_plane
 
 
-# A node of at most FEW primitives chooses its plane without the bins (_best_plane_few).
-FEW = 16
+# A node of at most FEW primitives chooses its plane without the bins (_best_plane_few);
+# docs/bvh.md, "The blocks and the build's helpers, compiled".
+FEW = 8
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _best_plane_few(refs, first, count, bounds, scale, bins, leaf_size, c_traverse, c_intersect, by_bin,
                     right_area):
     """_best_plane of a node of few primitives (count <= FEW) without filling the bins: on
@@ -588,7 +591,7 @@ def _round_out(box, out, bits, high):
         _put_box(box[i], out, bits, i, high)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _put_box(box, out, bits, i, high):
     """Write the float64 box ``box`` [lo, hi] (its first 6 values) into the float32 row ``i``
     of ``out`` (``bits``: the same array as int32), lo at columns 0-2 and hi at ``high``..``high``

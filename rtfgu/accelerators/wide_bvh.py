@@ -192,66 +192,133 @@ def with_blocks(wide: WideBVH, vertices: np.ndarray, faces: np.ndarray) -> WideB
     keeps the leaf's box and takes the block's code. (In float64, whose blocks gather their
     corners, the packets measured slower with them.) A table past MAX_FIRST floats gets no
     blocks."""
-    nodes = wide.nodes
-    links = nodes.view(np.int32)
-    n = len(nodes)
-    codes = links[:, CODE_ROW, :]
-    empty = np.isposinf(nodes[:, 0, :])
-    one = (codes < 0) & ((~codes & (2 ** LEAF_BITS - 1)) == 0) & ~empty
-    first_of = np.where(one, ~codes >> LEAF_BITS, 0).astype(np.int64)
-    count = one.sum(axis=1)
-    pure = np.all(one | empty, axis=1) & (count > 0)
-    pure[list(wide.roots)] = False
-    big = np.iinfo(np.int64).max
-    lo = np.where(one, first_of, big).min(axis=1)
-    hi = np.where(one, first_of, -1).max(axis=1)
-    pure &= hi - lo == count - 1                 # consecutive rows (each once: a leaf's rows are its own)
-    # no sphere or instance row among first .. last: the count of such rows up to each
-    others = np.concatenate([[0], np.cumsum(faces[:, 0] < 0)])
-    pure[pure] = others[hi[pure] + 1] == others[lo[pure]]
-    kept = ~pure
     corners = vertices.dtype == np.float32
-    # In float32, the leaf columns of LEAF_BLOCK_MIN or more triangles in the nodes kept.
-    leaf = (codes < 0) & ~empty & kept[:, None] & corners
-    leaf_count = np.where(leaf, (~codes & (2 ** LEAF_BITS - 1)) + 1, 0)
-    leaf_first = np.where(leaf, ~codes >> LEAF_BITS, 0).astype(np.int64)
-    leaf &= leaf_count >= LEAF_BLOCK_MIN
-    leaf[leaf] = others[leaf_first[leaf] + leaf_count[leaf]] == others[leaf_first[leaf]]
-    if not pure.any() and not leaf.any():
+    nodes = wide.nodes
+    pure, leaf, firsts, counts = _choose_blocks(nodes, nodes.view(np.int32), np.asarray(wide.roots, dtype=np.int64),
+                                                faces, corners)
+    if len(counts) == 0:
         return wide
-    number = np.cumsum(kept) - 1                 # a kept node's new number
-    firsts = np.concatenate([lo[pure], leaf_first[leaf]])
-    counts = np.concatenate([count[pure], leaf_count[leaf]])
     if not corners and (faces.shape[1] != FACE_COLUMNS or not faces.flags.c_contiguous or faces.dtype != np.int32):
         raise ValueError("with_blocks: the faces of a float64 tree's blocks are read as C-ordered int32 rows of "
                          "%d, not %s %s" % (FACE_COLUMNS, faces.dtype, faces.shape))
+    kept = len(nodes) - int(pure.sum())
     sizes = BLOCK_HEADER + CORNER_ROWS * counts * corners
-    where = len(number[kept]) * ROWS * WIDTH + np.cumsum(sizes) - sizes
+    where = kept * ROWS * WIDTH + np.cumsum(sizes) - sizes
     total = int(where[-1] + sizes[-1])
     if total >= MAX_FIRST:
         return wide                               # beyond what a code holds: no blocks
     out = np.empty(-(-total // (ROWS * WIDTH)) * ROWS * WIDTH, dtype=np.float32)
-    m = int(kept.sum())
-    table = out[:m * ROWS * WIDTH].reshape(m, ROWS, WIDTH)
-    table[:] = nodes[kept]
-    new_codes = table.view(np.int32)[:, CODE_ROW, :]
-    inner = new_codes >= 0
-    codes_of = ~((1 << BLOCK_BIT) | where << LEAF_BITS | (counts - 1))
-    n_pure = int(pure.sum())                     # the nodes' blocks come first, then the leaves'
-    block_code = np.full(n, 0, dtype=np.int64)
-    block_code[pure] = codes_of[:n_pure]
-    to_block = inner & pure[np.where(inner, new_codes, 0)]
-    new_codes[to_block] = block_code[new_codes[to_block]]
-    renumber = inner & ~to_block
-    new_codes[renumber] = number[new_codes[renumber]]
-    new_codes[leaf[kept]] = codes_of[n_pure:]
-    flat = out.view(np.int32)
-    flat[where] = firsts
+    number = _fill_blocks(nodes, nodes.view(np.int32), pure, leaf, firsts, counts, where, out, out.view(np.int32))
     if corners:
         _copy_corners(vertices, faces, firsts, counts, where, out)
-    out[int(total):] = 0
-    blocked = out.reshape(-1, ROWS, WIDTH)
-    return WideBVH(blocked, tuple(int(number[r]) for r in wide.roots), wide.build_seconds)
+    out[total:] = 0
+    return WideBVH(out.reshape(-1, ROWS, WIDTH), tuple(int(number[r]) for r in wide.roots), wide.build_seconds)
+
+
+@njit(cache=True)
+def _choose_blocks(nodes, links, roots, faces, corners):
+    """with_blocks' blocks: (pure, leaf, firsts, counts). pure (N,): the nodes made blocks, a
+    node not a root whose every column that is not empty (lo.x = +inf) is one triangle, those
+    triangles consecutive rows of ``faces`` with no sphere or instance row (first column < 0)
+    among them; with ``corners``, leaf (N, WIDTH): the leaf columns of LEAF_BLOCK_MIN or more
+    triangles in the nodes kept, likewise with no other row. Each block's first face and count,
+    the nodes' blocks in node order, then the leaves' in node and column order."""
+    n = nodes.shape[0]
+    others = np.empty(len(faces) + 1, dtype=np.int64)     # the sphere and instance rows before each
+    others[0] = 0
+    for f in range(len(faces)):
+        others[f + 1] = others[f] + (faces[f, 0] < 0)
+    is_root = np.zeros(n, dtype=np.bool_)
+    for r in roots:
+        is_root[r] = True
+    pure = np.zeros(n, dtype=np.bool_)
+    first_of = np.zeros(n, dtype=np.int64)
+    count_of = np.zeros(n, dtype=np.int64)
+    leaf = np.zeros((n, WIDTH), dtype=np.bool_)
+    n_blocks = 0
+    for w in range(n):
+        count, lo, hi, single = 0, np.int64(0), np.int64(0), True
+        for j in range(WIDTH):
+            if nodes[w, 0, j] == np.inf:
+                continue
+            code = links[w, CODE_ROW, j]
+            if code < 0 and (~code & (2 ** LEAF_BITS - 1)) == 0:
+                f = np.int64(~code >> LEAF_BITS)
+                lo, hi = (f, f) if count == 0 else (min(lo, f), max(hi, f))
+                count += 1
+            else:
+                single = False
+        if single and count > 0 and not is_root[w] and hi - lo == count - 1 and others[hi + 1] == others[lo]:
+            pure[w] = True
+            first_of[w], count_of[w] = lo, count
+            n_blocks += 1
+        elif corners:
+            for j in range(WIDTH):
+                code = links[w, CODE_ROW, j]
+                if code < 0 and nodes[w, 0, j] != np.inf:
+                    f = np.int64(~code >> LEAF_BITS)
+                    c = (~code & (2 ** LEAF_BITS - 1)) + 1
+                    if c >= LEAF_BLOCK_MIN and others[f + c] == others[f]:
+                        leaf[w, j] = True
+                        n_blocks += 1
+    firsts = np.empty(n_blocks, dtype=np.int64)
+    counts = np.empty(n_blocks, dtype=np.int64)
+    k = 0
+    for w in range(n):
+        if pure[w]:
+            firsts[k], counts[k] = first_of[w], count_of[w]
+            k += 1
+    for w in range(n):
+        for j in range(WIDTH):
+            if leaf[w, j]:
+                code = links[w, CODE_ROW, j]
+                firsts[k], counts[k] = ~code >> LEAF_BITS, (~code & (2 ** LEAF_BITS - 1)) + 1
+                k += 1
+    return pure, leaf, firsts, counts
+
+
+@njit(cache=True)
+def _fill_blocks(nodes, links, pure, leaf, firsts, counts, where, out, out_links):
+    """with_blocks' table: the nodes kept, numbered again in their order, into ``out`` (flat
+    float32, ``out_links`` its int32 view), each column's code made the new number of its
+    node or the code of its block, and each block's header (its first face). Returns each
+    node's new number."""
+    n = nodes.shape[0]
+    number = np.empty(n, dtype=np.int64)
+    block = np.empty(n, dtype=np.int64)       # a pure node's block
+    m, k = 0, 0
+    for w in range(n):
+        number[w] = m
+        if pure[w]:
+            block[w] = k
+            k += 1
+        else:
+            m += 1
+    stride = ROWS * WIDTH
+    for b in range(len(counts)):
+        out_links[where[b]] = firsts[b]
+    for w in range(n):
+        if pure[w]:
+            continue
+        at = number[w] * stride
+        for r in range(CODE_ROW):
+            for j in range(WIDTH):
+                out[at + r * WIDTH + j] = nodes[w, r, j]
+        for j in range(WIDTH):
+            code = np.int64(links[w, CODE_ROW, j])
+            b = -1
+            if code >= 0:
+                if pure[code]:
+                    b = block[code]
+                else:
+                    code = number[code]
+            elif leaf[w, j]:
+                b = k
+                k += 1
+            if b >= 0:
+                code = ~((1 << BLOCK_BIT) | where[b] << LEAF_BITS | (counts[b] - 1))
+            out_links[at + CODE_ROW * WIDTH + j] = code
+    return number
 
 
 @njit(cache=True)
