@@ -50,7 +50,7 @@ def main(argv=None):
     sys.path.insert(0, str(Path(__file__).resolve().parent))
     import scenes
     from rtfgu.kernels import NumbaAccumulator
-    from rtfgu.kernels.render import mean_image, render_kernel, render_tile
+    from rtfgu.kernels.render import mean_rows, render_kernel, render_tile
 
     scene = getattr(scenes, args.scene)()
     accumulate = NumbaAccumulator(scene, args.size, args.size, args.precision)
@@ -58,7 +58,7 @@ def main(argv=None):
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     rows = []
-    for dispatcher in (render_kernel, render_tile, mean_image):
+    for dispatcher in (render_kernel, render_tile, mean_rows):
         for n, result in enumerate(dispatcher.overloads.values()):
             name = "%s_%d" % (dispatcher.py_func.__name__, n)
             rows += [(a, s, "%s:%s" % (name, symbol)) for a, s, symbol in symbols(result.library, out / (name + ".o"))]

@@ -20,7 +20,8 @@ the only way before a scene could hold a Mesh). Printed, in seconds, as one JSON
                 (of one sample, the image) not made an image (the median of ``--runs``).
     layout      the first render's layout and build alone: compile_scene and the kernel's
                 arguments (the wide tree's collapse) of a new scene holding a new Mesh of
-                the same arrays, so nothing is cached (the median of ``--runs``).
+                the same arrays, so nothing is cached (the median of ``--runs`` or more:
+                meshes.repeated, as the builds of benchmarks/meshes.py).
 
 numba compiles the kernels before anything is timed (a render of a 80-face icosphere); with
 ``--cold`` it does not, and ``first`` includes loading the compiled kernels from numba's
@@ -52,7 +53,7 @@ from rtfgu.accelerators import flat_bvh  # noqa: E402
 from rtfgu.kernels import NumbaAccumulator, kernel_arguments  # noqa: E402
 from rtfgu.layout import compile_scene  # noqa: E402
 
-from meshes import bunny, displaced_icosphere  # noqa: E402
+from meshes import bunny, displaced_icosphere, repeated  # noqa: E402
 
 
 def mesh_scene(mesh: rtfgu.Mesh, as_triangles: bool) -> rtfgu.Scene:
@@ -123,7 +124,7 @@ def main(argv=None) -> None:
         start = time.perf_counter()
         kernel_arguments(compile_scene(fresh, args.precision), size, size)
         return time.perf_counter() - start
-    layout_time = statistics.median(layout() for _ in range(max(1, args.runs)))
+    layout_time = statistics.median(repeated(layout, max(1, args.runs)))
     if args.save:
         np.save(args.save, first_image)
     result = {"mesh": arrays.name, "triangles": len(arrays.faces),

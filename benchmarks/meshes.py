@@ -71,7 +71,8 @@ A time covers tracing the rays and returning t and the face: not making the rays
 turning them into Dr.Jit arrays for Mitsuba, nor uploading them for WGSL (done once, before
 the timing; WGSL's timed part is its dispatches and the readback of the
 results, and its pipeline is compiled before anything is timed). Build: from the vertex and
-face arrays to a structure ready to trace, median of BUILD_RUNS after a warm-up build; rtfgu:
+face arrays to a structure ready to trace, median of BUILD_RUNS or more (as many as fit in
+BUILD_SECONDS) after a warm-up build; rtfgu:
 triangle_rows + flat_bvh.build_rows (as compile_scene builds) + the permuted faces (WGSL: and their upload to the
 adapter); Embree: a new scene, TriangleMesh and the commit (done by the first ``run``, of one
 ray); Mitsuba: mi.Mesh, its buffers and mi.load_dict. Bytes per triangle: rtfgu's node table
@@ -136,6 +137,11 @@ RUNS = 5
 # its rows take more rounds (each costs about 0.1 s).
 SPHERE_RUNS = 25
 BUILD_RUNS = 3
+# A build is timed BUILD_RUNS times at least and as many more as fit in BUILD_SECONDS (at most
+# BUILD_MOST): a small mesh's build takes a few milliseconds, by which this machine moves one
+# call from the next, so its median takes more calls than a large mesh's (repeated()).
+BUILD_SECONDS = 0.5
+BUILD_MOST = 101
 TOL = 1e-4
 EMBREE_CHUNKS = 64
 SCALAR_RAYS = 1 << 16
@@ -922,10 +928,20 @@ def timed(fn, *args):
     return result, time.perf_counter() - start
 
 
+def repeated(measure, runs):
+    """The seconds ``measure()`` returns, ``runs`` calls at least and as many more as fit in
+    BUILD_SECONDS (at most BUILD_MOST calls)."""
+    seconds, start = [], time.perf_counter()
+    while len(seconds) < runs or (len(seconds) < BUILD_MOST and time.perf_counter() - start < BUILD_SECONDS):
+        seconds.append(measure())
+    return seconds
+
+
 def measure_builds(system, mesh, runs, log):
-    """(median seconds of ``runs`` builds after a warm-up one, the warm-up's seconds)."""
+    """(median seconds of ``runs`` builds or more (repeated()) after a warm-up one, the
+    warm-up's seconds)."""
     first = system.build(mesh)
-    seconds = [system.build(mesh) for _ in range(runs)]
+    seconds = repeated(lambda: system.build(mesh), runs)
     log("  %s: build %.3g s (first %.3g s)" % (system.name, statistics.median(seconds), first))
     return statistics.median(seconds), first
 
@@ -1392,11 +1408,13 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
         "in an order shuffled per round, each time the second of two calls in a row. "
         "Timed: tracing and returning t and the face, not making the rays (WGSL: the "
         "dispatches and the readback of the results, not the upload of the rays). Build: "
-        "median of %d after a warm-up build, from the arrays to a structure ready to trace "
+        "median of %d or more (as many as fit in %g s, at most %d: a small mesh's build takes "
+        "milliseconds, as much as this machine moves one call from the next) after a warm-up "
+        "build, from the arrays to a structure ready to trace "
         "(rtfgu WGSL: rtfgu numba's build and the upload of its arrays; Embree: scene, "
         "TriangleMesh, commit; Mitsuba: mi.Mesh and mi.load_dict)." % (
             runs, ", ".join("%s %.1f s" % kv for kv in first_calls.items()) or "-",
-            build_runs),
+            build_runs, BUILD_SECONDS, BUILD_MOST),
         "- Error against Embree (float32, the multi-threaded row), reported, not asserted: "
         "rays one path hits and the other misses (share of all rays); rays both hit on "
         "another face (share of rays both hit), and of those the ones whose t differs by "
@@ -1432,12 +1450,13 @@ def meshes_section(plot_path=None, quick=False, log=print, peers=None) -> str:
         "(median of %d, each image dropped before the next; nothing is built again), the "
         "kernel alone (NumbaAccumulator.add, median of %d), and the first render's layout and "
         "build alone (compile_scene and the kernel's arguments, the wide tree's collapse "
-        "included, of a new scene of a new Mesh of the same arrays, median of %d; first - "
+        "included, of a new scene of a new Mesh of the same arrays, median of %d or more, as "
+        "many as fit in %g s; first - "
         "kernel also holds the first image's new memory). Kernels \"compiled before\": a "
         "render of another mesh ran first in the process; \"from disk (cold)\": the first "
         "render also loads numba's compiled kernels from its cache. Embree build: this run's "
         "(the table above). The difference columns compare the first image with numba "
-        "float64's." % (sphere_size, sphere_size, threads, runs, runs, runs),
+        "float64's." % (sphere_size, sphere_size, threads, runs, runs, runs, BUILD_SECONDS),
         "",
         *render_table(render_rows),
         "",

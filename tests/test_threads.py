@@ -221,3 +221,53 @@ def test_images_and_counts_are_the_same_for_any_thread_count(precision):
     assert np.isfinite(np.frombuffer(seen[0][0])).all()
     assert np.frombuffer(seen[0][1], dtype=np.int64).reshape(tiles, COUNTS)[:, 0].sum() == 48 * 48
     assert all(s == seen[0] for s in seen)
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("shape, count", [((1, 3, 3), 4), ((37, 5, 3), 2), ((300, 41, 3), 1), ((300, 41, 3), 2),
+                                          ((300, 41, 3), 7)])
+def test_the_mean_image_is_the_division_in_the_sums_precision_on_any_thread_count(dtype, shape, count, monkeypatch):
+    """mean_image shares its rows between the threads as the tiles are (a small image's made by
+    the caller alone): every value is the sums' own division (not float64's), and the values
+    not finite (inf, NaN and an overflow of the division) are counted once each."""
+    import numba
+
+    from rtfgu.kernels.render import mean_image
+    rng = np.random.default_rng(len(shape) + shape[0] + count)
+    sums = (rng.random(shape) * 3).astype(dtype)
+    sums.reshape(-1)[rng.choice(sums.size, min(5, sums.size), replace=False)] = [np.inf, -np.inf, np.nan, 7, 1][
+        :min(5, sums.size)]
+    n = dtype(0.3) if dtype == np.float32 else dtype(3)
+    if dtype == np.float32:
+        sums.reshape(-1)[-1] = np.finfo(np.float32).max         # / 0.3 overflows float32, not float64
+    monkeypatch.setattr(numba, "get_num_threads", lambda: count)
+    out = np.full(shape, -1.0)
+    bad = mean_image(sums, n, out)
+    with np.errstate(over="ignore", invalid="ignore"):
+        want = (sums / n).astype(np.float64)
+    assert out.tobytes() == want.tobytes()
+    assert bad == int((~np.isfinite(want)).sum()) > 0
+
+
+def test_one_thread_runs_numba_loops_on_the_caller_and_gives_the_count_back():
+    """rtfgu.jit.one_thread: numba's thread count is 1 inside, and what it was after, an error
+    raised inside included; a build of at most TASK_FLOOR primitives runs on one thread,
+    a larger one on all."""
+    import numba
+
+    from rtfgu.accelerators import flat_bvh
+    from rtfgu.jit import one_thread
+    before = numba.get_num_threads()
+    with one_thread():
+        assert numba.get_num_threads() == 1
+    assert numba.get_num_threads() == before
+    with pytest.raises(KeyError):
+        with one_thread():
+            raise KeyError("inside")
+    assert numba.get_num_threads() == before
+    seen = []
+    with flat_bvh._threads_for(flat_bvh.TASK_FLOOR):
+        seen.append(numba.get_num_threads())
+    with flat_bvh._threads_for(flat_bvh.TASK_FLOOR + 1):
+        seen.append(numba.get_num_threads())
+    assert seen == [1, before]

@@ -24,6 +24,8 @@ precisions, and a float32 vertex (the nearest float32 to a float64 one) is insid
 """
 from __future__ import annotations
 
+import contextlib
+
 import time
 from dataclasses import dataclass, field
 
@@ -31,7 +33,7 @@ import numpy as np
 
 from .bvh import BINS, C_INTERSECT, LEAF_SIZE
 
-from ..jit import chunks_of_one, njit, prange, threads
+from ..jit import chunks_of_one, njit, one_thread, prange, threads
 
 NODE_WIDTH = 8
 # Deepest stack a traversal needs: the build splits until LEAF_SIZE, and a tree of 2^31
@@ -621,7 +623,17 @@ def build(lo, hi) -> FlatBVH:
     hi = np.ascontiguousarray(hi, dtype=np.float64)
     if lo.shape != hi.shape or lo.ndim != 2 or lo.shape[1] != 3 or len(lo) == 0:
         raise ValueError("BVH: lo and hi must be (P, 3) arrays with P >= 1, got %s and %s" % (lo.shape, hi.shape))
-    return build_rows(_references(lo, hi))
+    with _threads_for(len(lo)):
+        refs = _references(lo, hi)
+    return build_rows(refs)
+
+
+def _threads_for(n_prims: int):
+    """The threads a pass or a build over ``n_prims`` primitives runs on: all of numba's, or
+    where it is one task (at most TASK_FLOOR), the calling thread alone (rtfgu.jit.one_thread:
+    on a busy machine each parallel loop would wait milliseconds for a second core; docs/bvh.md,
+    "A small mesh's build on a busy machine"). The tree is the same either way."""
+    return one_thread() if n_prims <= TASK_FLOOR else contextlib.nullcontext()
 
 
 def build_rows(refs) -> FlatBVH:
@@ -635,11 +647,12 @@ def build_rows(refs) -> FlatBVH:
         raise ValueError("BVH: a primitive's box is not finite")
     start = time.perf_counter()
     order = np.arange(len(refs), dtype=np.int32)
-    nodes = _build(refs, order)
-    if nodes is None:
-        raise ValueError("BVH: the tree would be deeper than %d levels (degenerate boxes)" % MAX_DEPTH)
-    boxes = np.empty((len(order), 6), dtype=np.float32)    # refs are in leaf order now
-    _round_out(refs, boxes, boxes.view(np.int32), 3)
+    with _threads_for(len(refs)):
+        nodes = _build(refs, order)
+        if nodes is None:
+            raise ValueError("BVH: the tree would be deeper than %d levels (degenerate boxes)" % MAX_DEPTH)
+        boxes = np.empty((len(order), 6), dtype=np.float32)    # refs are in leaf order now
+        _round_out(refs, boxes, boxes.view(np.int32), 3)
     return FlatBVH(nodes, order, time.perf_counter() - start, boxes)
 
 
@@ -659,7 +672,8 @@ def triangle_rows(vertices: np.ndarray, faces: np.ndarray, lo=None, hi=None) -> 
     faces = np.ascontiguousarray(faces)
     extra = 0 if lo is None else len(lo)
     rows = np.empty((len(faces) + extra, 6))
-    _triangle_bounds(np.ascontiguousarray(vertices, dtype=np.float64), faces, rows[:, :3], rows[:, 3:])
+    with _threads_for(len(faces)):
+        _triangle_bounds(np.ascontiguousarray(vertices, dtype=np.float64), faces, rows[:, :3], rows[:, 3:])
     if extra:
         rows[len(faces):, :3] = lo
         rows[len(faces):, 3:] = hi

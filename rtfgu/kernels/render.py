@@ -40,7 +40,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit, prange, types
+from numba import njit, types
 from numba.extending import overload
 
 from ..accelerators.wide_bvh import FACE_COLUMNS, ROWS, WIDTH
@@ -60,7 +60,7 @@ from .path_trace import trace_path
 from .wide_bvh import WIDE, on_the_stack
 from .packet import PACKET, lanes_of as packet_lanes
 from .sampling import concentric_map, pixel_sample
-from .threads import claim, finish
+from .threads import claim, fetch_add, finish, run_in_threads
 
 # Tiles of TILE x TILE pixels are the unit of parallel work.
 TILE = 16
@@ -724,17 +724,44 @@ def render_kernel(size, camera, shapes, lights, scene, eye, settings, tracer, sa
         first = claim(counter, run)
 
 
-@njit(parallel=True, cache=True)
+# mean_image: an image of fewer values is made by the calling thread alone (a 73 x 73 image has
+# 15987).
+MEAN_ALONE = 1 << 14
+
+
+@njit(cache=True, nogil=True)
+def mean_rows(sums, n, share, out, bad):
+    """mean_image's rows this thread claims: ``share`` = (1, counter, run), each claim the next
+    ``run`` rows (rtfgu.kernels.threads), ``out`` = ``sums`` / ``n`` there, the division in the
+    sums' own precision; the count of its values that are not finite added to bad[0] before
+    the rows are counted done."""
+    _, counter, run = share
+    rows = sums.shape[0]
+    first = claim(counter, run)
+    while first < rows:
+        last = min(first + run, rows)
+        count = 0
+        for y in range(first, last):
+            for x in range(sums.shape[1]):
+                for c in range(sums.shape[2]):
+                    value = sums[y, x, c] / n
+                    out[y, x, c] = value
+                    if not math.isfinite(value):
+                        count += 1
+        if count:
+            fetch_add(bad, 0, count)
+        finish(counter, last - first)
+        first = claim(counter, run)
+
+
 def mean_image(sums, n, out) -> int:
     """Write the image of the samples so far, ``out`` (float64) = ``sums`` / ``n``, the
-    division in the sums' own precision (``n`` of their type), all cores, in one pass over
-    the pixels; returns how many of its values are not finite (rtfgu.renderer refuses them)."""
-    bad = 0
-    for y in prange(sums.shape[0]):
-        for x in range(sums.shape[1]):
-            for c in range(sums.shape[2]):
-                value = sums[y, x, c] / n
-                out[y, x, c] = value
-                if not math.isfinite(value):
-                    bad += 1
-    return bad
+    division in the sums' own precision (``n`` of their type); returns how many of its values
+    are not finite (rtfgu.renderer refuses them). Its rows are shared by the render's threads
+    as the tiles are (run_in_threads): a thread that starts late finds them done, where a
+    parallel loop would wait for it, milliseconds on a busy machine (docs/bvh.md, "A small
+    mesh's build on a busy machine"). An image of fewer than MEAN_ALONE values is made by the
+    calling thread alone: handing rows to another thread costs more than they do."""
+    bad = np.zeros(1, dtype=np.int64)
+    run_in_threads(mean_rows, (sums, n), (out, bad), sums.shape[0], 1, 1 if sums.size < MEAN_ALONE else None)
+    return int(bad[0])
