@@ -369,18 +369,27 @@ def test_no_ray_from_inside_a_closed_mesh_leaks_through_the_wide_tree(dtype):
             assert (hits[:, 1] >= 0).all(), "%d of %d rays leak" % ((hits[:, 1] < 0).sum(), len(origins))
 
 
-def block_codes(wide):
-    """The block codes of the tree's nodes (those reached from its roots)."""
-    links, out, stack = wide.links, [], list(wide.roots)
+def reached_columns(wide, roots=None):
+    """(node, code) of each column that is not empty of the nodes reached from ``roots`` (the
+    tree's own where None), each node's columns in order."""
+    links, stack = wide.links, list(wide.roots if roots is None else roots)
     while stack:
         n = stack.pop()
         for j in range(wide_bvh.WIDTH):
             code = int(links[n, wide_bvh.CODE_ROW, j])
-            if code >= 0 and np.isfinite(wide.nodes[n, 0, j]):
-                stack.append(code)
-            elif code < 0 and (~code) >> wide_bvh.BLOCK_BIT:
-                out.append(code)
-    return out
+            if np.isfinite(wide.nodes[n, 0, j]):
+                if code >= 0:
+                    stack.append(code)
+                yield n, code
+
+
+def is_block_code(code):
+    return code < 0 and (~code) >> wide_bvh.BLOCK_BIT != 0
+
+
+def block_codes(wide):
+    """The block codes of the tree's nodes (those reached from its roots)."""
+    return [code for _, code in reached_columns(wide) if is_block_code(code)]
 
 
 def block_span(flat, code):
@@ -418,21 +427,13 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
         seen += range(first, first + count)
     ends.sort()
     assert all(b[0] >= a[1] for a, b in zip(ends, ends[1:]))     # the blocks do not overlap
-    links, stack = blocked.links, list(blocked.roots)
-    while stack:
-        n = stack.pop()
+    for n, code in reached_columns(blocked):
         assert (n + 1) * wide_bvh.ROWS * wide_bvh.WIDTH <= ends[0][0]     # the nodes before the blocks
-        for j in range(wide_bvh.WIDTH):
-            code = int(links[n, wide_bvh.CODE_ROW, j])
-            if not np.isfinite(blocked.nodes[n, 0, j]):
-                continue
-            if code >= 0:
-                stack.append(code)
-            elif not (~code) >> wide_bvh.BLOCK_BIT:
-                leaf = ~code
-                first, count = leaf >> wide_bvh.LEAF_BITS, (leaf & 7) + 1
-                seen += range(first, first + count)
-                leaves.append(count)
+        if code < 0 and not is_block_code(code):
+            leaf = ~code
+            first, count = leaf >> wide_bvh.LEAF_BITS, (leaf & 7) + 1
+            seen += range(first, first + count)
+            leaves.append(count)
     assert sorted(seen) == list(range(len(rows)))
     assert len(block_codes(blocked)) > 0
     assert blocked.roots == (0,)
@@ -445,22 +446,14 @@ def test_the_blocks_hold_each_face_of_the_nodes_they_replace_once(dtype):
 
 def _rows_reached(wide, root):
     """(rows of the leaves, rows of the blocks) reached from ``root`` of a blocked tree."""
-    flat, links = wide.nodes.reshape(-1), wide.links
-    leaves, blocks, stack = [], [], [root]
-    while stack:
-        n = stack.pop()
-        for j in range(wide_bvh.WIDTH):
-            code = int(links[n, wide_bvh.CODE_ROW, j])
-            if not np.isfinite(wide.nodes[n, 0, j]):
-                continue
-            if code >= 0:
-                stack.append(code)
-            elif (~code) >> wide_bvh.BLOCK_BIT:
-                _, first, count = block_span(flat, code)
-                blocks += range(first, first + count)
-            else:
-                first, count = (~code) >> wide_bvh.LEAF_BITS, ((~code) & 7) + 1
-                leaves += range(first, first + count)
+    flat, leaves, blocks = wide.nodes.reshape(-1), [], []
+    for _, code in reached_columns(wide, [root]):
+        if is_block_code(code):
+            _, first, count = block_span(flat, code)
+            blocks += range(first, first + count)
+        elif code < 0:
+            first, count = (~code) >> wide_bvh.LEAF_BITS, ((~code) & 7) + 1
+            leaves += range(first, first + count)
     return leaves, blocks
 
 
