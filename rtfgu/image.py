@@ -5,7 +5,7 @@ same power when an image is written, so render() itself returns linear radiance.
 """
 from __future__ import annotations
 
-import numpy as np
+from .lazy_import import numpy as np
 
 GAMMA = 2.2
 

@@ -48,7 +48,7 @@ import re
 import warnings
 from pathlib import Path
 
-import numpy as np
+from .lazy_import import numpy as np
 
 from .materials.material import Material
 from .shapes.mesh import Mesh, zero_area_faces

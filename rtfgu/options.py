@@ -7,7 +7,7 @@ from __future__ import annotations
 import importlib.util
 import math
 
-import numpy as np
+from .lazy_import import numpy as np
 
 from .sampling import Jittered, NRooks
 from .sampling.random import LENS_SET

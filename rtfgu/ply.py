@@ -43,7 +43,7 @@ import re
 import warnings
 from pathlib import Path
 
-import numpy as np
+from .lazy_import import numpy as np
 
 from .materials.material import Material
 from .obj import DEFAULT_COLOR, _fan

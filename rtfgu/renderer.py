@@ -8,7 +8,7 @@ the top (+y), before gamma. The slide's loop counts iy from the bottom (sy = -1)
 from __future__ import annotations
 
 
-import numpy as np
+from .lazy_import import numpy as np
 
 from .float3 import Float3
 from .ray import Ray

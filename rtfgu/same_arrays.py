@@ -9,17 +9,19 @@ for a 0) the caller only makes again what it would have kept."""
 from __future__ import annotations
 
 import os
-from concurrent.futures import ThreadPoolExecutor
 
-import numpy as np
+from .lazy_import import numpy as np
 
 CHUNK = 1 << 22
 _POOL = None
 
 
-def _pool() -> ThreadPoolExecutor:
+def _pool():
+    """The comparing threads, started at the first big comparison (a ThreadPoolExecutor;
+    concurrent.futures is imported then, not with the package)."""
     global _POOL
     if _POOL is None:
+        from concurrent.futures import ThreadPoolExecutor
         _POOL = ThreadPoolExecutor(max_workers=min(8, os.cpu_count() or 1), thread_name_prefix="rtfgu-same")
     return _POOL
 

@@ -28,7 +28,7 @@ import math
 import os
 from pathlib import Path
 
-import numpy as np
+from ..lazy_import import numpy as np
 
 from ..float3 import Float3
 from .light import Light

@@ -38,7 +38,7 @@ import math
 import os
 import re
 
-import numpy as np
+from ..lazy_import import numpy as np
 
 RGBE_FORMAT = "32-bit_rle_rgbe"
 RESOLUTION = re.compile(r"([-+])([XY]) (\d+) ([-+])([XY]) (\d+)")

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from ..lazy_import import numpy as np
 
 from ..cameras import PinholeCamera
 from ..float3 import Float3, normalize
@@ -38,8 +38,8 @@ from .textures import texture_path
 
 BACKGROUND = Float3(0.1, 0.3, 0.6)
 # The Stanford bunny's bounding box (bun_zipper.ply), where the npm copy is moved to.
-STANFORD_BUNNY_MIN = np.array([-0.0946899, 0.0329874, -0.0618736])
-STANFORD_BUNNY_MAX = np.array([0.0610091, 0.187321, 0.0587997])
+STANFORD_BUNNY_MIN = (-0.0946899, 0.0329874, -0.0618736)
+STANFORD_BUNNY_MAX = (0.0610091, 0.187321, 0.0587997)
 
 
 def _placed(mesh: Mesh, scale: float, offset) -> Mesh:
@@ -57,8 +57,9 @@ def bunny_mesh(material: Material | None = None) -> Mesh:
     """The bunny on the Stanford scan's bounding box (one scale, the box's centre)."""
     mesh = load_obj(mesh_path("bunny.obj"), material=material, default_color=(0.9, 0.9, 0.9))
     lo, hi = mesh.vertices.min(axis=0), mesh.vertices.max(axis=0)
-    scale = float(np.mean((STANFORD_BUNNY_MAX - STANFORD_BUNNY_MIN) / (hi - lo)))
-    offset = (STANFORD_BUNNY_MIN + STANFORD_BUNNY_MAX) / 2 - scale * (lo + hi) / 2
+    box_lo, box_hi = np.array(STANFORD_BUNNY_MIN), np.array(STANFORD_BUNNY_MAX)
+    scale = float(np.mean((box_hi - box_lo) / (hi - lo)))
+    offset = (box_lo + box_hi) / 2 - scale * (lo + hi) / 2
     return _placed(mesh, scale, offset)
 
 

@@ -30,10 +30,9 @@ faces in arrays, found through a BVH.
 """
 from __future__ import annotations
 
-import hashlib
 from abc import abstractmethod
 
-import numpy as np
+from ..lazy_import import numpy as np
 
 try:
     from ..robust import watertight_hit
@@ -108,6 +107,8 @@ class Mesh:
         faces of ``triangles()`` are made from. It is computed again on every call (the arrays
         hashed whole, no Python per face), so a change in place is seen. (A scene's BVH is
         kept by comparing the arrays themselves, rtfgu.layout._cached.)"""
+        import hashlib   # here, not with the package: most scenes never ask
+
         digest = hashlib.blake2b(digest_size=16)
         for array in (self.vertices, self.faces, self.normals, self.uvs):
             digest.update(b"-" if array is None else np.ascontiguousarray(array).tobytes())

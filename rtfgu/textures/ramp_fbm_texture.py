@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
+from ..lazy_import import numpy as np
 
 from ..float3 import Float3, as_float3
 from ..validation import number
