@@ -15,7 +15,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-import numpy as np
+from ..lazy_import import numpy as np
 
 from ..float3 import Float3
 from .texture import Texture
