@@ -433,6 +433,54 @@ def test_what_a_test_leaves_in_the_shared_folders_is_gone_before_the_next_studen
         assert uid not in owners
 
 
+# keyctl(2) and add_key(2) by machine (the C library wraps neither).
+KEY_CALLS = {"x86_64": (250, 248), "aarch64": (219, 217)}
+
+
+def test_a_message_queue_or_a_key_a_test_leaves_is_not_found_by_the_next_student(mode, tmp_path):
+    # A POSIX message queue and the kernel's keyrings belong to a user, not to a folder: the
+    # next student graded by the same worker runs as the same sandbox user, and could read
+    # what the test before left there (without namespaces /dev/mqueue need not be mounted for
+    # the grader to see a queue; a user's keyring lives as long as the user).
+    import platform
+    if platform.machine() not in KEY_CALLS:
+        pytest.skip("keyctl's system call number is not known for %s" % platform.machine())
+    keyctl, add_key = KEY_CALLS[platform.machine()]
+    leave = """
+        import ctypes, os
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.syscall.restype = ctypes.c_long
+        q = libc.mq_open(b"/rtfgu-left-queue", os.O_CREAT | os.O_RDWR, 0o600, None)
+        if q >= 0:
+            libc.mq_send(q, b"left by the student before", 26, 0)
+        for keyring in (-4, -5):      # the user's keyring and its session keyring
+            libc.syscall(%(add_key)d, b"user", b"rtfgu-left-key", b"left", 4, ctypes.c_long(keyring))
+        """ % {"add_key": add_key}
+    look = """
+        import ctypes, os
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.syscall.restype = ctypes.c_long
+        if libc.mq_open(b"/rtfgu-left-queue", os.O_RDONLY, 0, None) >= 0:
+            raise RuntimeError("LEAKED: the message queue of the student before")
+        for keyring in (-4, -5):      # KEYCTL_SEARCH
+            if libc.syscall(%(keyctl)d, 10, ctypes.c_long(keyring), b"user", b"rtfgu-left-key", 0) >= 0:
+                raise RuntimeError("LEAKED: a key of the student before")
+        try:
+            listed = open("/proc/keys").read()
+        except OSError:
+            listed = ""
+        if "rtfgu-left-key" in listed:
+            raise RuntimeError("LEAKED: a key of the student before, in /proc/keys")
+        """ % {"keyctl": keyctl}
+    want = honest(mode, tmp_path)
+    first = _graded(mode, _submission(tmp_path / "first", leave), tmp_path / "out-first")
+    assert _scores(first) == want
+    second = _graded(mode, _submission(tmp_path / "second", look), tmp_path / "out-second")
+    for test in second.tests:
+        assert "LEAKED" not in test.output, test.output
+    assert _scores(second) == want
+
+
 # --- the solved copies the staff commands write -----------------------------------------------
 
 def test_the_solved_copies_the_staff_commands_write_are_closed_to_student_code(mode, tmp_path, world_readable):

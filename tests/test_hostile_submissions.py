@@ -33,10 +33,11 @@ import pytest
 
 from rtfgu.grading.archive import unpack_submission
 from rtfgu.grading.assignments import get_assignment
+from rtfgu.grading.checks import checks_for
 from rtfgu.grading.generate import PACKAGE_DIR, solution_files, student_files, write_files
 from rtfgu.grading.grader import REFERENCE_DIR, grade
 from rtfgu.grading.release import solves
-from rtfgu.grading.sandbox import bwrap_works, find_bwrap, prepare
+from rtfgu.grading.sandbox import RESULT_LIMIT, bwrap_works, find_bwrap, prepare
 
 ROOT = Path(__file__).resolve().parent.parent
 SPHERE = "shapes/sphere.py"
@@ -654,6 +655,63 @@ def test_a_malformed_answer_written_into_the_pipe_costs_that_test_only(bwrap, tm
     result = _grade_attack(tmp_path, "bwrap", attack)
     assert _scores(result) == honest_scores("bwrap")
 
+
+UNWRITABLE = {
+    # deeper than the JSON parser's stack: json.loads raises RecursionError, not ValueError
+    "nested": """
+        import os, sys
+        os.write(int(sys.argv[4]), b"[" * 100000 + b"]" * 100000)
+        os._exit(0)
+        """,
+    # a lone surrogate in the message, which UTF-8 cannot hold (summary.txt, the gradebook)
+    "surrogate": """
+        raise RuntimeError("\\ud800 in the message")
+        """,
+}
+# an answer past the size the grader reads, in the form the probe writes
+UNWRITABLE["oversized"] = """
+    import os, sys
+    body = b'{"cases": [' + b'0, ' * (%d // 3 + 1) + b'0]}'
+    os.write(int(sys.argv[4]), body)
+    os._exit(0)
+    """ % RESULT_LIMIT
+
+
+@pytest.mark.parametrize("attack", list(UNWRITABLE))
+def test_an_answer_the_grader_cannot_parse_or_write_costs_that_test_only(isolation, tmp_path, attack):
+    # An answer nested past the parser's stack, one past the size the grader reads, and a
+    # message UTF-8 cannot hold: each once stopped the whole grading (no results.json, or
+    # results.json and no summary.txt, and grade-all's gradebook gave the student 0).
+    result = _grade_attack(tmp_path, isolation, UNWRITABLE[attack])
+    assert _scores(result) == honest_scores(isolation)
+    assert json.loads((tmp_path / "out" / "results.json").read_text(encoding="utf-8"))["score"] == result.score
+    summary = (tmp_path / "out" / "summary.txt").read_text(encoding="utf-8")
+    assert "total %g" % result.score in summary
+    if attack == "surrogate":
+        assert "? in the message" in summary
+
+def test_sets_the_test_did_not_ask_for_score_nothing(isolation, tmp_path):
+    # The a10 judges took each answer's own word for its sets' sizes: an answer written into
+    # the pipe by the stub (not by the probe) with sets of one point, which have every
+    # structure, scored the tests of the sampler's structure, its shuffles and its seeds; and
+    # millions of such sets took the judge minutes.
+    forged = {"sets": [{"num_samples": 1, "num_sets": 1, "points": [[0.5, 0.5]]}] * 4,
+              "runs": [{"seed": 10, "points": [[0.5, 0.5]]}, {"seed": 10, "points": [[0.5, 0.5]]},
+                       {"seed": 17, "points": [[0.25, 0.25]]}]}
+    files = dict(student_files("a10"))
+    stub = "        raise NotImplementedError('a10: MultiJittered.generate_samples')\n"
+    attack = ("        import json, os, sys\n"
+              "        os.write(int(sys.argv[4]), json.dumps(%r).encode())\n"
+              "        os._exit(0)\n" % (forged,))
+    assert files["sampling/multi_jittered.py"].count(stub) == 1
+    files["sampling/multi_jittered.py"] = files["sampling/multi_jittered.py"].replace(stub, attack + stub)
+    write_files(files, tmp_path / "sub")
+    only = tuple(c.slug for c in checks_for("a10_samplers") if c.number in ("10.1", "10.2", "10.3", "10.6"))
+    result = grade("a10", tmp_path / "sub", None, only=only)
+    assert [t.number for t in result.tests] == ["10.1", "10.2", "10.3", "10.6"]
+    for test in result.tests:
+        assert test.score == 0, (test.number, test.output)
+        assert "not in the form the test writes" in test.output, test.output
 
 def test_no_process_of_the_sandbox_user_is_left_after_its_tests_not_even_a_zombie(bwrap, tmp_path):
     # Killing a test's namespace leaves processes without a parent; in a container PID 1 may

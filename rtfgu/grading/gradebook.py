@@ -68,7 +68,7 @@ def grade_all(assignment, submissions, out_dir, *, processes=None, time_limit=No
             if log:
                 log("%-30s %6.2f / %g%s" % (student, score, max_score, ("  " + error) if error else ""))
     path = out_dir / "gradebook.csv"
-    with open(path, "w", newline="") as f:
+    with open(path, "w", newline="", encoding="utf-8", errors="replace") as f:
         writer = csv.writer(f)
         writer.writerow(["student", "score", "max_score", "percent"] + ["%s %s" % (c.number, c.name) for c in checks]
                         + ["error"])

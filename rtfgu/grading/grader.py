@@ -31,6 +31,13 @@ REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
 MESSAGE_LIMIT = 8000                   # characters of one test's message in the results
 
 
+def writable(text: str) -> str:
+    """``text`` as UTF-8 can hold it: a lone surrogate (a student's exception message can hold
+    one, "\\ud800", and JSON carries it) becomes "?", so that results.json, summary.txt and the
+    gradebook can be written."""
+    return text.encode("utf-8", "replace").decode("utf-8")
+
+
 # --- references ----------------------------------------------------------------------------
 
 def reference_paths(assignment):
@@ -238,6 +245,8 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
                     "the test's answer was not in the form the test writes (%s); was something else "
                     "written to its pipe?" % type(error).__name__], None
                 cause = "bad answer"
+    if not 0.0 <= fraction <= 1.0:       # a judge's NaN (the answer's numbers) scores nothing
+        fraction = 0.0 if not fraction > 1.0 else 1.0
     if fraction >= 1.0:
         cause = ""
     if output.strip() and fraction < 1.0:
@@ -245,6 +254,7 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
     message = "\n".join(lines) if lines else "all cases right"
     if len(message) > MESSAGE_LIMIT:  # the child's error texts are the student's to choose
         message = message[:MESSAGE_LIMIT] + "\n[... message cut at %d characters]" % MESSAGE_LIMIT
+    message, cause = writable(message), writable(cause)
     if fraction >= 1.0 and check.kind == "cases" and check.judge is None:
         message = "all %d cases right" % len(refs[check.slug].get("cases", [])) or message
     test = TestResult(check.number, check.name, float(check.weight), round(check.weight * fraction, 4),

@@ -169,7 +169,7 @@ class Result:
         else:
             raise ValueError("format must be gradescope or prairielearn, got %r" % (fmt,))
         path.write_text(json.dumps(data, indent=2) + "\n")
-        (out_dir / "summary.txt").write_text(self.summary())
+        (out_dir / "summary.txt").write_text(self.summary(), encoding="utf-8", errors="replace")
         return path
 
 

@@ -40,6 +40,7 @@ import fcntl
 import hashlib
 import json
 import os
+import platform
 import resource
 import select
 import shutil
@@ -62,7 +63,9 @@ from .generate import PACKAGE_DIR, student_files
 from .release import build_package, probe_files
 from .timeouts import boot_options
 
-RESULT_LIMIT = 64 * 1024 * 1024        # bytes of JSON a child may send back
+# Bytes of JSON a child may send back: the largest answer of a solution is a09's, 2.8 MB;
+# every answer is parsed and judged by the grader, so its size bounds their time and memory.
+RESULT_LIMIT = 8 * 1024 * 1024
 SANDBOX_UID = int(os.environ.get("RTFGU_SANDBOX_UID", "64055"))
 ISOLATIONS = ("bwrap", "unprivileged user", "rlimits only")
 INSIDE = Path("/sandbox")              # where the package, probes and scratch appear under bwrap
@@ -772,6 +775,10 @@ def _preexec(limits: dict, isolation: str, uid=None, namespaces=None):
         if limits["memory"]:
             resource.setrlimit(resource.RLIMIT_AS, (limits["memory"], limits["memory"]))
         resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+        # No POSIX message queue can be made: one outlives its test, and without namespaces the
+        # next student graded as the same user would open it (/dev/mqueue need not be mounted
+        # for the sweep to see it).
+        resource.setrlimit(resource.RLIMIT_MSGQUEUE, (0, 0))
         signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # an oversized write fails with an error instead
         if uid is not None:                            # the sandbox user (bwrap's, or the fallback's)
             if isolation == "unprivileged user":
@@ -791,14 +798,28 @@ def _preexec(limits: dict, isolation: str, uid=None, namespaces=None):
     return run
 
 
+# keyctl(2): its system call's number, by machine (the C library has no wrapper of it).
+SYS_KEYCTL = {"x86_64": 250, "aarch64": 219, "i686": 288, "i386": 288}
+KEYCTL_CLEAR = 7
+KEY_SPEC_USER_KEYRING = -4
+KEY_SPEC_USER_SESSION_KEYRING = -5
+
+
 def _kill_user(uid: int) -> None:
-    """Kill every process of ``uid`` (a sandbox user: only test processes)."""
+    """Kill every process of ``uid`` (a sandbox user: only test processes), and empty its user
+    and user-session keyrings: the kernel keeps them per user, not per process, so keys a test
+    added (add_key(2)) would be read by the next student graded as the same user."""
+    syscall = _libc().syscall if platform.machine() in SYS_KEYCTL else None   # looked up before the fork
     pid = os.fork()
     if pid == 0:  # pragma: no cover (the child)
         try:
             os.setgid(uid)
             os.setuid(uid)
             os.kill(-1, signal.SIGKILL)
+            if syscall is not None:
+                number = SYS_KEYCTL[platform.machine()]
+                syscall(number, KEYCTL_CLEAR, KEY_SPEC_USER_KEYRING)
+                syscall(number, KEYCTL_CLEAR, KEY_SPEC_USER_SESSION_KEYRING)
         except BaseException:
             pass
         os._exit(0)
@@ -1113,7 +1134,7 @@ def run_child(ws: Workspace, scratch: Path, probe: list, *, isolation: str, time
     if status is None:
         try:
             data = json.loads(b"".join(chunks))
-        except ValueError:
+        except (ValueError, RecursionError):   # nested deeper than the parser's stack: not the probe's
             return ChildResult("bad answer", None, out_text, seconds, "the test's answer was not readable")
         if not isinstance(data, dict):
             return ChildResult("bad answer", None, out_text, seconds, "the test's answer was not an object")

@@ -157,6 +157,11 @@ def judge_sample_f(check, got, reference):
                 for k in range(3):
                     total, squares = s["sums"][g][k]
                     mean, error, z = mean_z(total, squares, s["used"], truth)
+                    if not math.isfinite(mean):
+                        problems.append("the sum of f (n . w_i) g(w_i) / pdf over your %d samples is not a finite "
+                                        "number for g = %s: some sample's f, pdf or direction is NaN or infinite"
+                                        % (s["used"], g))
+                        break
                     if abs(z) > Z_LIMIT:
                         text = ("the mean of f (n . w_i) g(w_i) / pdf over your %d samples, divided by rho, is %.5g "
                                 "+- %.2g for g = %s, but the integral it estimates is %.5g (%.1f standard errors off)"

@@ -68,11 +68,25 @@ def structure_problems(entry) -> list:
     return problems
 
 
+def asked_sets(check, got) -> list:
+    """The answer's sets, checked against what the test asked for (its probe's counts and
+    num_sets), not against what the answer says of itself: an answer written by other code
+    than the probe (student code can reach the pipe) could claim sets of one point, which
+    have every structure, or millions of them, which take the judge minutes."""
+    asked = check.probe[2]
+    sets = got["sets"]
+    if len(sets) != len(asked["counts"]) or any(
+            entry["num_samples"] != n or entry["num_sets"] != asked["num_sets"]
+            or len(entry["points"]) != n * asked["num_sets"] for entry, n in zip(sets, asked["counts"])):
+        raise ValueError("the sets are not those the test asked for")
+    return sets
+
+
 def judge_structure(check, got, reference):
     if "error" in got:
         return 0.0, [got["error"]]
     right, lines = 0, []
-    for entry in got["sets"]:
+    for entry in asked_sets(check, got):
         problems = structure_problems(entry)
         if problems:
             lines += ["- " + p for p in problems]
@@ -93,7 +107,7 @@ def judge_shuffled(check, got, reference):
     """No set in the canonical arrangement's order, and the sets not all shuffled alike."""
     if "error" in got:
         return 0.0, [got["error"]]
-    entry = got["sets"][0]
+    entry = asked_sets(check, got)[0]
     if structure_problems(entry):
         return 0.0, ["the sets are not multi-jittered (the test of their structure says how), so their "
                      "shuffling cannot be judged"]
@@ -118,7 +132,11 @@ def judge_seeded(check, got, reference):
     """The same seed twice gives the same points; another seed other points."""
     if "error" in got:
         return 0.0, [got["error"]]
+    asked = check.probe[2]
     runs = got["runs"]
+    if [run["seed"] for run in runs] != list(asked["seeds"]) or any(
+            len(run["points"]) != asked["num_samples"] * asked["num_sets"] for run in runs):
+        raise ValueError("the runs are not those the test asked for")
     first, again, other = runs[0]["points"], runs[1]["points"], runs[2]["points"]
     if first != again:
         return 0.0, ["MultiJittered(seed=%d) made other points the second time: draw every random number from "
@@ -159,6 +177,9 @@ def judge_disk(check, got, reference):
             got["n_bad"], got["count"], "; ".join("(%s, %s) to %s" % (fmt(a[0]), fmt(a[1]), fmt(b))
                                                   for a, b in got["bad"]))]
     counts = np.asarray(got["counts"], dtype=np.float64)
+    if counts.shape != (8, 8) or got["count"] != check.probe[2]["count"] or counts.sum() != got["count"] \
+            or (counts < 0).any():
+        raise ValueError("the counts are not of the points the test asked for")
     p = chi_square_p(counts)
     if p >= CHI_SQUARE_ALPHA:
         return 1.0, []

@@ -49,7 +49,11 @@ def worst_cell(counts) -> tuple:
 
 def mean_z(total: float, squares: float, count: int, truth: float) -> tuple:
     """(mean, standard error, z) of ``count`` samples given their sum and sum of squares,
-    against ``truth``; z is 0 or infinity where the samples have no spread."""
+    against ``truth``; z is 0 or infinity where the samples have no spread, and infinity where
+    a sum is not a finite number (a NaN sample makes both NaN, and NaN is beyond no limit) or
+    there are no samples."""
+    if not (math.isfinite(total) and math.isfinite(squares)) or count < 1:
+        return math.nan, math.nan, math.inf
     mean = total / count
     variance = max(squares / count - mean * mean, 0.0) * count / max(count - 1, 1)
     error = float(np.sqrt(variance / count))
