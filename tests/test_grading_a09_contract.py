@@ -126,8 +126,9 @@ def _uniform(u, v):
     return (s * math.cos(2 * math.pi * u), s * math.sin(2 * math.pi * u), c), 1.0 / (2.0 * math.pi)
 
 
-def _judge_density(sample, normal=(0.0, 0.6, 0.8), count=8192):
-    answer = {"sets": [{"normal": list(normal), "samples": _samples(normal, count, 3, sample)}]}
+def _judge_density(sample, normal=(0.0, 0.6, 0.8)):
+    # as many samples as the test draws: the judge takes no other count
+    answer = {"sets": [{"normal": list(normal), "samples": _samples(normal, DENSITY.probe[2]["count"], 3, sample)}]}
     return judges.judge_pdf_density(DENSITY, answer, {"drawn": {"normals": [list(normal)]}})
 
 

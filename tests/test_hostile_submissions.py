@@ -690,25 +690,59 @@ def test_an_answer_the_grader_cannot_parse_or_write_costs_that_test_only(isolati
     if attack == "surrogate":
         assert "? in the message" in summary
 
-def test_sets_the_test_did_not_ask_for_score_nothing(isolation, tmp_path):
+def test_sets_or_a_histogram_in_place_of_what_the_test_asked_for_score_nothing(isolation, tmp_path):
     # The a10 judges took each answer's own word for its sets' sizes: an answer written into
     # the pipe by the stub (not by the probe) with sets of one point, which have every
     # structure, scored the tests of the sampler's structure, its shuffles and its seeds; and
     # millions of such sets took the judge minutes.
+    # Likewise the disk's test took the probe's histogram, whose truth is flat.
     forged = {"sets": [{"num_samples": 1, "num_sets": 1, "points": [[0.5, 0.5]]}] * 4,
               "runs": [{"seed": 10, "points": [[0.5, 0.5]]}, {"seed": 10, "points": [[0.5, 0.5]]},
-                       {"seed": 17, "points": [[0.25, 0.25]]}]}
+                       {"seed": 17, "points": [[0.25, 0.25]]}],
+              "counts": [[128] * 8] * 8, "count": 8192, "n_bad": 0, "bad": [], "points": [[0.0, 0.0]] * 64}
     files = dict(student_files("a10"))
-    stub = "        raise NotImplementedError('a10: MultiJittered.generate_samples')\n"
-    attack = ("        import json, os, sys\n"
-              "        os.write(int(sys.argv[4]), json.dumps(%r).encode())\n"
-              "        os._exit(0)\n" % (forged,))
-    assert files["sampling/multi_jittered.py"].count(stub) == 1
-    files["sampling/multi_jittered.py"] = files["sampling/multi_jittered.py"].replace(stub, attack + stub)
+    for relpath, stub in (("sampling/multi_jittered.py",
+                           "        raise NotImplementedError('a10: MultiJittered.generate_samples')\n"),
+                          ("sampling/maps.py", "    raise NotImplementedError('a10: concentric_map')\n")):
+        indent = stub[:len(stub) - len(stub.lstrip())]
+        attack = "".join(indent + line + "\n" for line in (
+            "import json, os, sys", "os.write(int(sys.argv[4]), json.dumps(%r).encode())" % (forged,), "os._exit(0)"))
+        assert files[relpath].count(stub) == 1
+        files[relpath] = files[relpath].replace(stub, attack + stub)
     write_files(files, tmp_path / "sub")
-    only = tuple(c.slug for c in checks_for("a10_samplers") if c.number in ("10.1", "10.2", "10.3", "10.6"))
+    only = tuple(c.slug for c in checks_for("a10_samplers") if c.number in ("10.1", "10.2", "10.3", "10.5", "10.6"))
     result = grade("a10", tmp_path / "sub", None, only=only)
-    assert [t.number for t in result.tests] == ["10.1", "10.2", "10.3", "10.6"]
+    assert [t.number for t in result.tests] == ["10.1", "10.2", "10.3", "10.5", "10.6"]
+    for test in result.tests:
+        assert test.score == 0, (test.number, test.output)
+        assert "not in the form the test writes" in test.output, test.output
+
+def test_a_histogram_or_a_sum_in_place_of_the_samples_scores_nothing(isolation, tmp_path):
+    # The a09 probes once sent the judge their samples binned or summed, and a stub that
+    # wrote the known truths (flat counts, the integrals' values) into the pipe, or put a
+    # probe of its own in the probe's place, scored the tests of the map and of sample_f. The
+    # judge now bins and sums every sample itself, and takes as many as the test drew.
+    flat = {"sets": [{"axis": [0.0, 0.0, 1.0], "e": 1.0, "counts": [[128] * 8] * 8, "bad": [], "n_bad": 0,
+                      "directions": [[0.0, 0.0, 1.0]] * 64}]}
+    truths = {"1": 1.0, "cos": 2.0 / 3.0, "cos^2": 0.5, "lateral": 2.0 / (3.0 * 3.141592653589793)}
+    summed = {"sets": [{"normal": n, "rho": [r] * 3, "f": [r / 3.141592653589793] * 3, "count": 8192, "used": 8192,
+                        "directions": flat["sets"][0], "bad_pdf": [], "n_bad_pdf": 0,
+                        "sums": {g: [[8192 * t, 8192 * t * t]] * 3 for g, t in truths.items()},
+                        "samples": [[r / 3.141592653589793] * 3 + [0.0, 0.0, 1.0, 1.0 / 3.141592653589793]] * 64}
+                       for n, r in (([0.0, 0.0, 1.0], 0.5), ([0.0, 0.0, -1.0], 0.8))]}
+    files = dict(student_files("a09"))
+    for relpath, stub, answer in (
+            ("sampling/maps.py", "    raise NotImplementedError('a09: hemisphere_map')\n", flat),
+            ("brdfs/lambertian.py", "        raise NotImplementedError('a09: Lambertian.sample_f')\n", summed)):
+        indent = stub[:len(stub) - len(stub.lstrip())]
+        attack = "".join(indent + line + "\n" for line in (
+            "import json, os, sys", "os.write(int(sys.argv[4]), json.dumps(%r).encode())" % (answer,), "os._exit(0)"))
+        assert files[relpath].count(stub) == 1
+        files[relpath] = files[relpath].replace(stub, attack + stub)
+    write_files(files, tmp_path / "sub")
+    only = tuple(c.slug for c in checks_for("a09_path_tracing") if c.number in ("9.1", "9.3"))
+    result = grade("a09", tmp_path / "sub", None, only=only)
+    assert [t.number for t in result.tests] == ["9.1", "9.3"]
     for test in result.tests:
         assert test.score == 0, (test.number, test.output)
         assert "not in the form the test writes" in test.output, test.output

@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from ..probes.a09 import BELOW, UNIT
+from ..probes.a09 import BELOW, UNIT, bin_hemisphere, summarize_sample_f
 from . import Check, close, fmt, register
 from .statistics import (CHI_SQUARE_ALPHA, EXACT, PIXEL_FRACTION, Z_LIMIT, Z_PIXEL, chi_square_p, image_z, mean_z,
                          worst_cell)
@@ -85,9 +85,11 @@ def judge_hemisphere(check, got, reference):
     if len(sets) != len(reference["exponents"]):
         return 0.0, ["the test stopped before it tried every exponent"]
     right, lines = 0, []
-    for binned, e in zip(sets, reference["exponents"]):
-        if float(binned["e"]) != float(e):
+    asked = check.probe[2]
+    for entry, e in zip(sets, reference["exponents"]):
+        if float(entry["e"]) != float(e):
             return 0.0, ["the test's answer was not in the form the test writes"]
+        binned = bin_hemisphere(entry["directions"], e, asked["count"], asked["seed"])
         ok, more = _density_lines(binned, "hemisphere_map(x, y, %s)" % fmt(float(e)), reference["count"])
         right += ok
         lines += more
@@ -141,8 +143,10 @@ def judge_sample_f(check, got, reference):
     if len(sets) != len(reference["sets"]):
         return 0.0, ["the test stopped before it tried every normal"]
     right, lines = 0, []
+    asked = check.probe[2]
     for s, want in zip(sets, reference["sets"]):
         n, rho = want["normal"], want["rho"]
+        s = summarize_sample_f(n, rho, s["samples"], asked["count"], asked["seed"])
         label = "Lambertian(%s).sample_f(n = %s, ...)" % (fmt(rho), fmt(n))
         problems = _bad_lines(s["directions"], "directions w_i")
         f = s.get("f")
@@ -484,6 +488,8 @@ def judge_pdf_density(check, got, reference):
         return 0.0, ["the test stopped before it tried every normal"]
     right, lines = 0, []
     for s, n in zip(sets, normals):
+        if len(s["samples"]) != check.probe[2]["count"]:     # the count drawn, not the answer's own
+            raise ValueError("not the samples the test drew")
         stats = density_stats(n, s["samples"])
         label = "Lambertian.sample_f about n = %s (drawn for this grading), %d directions" % (fmt(n), stats["count"])
         problems = density_problems(stats)

@@ -3,11 +3,15 @@ Lambertian BRDF (``Lambertian.sample_f``) and images path traced with them (Suff
 and 26; 02562 worksheet 7).
 
 The tests are statistical: a probe draws many samples with the student's code from uniform
-numbers of its own fixed stream and returns what the judge needs, binned or summed, never a
-verdict. Directions are binned by t = cos(theta)^(e + 1), which is uniform in [0, 1) for the
-density (e + 1) / (2 pi) cos^e(theta), and by phi; the judge applies a chi-square test. The
-estimator of the reflected light is summed as mean and variance of f (n . w_i) g(w_i) / pdf
-for a few functions g whose integrals are known exactly. Images come back as per-pixel
+numbers of its own fixed stream and returns every one of them, never a verdict, nor a
+histogram or a sum: the probe runs in the student's interpreter, whose code could replace it,
+and a histogram or a sum is easily forged where its truth is known exactly (flat counts, the
+integral's value), every sample only by drawing them from the right density. The grader bins
+and sums them with this module's functions (bin_hemisphere, summarize_sample_f). Directions
+are binned by t = cos(theta)^(e + 1), which is uniform in [0, 1) for the density (e + 1) /
+(2 pi) cos^e(theta), and by phi; the judge applies a chi-square test. The estimator of the
+reflected light is summed as mean and variance of f (n . w_i) g(w_i) / pdf for a few
+functions g whose integrals are known exactly. Images come back as per-pixel
 means and variances over the samples. The contract's probes return what the code gave, point
 by point: hemisphere_map twice at each point, and sample_f's every direction with its pdf."""
 from __future__ import annotations
@@ -87,15 +91,28 @@ def maps(rt):
 
 
 def observe_hemisphere(rt, exponents, count: int, seed: int):
-    """hemisphere_map(x, y, e) for ``count`` uniform points per exponent, binned about +z."""
+    """hemisphere_map(x, y, e) for ``count`` uniform points per exponent: every direction."""
     out = []
     for e in exponents:
-        binned = Binned([0.0, 0.0, 1.0], float(e))
-        for x, y in _uniforms(count, seed):
-            binned.add(vec(maps(rt).hemisphere_map(x, y, float(e)), "hemisphere_map(%r, %r, %r)" % (x, y, e)),
-                       (x, y))
-        out.append(binned.result())
+        out.append({"e": float(e), "directions": [
+            vec(maps(rt).hemisphere_map(x, y, float(e)), "hemisphere_map(%r, %r, %r)" % (x, y, e))
+            for x, y in _uniforms(count, seed)]})
     return {"sets": out}
+
+
+def _count_of(samples, count: int, what: str) -> list:
+    if not isinstance(samples, list) or len(samples) != count:
+        raise ValueError("%s: not the %d samples the test drew" % (what, count))
+    return samples
+
+
+def bin_hemisphere(directions, e: float, count: int, seed: int) -> dict:
+    """The grader's side of observe_hemisphere: the ``count`` directions (those of the
+    uniform points of ``seed``) binned about +z (Binned.result)."""
+    binned = Binned([0.0, 0.0, 1.0], float(e))
+    for d, uv in zip(_count_of(directions, count, "hemisphere_map"), _uniforms(count, seed)):
+        binned.add([float(c) for c in d], uv)
+    return binned.result()
 
 
 def observe_hemisphere_points(rt, points):
@@ -166,40 +183,53 @@ def observe_sample_directions(rt, normals, count: int, seed: int):
 
 def observe_sample_f(rt, normals, rhos, count: int, seed: int):
     """Lambertian(1, rho).sample_f(sr, wo, u, v), sr.normal = n, for ``count`` uniform (u, v)
-    per normal: the
-    directions binned (e = 1, the cosine-weighted density, for the hint only), the bad
-    ones, f and its difference from rho / pi, and per g of G_NAMES the sum and the sum of
-    squares of f (n . w_i) g(w_i) / pdf divided by rho (channel by channel)."""
+    per normal: every sample as returned, [f_r, f_g, f_b, x, y, z, pdf] (summarize_sample_f
+    makes what the judge reads of them)."""
     out = []
     for n, rho in zip(normals, rhos):
-        binned = Binned(list(n), 1.0)
-        lateral = _frame(n)[0]
-        sums = {g: [[0.0, 0.0] for _ in range(3)] for g in G_NAMES}
-        f_seen, bad_pdf, n_bad_pdf, used = None, [], 0, 0
         brdf, sr = _lambertian(rt, n, rho)
         wo = sr.normal
+        samples = []
         for u, v in _uniforms(count, seed):
             f, d, pdf = _sample_f(brdf, sr, wo, u, v)
-            if f_seen is None:
-                f_seen = f
-            if not binned.add(d, (u, v)):
-                continue
-            if not (math.isfinite(pdf) and pdf > 0.0):
-                n_bad_pdf += 1
-                if len(bad_pdf) < SHOWN:
-                    bad_pdf.append([[u, v], d, pdf])
-                continue
-            used += 1
-            c = max(_dot(d, n), 0.0)
-            for g in G_NAMES:
-                w = _g(g, c, d, lateral) * c / pdf
-                for k in range(3):
-                    x = f[k] * w / rho[k]
-                    sums[g][k][0] += x
-                    sums[g][k][1] += x * x
-        out.append({"normal": list(n), "rho": list(rho), "f": f_seen, "count": count, "used": used,
-                    "directions": binned.result(), "bad_pdf": bad_pdf, "n_bad_pdf": n_bad_pdf, "sums": sums})
+            samples.append(f + d + [pdf])
+        out.append({"normal": list(n), "rho": list(rho), "samples": samples})
     return {"sets": out}
+
+
+def summarize_sample_f(n, rho, samples, count: int, seed: int) -> dict:
+    """The grader's side of observe_sample_f for the normal ``n`` and albedo ``rho`` the test
+    asked for: the directions binned (e = 1, the cosine-weighted density, for the hint only),
+    the bad ones, the first f, and per g of G_NAMES the sum and the sum of squares of f (n .
+    w_i) g(w_i) / pdf divided by rho (channel by channel)."""
+    binned = Binned(list(n), 1.0)
+    lateral = _frame(n)[0]
+    sums = {g: [[0.0, 0.0] for _ in range(3)] for g in G_NAMES}
+    f_seen, bad_pdf, n_bad_pdf, used = None, [], 0, 0
+    for sample, (u, v) in zip(_count_of(samples, count, "sample_f"), _uniforms(count, seed)):
+        if not isinstance(sample, list) or len(sample) != 7:
+            raise ValueError("sample_f: a sample is not [f, w_i, pdf]")
+        values = [float(c) for c in sample]
+        f, d, pdf = values[:3], values[3:6], values[6]
+        if f_seen is None:
+            f_seen = f
+        if not binned.add(d, (u, v)):
+            continue
+        if not (math.isfinite(pdf) and pdf > 0.0):
+            n_bad_pdf += 1
+            if len(bad_pdf) < SHOWN:
+                bad_pdf.append([[u, v], d, pdf])
+            continue
+        used += 1
+        c = max(_dot(d, n), 0.0)
+        for g in G_NAMES:
+            w = _g(g, c, d, lateral) * c / pdf
+            for k in range(3):
+                x = f[k] * w / rho[k]
+                sums[g][k][0] += x
+                sums[g][k][1] += x * x
+    return {"normal": list(n), "rho": list(rho), "f": f_seen, "count": count, "used": used,
+            "directions": binned.result(), "bad_pdf": bad_pdf, "n_bad_pdf": n_bad_pdf, "sums": sums}
 
 
 # --- images ----------------------------------------------------------------------------------

@@ -4,9 +4,9 @@
 
 A probe returns what the student's code made, never a verdict: every set's points (the judge
 checks the structure), the points of samplers made twice with one seed and once with another,
-the map at chosen points, and many uniformly drawn points of the square mapped and binned on
-the disk by r^2 and phi (uniform on the disk makes both uniform; the judge applies a
-chi-square test)."""
+the map at chosen points, and many uniformly drawn points of the square mapped (the grader
+bins them on the disk by r^2 and phi, bin_disk: uniform on the disk makes both uniform; the
+judge applies a chi-square test)."""
 from __future__ import annotations
 
 import importlib
@@ -71,20 +71,36 @@ def observe_concentric(rt, points):
 
 
 def observe_concentric_binned(rt, count: int, seed: int):
-    """concentric_map of ``count`` uniform points of the square, binned by r^2 and phi; the
-    points off the unit disk counted (and the first few kept)."""
+    """concentric_map of ``count`` uniform points of the square (stream ``seed``): every point
+    it gave (bin_disk bins them on the grader's side: a histogram, whose truth is flat, is
+    easily forged by code that replaces this probe; the points are not)."""
     stream = random.Random(seed)
-    counts = [[0] * PHI_BINS for _ in range(R_BINS)]
-    bad, n_bad = [], 0
+    out = []
     for _ in range(count):
         x, y = stream.random(), stream.random()
         p = _disk_point(_maps(rt).concentric_map(x, y), "concentric_map(%r, %r)" % (x, y))
-        r2 = p["x"] * p["x"] + p["y"] * p["y"]
+        out.append([p["x"], p["y"]])
+    return {"points": out}
+
+
+def bin_disk(points, count: int, seed: int) -> dict:
+    """The grader's side of observe_concentric_binned: the ``count`` mapped points binned by r^2
+    and phi; the points off the unit disk counted (and the first few kept with the points of
+    the square they came from)."""
+    if not isinstance(points, list) or len(points) != count:
+        raise ValueError("concentric_map: not the %d points the test drew" % count)
+    stream = random.Random(seed)
+    counts = [[0] * PHI_BINS for _ in range(R_BINS)]
+    bad, n_bad = [], 0
+    for point in points:
+        x, y = stream.random(), stream.random()
+        px, py = float(point[0]), float(point[1])
+        r2 = px * px + py * py
         if not (math.isfinite(r2) and r2 <= 1.0 + 1e-12):
             n_bad += 1
             if len(bad) < SHOWN:
-                bad.append([[x, y], [p["x"], p["y"]]])
+                bad.append([[x, y], [px, py]])
             continue
-        phi = math.atan2(p["y"], p["x"]) % (2.0 * math.pi)
+        phi = math.atan2(py, px) % (2.0 * math.pi)
         counts[min(int(r2 * R_BINS), R_BINS - 1)][min(int(phi / (2.0 * math.pi) * PHI_BINS), PHI_BINS - 1)] += 1
     return {"counts": counts, "bad": bad, "n_bad": n_bad, "count": count}
