@@ -747,6 +747,33 @@ def test_a_histogram_or_a_sum_in_place_of_the_samples_scores_nothing(isolation, 
         assert test.score == 0, (test.number, test.output)
         assert "not in the form the test writes" in test.output, test.output
 
+def test_a_visible_test_cannot_read_the_hidden_tests_inputs(isolation, tmp_path):
+    # The hidden tests' probe modules and the probes' table of every test's inputs were in
+    # every test's sandbox: a visible test's code read them and showed them in its message
+    # (a hidden test's inputs, to special-case them in the next submission). The table now
+    # holds the visible tests only, and the hidden modules are readable to the sandbox user
+    # while a hidden test runs (the grader runs as root here; as another user, student code
+    # runs as that user and can read them).
+    hidden = sorted(c.slug for c in checks_for("a03_intersections") if c.visibility != "visible")
+    attack = """
+        import glob, json, os, sys
+        import rtfgu_probes
+        folder = os.path.dirname(rtfgu_probes.__file__)
+        table = json.load(open(os.path.join(folder, "tests.json")))
+        if set(table["a03_intersections"]) & set(%r):
+            raise RuntimeError("LEAKED: a hidden test's inputs in the probes' table")
+        if "rtfgu_probes.a03_hidden" not in sys.modules:      # a visible test
+            for path in glob.glob(os.path.join(folder, "*_hidden.py")) + glob.glob(
+                    os.path.join(folder, "__pycache__", "*_hidden.*.pyc")):
+                try:
+                    open(path, "rb").read()
+                except OSError:
+                    continue
+                raise RuntimeError("LEAKED: %%s is readable in a visible test" %% os.path.basename(path))
+        """ % (hidden,)
+    result = _grade_attack(tmp_path, isolation, attack)
+    assert _scores(result) == honest_scores(isolation)
+
 def test_no_process_of_the_sandbox_user_is_left_after_its_tests_not_even_a_zombie(bwrap, tmp_path):
     # Killing a test's namespace leaves processes without a parent; in a container PID 1 may
     # never reap them, and as zombies of the sandbox user they would count towards its

@@ -24,7 +24,8 @@ from .assignments import get_assignment
 from .checks import checks_for, drawn_inputs, judge_cases
 from .checks.images import judge_image, neighbourhood_difference  # noqa: F401  (tests import it here)
 from .results import Result, TestResult
-from .sandbox import choose_isolation, hidden_from_sandbox_user, prepare, run_child, work_folder
+from .sandbox import (choose_isolation, hidden_from_sandbox_user, hidden_probes_readable, prepare, run_child,
+                      work_folder)
 from .timeouts import STOPPED, stopped_entry, stuck_at, where
 
 REFERENCE_DIR = Path(__file__).resolve().parent / "reference"
@@ -54,6 +55,7 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
     isolation = choose_isolation()
     with hidden_from_sandbox_user(isolation), work_folder("rtfgu-ref-") as tmp:
         ws = prepare(a, None, tmp / "work")
+        hidden_probes_readable(ws, True)         # the solution's run: every test's probe
         for check in checks_for(a.id):
             if check.draw is not None:            # one draw, for the student checker
                 observations[check.slug] = drawn_inputs(check, random.Random(0))[1]
@@ -61,7 +63,7 @@ def compute_references(assignment, time_limit: float = 120.0) -> list:
             if check.reference is not None:       # an exact truth, or the staff renderer's estimate
                 observations[check.slug] = check.reference()
                 continue
-            child = run_child(ws, tmp / "scratch" / check.slug, ["check", a.id, check.slug],
+            child = run_child(ws, tmp / "scratch" / check.slug, probe_command(a, check),
                               isolation=isolation, time_limit=time_limit, memory_mb=0)
             if child.status != "ok" or "error" in child.data or any("error" in c for c in child.data.get("cases", [])):
                 raise RuntimeError("the solution fails %s (%s): %s %s %s" % (
@@ -191,11 +193,21 @@ def grade(assignment, submission, out_dir=None, *, fmt_name: str = "gradescope",
     return result
 
 
+def probe_command(a, check) -> list:
+    """The boot command of ``check``'s probe: a visible test's by its slug (boot.py looks it up
+    in the probes' table, as the student checker does), a hidden test's with its inputs, which
+    the table the sandbox holds leaves out."""
+    if check.visibility == "visible":
+        return ["check", a.id, check.slug]
+    module, function = check.probe[:2]
+    return ["probe", module, function, json.dumps(check.probe[2] if len(check.probe) > 2 else {})]
+
+
 def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_mb, output_limit, log, rng,
                stopped=()):
     """(the test's result, where a time limit found the student's code or None)."""
     time_limit = check.time_limit or time_limit
-    probe, reference = ["check", a.id, check.slug], refs[check.slug]
+    probe, reference = probe_command(a, check), refs[check.slug]
     if check.draw is not None:
         (module, function, kwargs), reference = drawn_inputs(check, rng)
         probe = ["probe", module, function, json.dumps(kwargs)]
@@ -212,8 +224,12 @@ def _run_check(a, check, ws, tmp, refs, out_dir, isolation, time_limit, memory_m
         output = ""
     else:
         memory = memory_mb if check.memory_mb is None else check.memory_mb
-        child = run_child(ws, tmp / "scratch" / check.slug, probe, isolation=isolation,
-                          time_limit=time_limit, memory_mb=memory, output_limit=output_limit, stopped=stopped)
+        hidden_probes_readable(ws, check.visibility != "visible")
+        try:
+            child = run_child(ws, tmp / "scratch" / check.slug, probe, isolation=isolation,
+                              time_limit=time_limit, memory_mb=memory, output_limit=output_limit, stopped=stopped)
+        finally:
+            hidden_probes_readable(ws, False)
         seconds, output = child.seconds, child.output
         if child.status != "ok":
             failure, cause = _child_failure(child, time_limit, memory)

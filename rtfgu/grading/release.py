@@ -143,11 +143,14 @@ def build_package(dest, reveal=(), package_dir: Path = PACKAGE_DIR) -> Path:
     return root
 
 
-def probe_files(package_dir: Path = PACKAGE_DIR, keep_hidden: bool = True) -> dict:
+def probe_files(package_dir: Path = PACKAGE_DIR, keep_hidden: bool = True, hidden_table: bool | None = None) -> dict:
     """name -> text of the code that runs next to student code: the modules of
     rtfgu/grading/probes (without the hidden tests' ``*_hidden.py`` unless ``keep_hidden``)
     and ``tests.json``, each test's probe by assignment and slug (boot.py's ``check``
-    command reads it). Copied into one folder, they form a package of any name."""
+    command reads it), the hidden tests' among them where ``hidden_table`` (by default
+    ``keep_hidden``; the grader leaves them out: their inputs are in its own call of the probe,
+    and every test's code could read the table). Copied into one folder, they form a package
+    of any name."""
     from .checks import checks_for
 
     folder = Path(package_dir) / "grading" / "probes"
@@ -156,7 +159,7 @@ def probe_files(package_dir: Path = PACKAGE_DIR, keep_hidden: bool = True) -> di
     table = {}
     for a in ASSIGNMENTS.values():
         table[a.id] = {c.slug: list(c.probe) for c in checks_for(a.id)
-                       if keep_hidden or c.visibility == "visible"}
+                       if (keep_hidden if hidden_table is None else hidden_table) or c.visibility == "visible"}
     files["tests.json"] = json.dumps(table, indent=1, sort_keys=True) + "\n"
     return files
 

@@ -104,7 +104,7 @@ def prepare(assignment, submission, tmp, package_dir: Path = PACKAGE_DIR, reveal
     build_package(package, reveal, package_dir)
     probes = root / "probes" / PROBES
     probes.mkdir(parents=True)
-    for name, text in probe_files(package_dir).items():
+    for name, text in probe_files(package_dir, hidden_table=False).items():
         (probes / name).write_text(text)
     ws = Workspace(root, package, probes.parent)
     if submission is not None:
@@ -133,6 +133,7 @@ def prepare(assignment, submission, tmp, package_dir: Path = PACKAGE_DIR, reveal
                    if submission is not None else ())
     write_bytecode(probes)
     _close_tree(root)
+    hidden_probes_readable(ws, False)
     return ws
 
 
@@ -151,6 +152,19 @@ def _close_tree(root: Path) -> None:
             os.chmod(path, 0o750 if folder else 0o640)
         else:
             os.chmod(path, 0o700 if folder else 0o600)
+
+
+def hidden_probes_readable(ws: Workspace, readable: bool) -> None:
+    """Let the sandbox group read the hidden tests' probe modules (``*_hidden.py`` and their
+    bytecode) only while a hidden test runs (the grader calls this around each test): a
+    visible test's code could otherwise read a hidden test's inputs and show them in its
+    message. Where the grader is not root, student code runs as the grader's user, who
+    can read them in any case."""
+    if _sandbox_group() is None:
+        return
+    probes = ws.probes / PROBES
+    for path in list(probes.glob("*_hidden.py")) + list(probes.glob("__pycache__/*_hidden.*.pyc")):
+        os.chmod(path, 0o640 if readable else 0o600)
 
 
 def _sandbox_group():
