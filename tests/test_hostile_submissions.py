@@ -774,6 +774,33 @@ def test_a_visible_test_cannot_read_the_hidden_tests_inputs(isolation, tmp_path)
     result = _grade_attack(tmp_path, isolation, attack)
     assert _scores(result) == honest_scores(isolation)
 
+def test_a_bvh_that_tests_every_shape_through_references_taken_at_import_loses_the_traversal_test(
+        isolation, tmp_path):
+    # a08's hidden traversal test counts box and shape tests through wrappers of BBox.hit and
+    # of the shapes' intersect_p. A BVH.intersect that ignored its tree and called the shapes'
+    # tests through references taken when its module was imported (before the wrapping), with
+    # one counted box test a ray, passed it with its shape tests uncounted. The shapes' tests
+    # are now wrapped before the student's module is imported.
+    files = dict(solution_files("a08"))
+    head = "        if self.root is None:\n            return best\n        stack = [self.root]\n"
+    assert files["accelerators/bvh.py"].count(head) == 1
+    files["accelerators/bvh.py"] = files["accelerators/bvh.py"].replace(head, (
+        "        if self.root is None:\n            return best\n"
+        "        self.root.bbox.hit(ray)\n"
+        "        for i, shape in enumerate(self.shapes):\n"
+        "            if _RAW[type(shape)](shape, ray):\n"
+        "                best = i\n"
+        "        return best\n")) + (
+        "\n\nfrom ..shapes.sphere import Sphere as _S\n"
+        "from ..shapes.triangle import Triangle as _T\n"
+        "_RAW = {_S: _S.intersect_p, _T: _T.intersect_p}\n")
+    write_files(files, tmp_path / "sub")
+    traversal = [c for c in checks_for("a08_bvh") if c.probe[:2] == ("a08_hidden", "observe_traversal")]
+    assert len(traversal) == 1
+    result = grade("a08", tmp_path / "sub", None, only=(traversal[0].slug,))
+    assert result.tests[0].score == 0, result.tests[0].output
+    assert "shape tests over its" in result.tests[0].output, result.tests[0].output
+
 def test_no_process_of_the_sandbox_user_is_left_after_its_tests_not_even_a_zombie(bwrap, tmp_path):
     # Killing a test's namespace leaves processes without a parent; in a container PID 1 may
     # never reap them, and as zombies of the sandbox user they would count towards its

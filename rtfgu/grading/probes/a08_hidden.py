@@ -240,45 +240,53 @@ def _tree(bvh, shapes) -> dict | None:
         return None
 
 
-def traversal_cases(rt, scene: str, rays, scene_data):
+def traversal_cases(rt, acc, counter, scene: str, rays, scene_data):
     """For each ray of ``rays`` on ``scene_data``: BVH.intersect's answer and what it cost
-    (Counter), the tree built once by the student's BVH."""
-    acc = accelerators(rt)
+    (``counter``, whose wrappers observe_traversal has put in place), the tree built once by
+    the student's BVH."""
     shapes = build_shapes(rt, scene_data)
-    counter = Counter()
-    patched = [(acc.BBox, "hit", acc.BBox.hit, "box")]
-    for cls in {type(shape) for shape in shapes}:
-        patched.append((cls, "intersect_p", cls.intersect_p, "shape"))
     cases = Cases()
-    try:
-        for cls, name, method, kind in patched:
-            setattr(cls, name, _counting(counter, method, kind))
-        built = []
-        for o, d, tmin, tmax, what in rays:
-            def run(o=o, d=d, tmin=tmin, tmax=tmax):
-                if not built:
-                    bvh = acc.BVH(shapes)
-                    built.append((bvh, _tree(bvh, shapes)))
-                bvh, tree = built[0]
-                F = rt.Float3
-                ray = rt.Ray(F(*o), F(*d), tmin, tmax)
-                counter.start(tree)
-                try:
-                    shape = bvh.intersect(ray)
-                finally:
-                    cost = counter.stop()
-                out = {"shape": shape_number(shape, len(scene_data)), "ray.tmax": num(ray.tmax, "ray.tmax")}
-                out.update(cost)
-                return out
-            cases.run("the %s scene (%d shapes), %s (%s)" % (scene, len(scene_data), ray_label(o, d, tmin, tmax), what),
-                      run, scene=scene, o=list(o), d=list(d), tmin=tmin, tmax=tmax)
-    finally:
-        for cls, name, method, _ in patched:
-            setattr(cls, name, method)
+    built = []
+    for o, d, tmin, tmax, what in rays:
+        def run(o=o, d=d, tmin=tmin, tmax=tmax):
+            if not built:
+                bvh = acc.BVH(shapes)
+                built.append((bvh, _tree(bvh, shapes)))
+            bvh, tree = built[0]
+            F = rt.Float3
+            ray = rt.Ray(F(*o), F(*d), tmin, tmax)
+            counter.start(tree)
+            try:
+                shape = bvh.intersect(ray)
+            finally:
+                cost = counter.stop()
+            out = {"shape": shape_number(shape, len(scene_data)), "ray.tmax": num(ray.tmax, "ray.tmax")}
+            out.update(cost)
+            return out
+        cases.run("the %s scene (%d shapes), %s (%s)" % (scene, len(scene_data), ray_label(o, d, tmin, tmax), what),
+                  run, scene=scene, o=list(o), d=list(d), tmin=tmin, tmax=tmax)
     return cases.result()
 
 
 def observe_traversal(rt):
-    return _join(traversal_cases(rt, "grid", nearest_rays(), VISIBLE_SCENES["grid"]()),
-                 traversal_cases(rt, "sheet", not_first_rays(), VISIBLE_SCENES["sheet"]()),
-                 traversal_cases(rt, "random", random_rays(2, 150), SCENES["random"]()))
+    """traversal_cases on three scenes. The shapes' intersect_p are wrapped before the
+    student's accelerators are imported (nothing imports them before this probe), so that a
+    reference to a shape's test taken when the student's module is imported is the counted
+    one: a BVH that called the originals through such references, ignoring its tree, once
+    passed this test with its shape tests uncounted. BBox, the student's own, is wrapped once
+    imported. One counter and one set of wrappers serve all three scenes, and the originals
+    are put back at the end."""
+    counter = Counter()
+    patched = [(cls, "intersect_p", cls.intersect_p, "shape") for cls in (rt.Sphere, rt.Triangle)]
+    try:
+        for cls, name, method, kind in patched:
+            setattr(cls, name, _counting(counter, method, kind))
+        acc = accelerators(rt)
+        patched.append((acc.BBox, "hit", acc.BBox.hit, "box"))
+        setattr(acc.BBox, "hit", _counting(counter, acc.BBox.hit, "box"))
+        return _join(traversal_cases(rt, acc, counter, "grid", nearest_rays(), VISIBLE_SCENES["grid"]()),
+                     traversal_cases(rt, acc, counter, "sheet", not_first_rays(), VISIBLE_SCENES["sheet"]()),
+                     traversal_cases(rt, acc, counter, "random", random_rays(2, 150), SCENES["random"]()))
+    finally:
+        for cls, name, method, _ in reversed(patched):
+            setattr(cls, name, method)
