@@ -690,6 +690,27 @@ def test_an_answer_the_grader_cannot_parse_or_write_costs_that_test_only(isolati
     if attack == "surrogate":
         assert "? in the message" in summary
 
+
+def _stubs_answering_score_nothing(tmp_path, aid: str, numbers, answers) -> None:
+    """The stubs of assignment ``aid``, each (file, stub line, answer) of ``answers`` writing
+    its answer into the pipe and exiting before its stub line: tests ``numbers`` (run alone)
+    each score nothing, their answers not in the form the test writes."""
+    files = dict(student_files(aid))
+    for relpath, stub, answer in answers:
+        indent = stub[:len(stub) - len(stub.lstrip())]
+        attack = "".join(indent + line + "\n" for line in (
+            "import json, os, sys", "os.write(int(sys.argv[4]), json.dumps(%r).encode())" % (answer,), "os._exit(0)"))
+        assert files[relpath].count(stub) == 1
+        files[relpath] = files[relpath].replace(stub, attack + stub)
+    write_files(files, tmp_path / "sub")
+    only = tuple(c.slug for c in checks_for(aid) if c.number in numbers)
+    result = grade(aid[:3], tmp_path / "sub", None, only=only)
+    assert [t.number for t in result.tests] == list(numbers)
+    for test in result.tests:
+        assert test.score == 0, (test.number, test.output)
+        assert "not in the form the test writes" in test.output, test.output
+
+
 def test_sets_or_a_histogram_in_place_of_what_the_test_asked_for_score_nothing(isolation, tmp_path):
     # The a10 judges took each answer's own word for its sets' sizes: an answer written into
     # the pipe by the stub (not by the probe) with sets of one point, which have every
@@ -700,22 +721,11 @@ def test_sets_or_a_histogram_in_place_of_what_the_test_asked_for_score_nothing(i
               "runs": [{"seed": 10, "points": [[0.5, 0.5]]}, {"seed": 10, "points": [[0.5, 0.5]]},
                        {"seed": 17, "points": [[0.25, 0.25]]}],
               "counts": [[128] * 8] * 8, "count": 8192, "n_bad": 0, "bad": [], "points": [[0.0, 0.0]] * 64}
-    files = dict(student_files("a10"))
-    for relpath, stub in (("sampling/multi_jittered.py",
-                           "        raise NotImplementedError('a10: MultiJittered.generate_samples')\n"),
-                          ("sampling/maps.py", "    raise NotImplementedError('a10: concentric_map')\n")):
-        indent = stub[:len(stub) - len(stub.lstrip())]
-        attack = "".join(indent + line + "\n" for line in (
-            "import json, os, sys", "os.write(int(sys.argv[4]), json.dumps(%r).encode())" % (forged,), "os._exit(0)"))
-        assert files[relpath].count(stub) == 1
-        files[relpath] = files[relpath].replace(stub, attack + stub)
-    write_files(files, tmp_path / "sub")
-    only = tuple(c.slug for c in checks_for("a10_samplers") if c.number in ("10.1", "10.2", "10.3", "10.5", "10.6"))
-    result = grade("a10", tmp_path / "sub", None, only=only)
-    assert [t.number for t in result.tests] == ["10.1", "10.2", "10.3", "10.5", "10.6"]
-    for test in result.tests:
-        assert test.score == 0, (test.number, test.output)
-        assert "not in the form the test writes" in test.output, test.output
+    _stubs_answering_score_nothing(tmp_path, "a10_samplers", ("10.1", "10.2", "10.3", "10.5", "10.6"), [
+        ("sampling/multi_jittered.py", "        raise NotImplementedError('a10: MultiJittered.generate_samples')\n",
+         forged),
+        ("sampling/maps.py", "    raise NotImplementedError('a10: concentric_map')\n", forged)])
+
 
 def test_a_histogram_or_a_sum_in_place_of_the_samples_scores_nothing(isolation, tmp_path):
     # The a09 probes once sent the judge their samples binned or summed, and a stub that
@@ -730,22 +740,10 @@ def test_a_histogram_or_a_sum_in_place_of_the_samples_scores_nothing(isolation, 
                         "sums": {g: [[8192 * t, 8192 * t * t]] * 3 for g, t in truths.items()},
                         "samples": [[r / 3.141592653589793] * 3 + [0.0, 0.0, 1.0, 1.0 / 3.141592653589793]] * 64}
                        for n, r in (([0.0, 0.0, 1.0], 0.5), ([0.0, 0.0, -1.0], 0.8))]}
-    files = dict(student_files("a09"))
-    for relpath, stub, answer in (
-            ("sampling/maps.py", "    raise NotImplementedError('a09: hemisphere_map')\n", flat),
-            ("brdfs/lambertian.py", "        raise NotImplementedError('a09: Lambertian.sample_f')\n", summed)):
-        indent = stub[:len(stub) - len(stub.lstrip())]
-        attack = "".join(indent + line + "\n" for line in (
-            "import json, os, sys", "os.write(int(sys.argv[4]), json.dumps(%r).encode())" % (answer,), "os._exit(0)"))
-        assert files[relpath].count(stub) == 1
-        files[relpath] = files[relpath].replace(stub, attack + stub)
-    write_files(files, tmp_path / "sub")
-    only = tuple(c.slug for c in checks_for("a09_path_tracing") if c.number in ("9.1", "9.3"))
-    result = grade("a09", tmp_path / "sub", None, only=only)
-    assert [t.number for t in result.tests] == ["9.1", "9.3"]
-    for test in result.tests:
-        assert test.score == 0, (test.number, test.output)
-        assert "not in the form the test writes" in test.output, test.output
+    _stubs_answering_score_nothing(tmp_path, "a09_path_tracing", ("9.1", "9.3"), [
+        ("sampling/maps.py", "    raise NotImplementedError('a09: hemisphere_map')\n", flat),
+        ("brdfs/lambertian.py", "        raise NotImplementedError('a09: Lambertian.sample_f')\n", summed)])
+
 
 def test_a_visible_test_cannot_read_the_hidden_tests_inputs(isolation, tmp_path):
     # The hidden tests' probe modules and the probes' table of every test's inputs were in
@@ -774,6 +772,7 @@ def test_a_visible_test_cannot_read_the_hidden_tests_inputs(isolation, tmp_path)
     result = _grade_attack(tmp_path, isolation, attack)
     assert _scores(result) == honest_scores(isolation)
 
+
 def test_a_bvh_that_tests_every_shape_through_references_taken_at_import_loses_the_traversal_test(
         isolation, tmp_path):
     # a08's hidden traversal test counts box and shape tests through wrappers of BBox.hit and
@@ -800,6 +799,7 @@ def test_a_bvh_that_tests_every_shape_through_references_taken_at_import_loses_t
     result = grade("a08", tmp_path / "sub", None, only=(traversal[0].slug,))
     assert result.tests[0].score == 0, result.tests[0].output
     assert "shape tests over its" in result.tests[0].output, result.tests[0].output
+
 
 def test_no_process_of_the_sandbox_user_is_left_after_its_tests_not_even_a_zombie(bwrap, tmp_path):
     # Killing a test's namespace leaves processes without a parent; in a container PID 1 may
